@@ -1,0 +1,43 @@
+// `inkshade info MODEL`: facts about a mesh as loaded.
+#include <chrono>
+#include <cstdio>
+
+#include "commands.hpp"
+#include "geometry/mesh_stats.hpp"
+#include "inkshade/io.hpp"
+
+namespace inkshade::cli {
+
+Command add_info_command(CLI::App& app) {
+    auto model = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("info", "print facts about a mesh (counts, bounds, topology)");
+    cmd->add_option("MODEL", *model, "mesh file or builtin:NAME")->required();
+    return [model] {
+        auto start = std::chrono::steady_clock::now();
+        Mesh mesh = load_mesh(*model);
+        double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        geometry::MeshStats s = geometry::mesh_stats(mesh);
+        BoundingBox b = mesh.bounds();
+        std::printf("model:                %s\n", model->c_str());
+        std::printf("vertices:             %zu\n", s.vertices);
+        std::printf("triangles:            %zu\n", s.triangles);
+        std::printf("edges:                %zu\n", s.edges);
+        std::printf("bounding box min:     %g %g %g\n", b.min.x, b.min.y, b.min.z);
+        std::printf("bounding box max:     %g %g %g\n", b.max.x, b.max.y, b.max.z);
+        std::printf("bounding box size:    %g %g %g (diagonal %g)\n", b.max.x - b.min.x, b.max.y - b.min.y,
+                    b.max.z - b.min.z, b.diagonal());
+        std::printf("welded:               %s\n", mesh.welded ? "yes" : "no");
+        std::printf("boundary edges:       %zu\n", s.boundary_edges);
+        std::printf("non-manifold edges:   %zu\n", s.non_manifold_edges);
+        std::printf("degenerate faces:     %zu\n", s.degenerate_faces);
+        std::printf("duplicate faces:      %zu\n", s.duplicate_faces);
+        std::printf("components:           %zu\n", s.components);
+        std::printf("euler characteristic: %ld\n", s.euler_characteristic);
+        std::printf("materials:            %zu\n", mesh.materials.size());
+        std::printf("vertex colours:       %s\n", mesh.colors.empty() ? "no" : "yes");
+        std::printf("load time:            %.1f ms\n", load_ms);
+        return 0;
+    };
+}
+
+}  // namespace inkshade::cli

@@ -1,0 +1,62 @@
+// inkshade: non-photorealistic rendering of triangle meshes from the command line.
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include "commands.hpp"
+#include "inkshade/error.hpp"
+
+namespace {
+
+// One line on stderr, as every error of the CLI is reported.
+void print_error(const std::string& message) {
+    std::string line = message;
+    for (char& c : line)
+        if (c == '\n' || c == '\r') c = ' ';
+    std::cerr << "inkshade: " << line << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"inkshade: non-photorealistic rendering of triangle meshes (toon, technical, lines)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "inkshade 0.1.0");
+    app.footer("Exit status: 0 success, 1 rendering or runtime failure, 2 bad input or bad usage.");
+    std::map<CLI::App*, inkshade::cli::Command> commands;
+    for (auto add : {inkshade::cli::add_render_command, inkshade::cli::add_info_command,
+                     inkshade::cli::add_styles_command, inkshade::cli::add_demo_command}) {
+        size_t before = app.get_subcommands({}).size();
+        auto run = add(app);
+        commands[app.get_subcommands({})[before]] = run;
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        print_error(std::string(e.what()) + " (see inkshade --help)");
+        return 2;
+    }
+    try {
+        for (auto& [sub, run] : commands)
+            if (sub->parsed()) return run();
+        return 2;
+    } catch (const inkshade::InputError& e) {
+        print_error(e.what());
+        return 2;
+    } catch (const inkshade::RuntimeError& e) {
+        print_error(e.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        print_error("out of memory");
+        return 1;
+    } catch (const std::exception& e) {
+        print_error(e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,140 @@
+#include "scene_options.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "inkshade/color.hpp"
+#include "inkshade/error.hpp"
+
+namespace inkshade::cli {
+
+glm::vec3 parse_vec3(const std::string& option, const std::string& text) {
+    glm::vec3 v(0.0f);
+    std::stringstream ss(text);
+    std::string item;
+    int i = 0;
+    while (std::getline(ss, item, ',')) {
+        float f = 0;
+        auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), f);
+        if (i >= 3 || item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(f))
+            throw InputError(option + ": expected x,y,z but got '" + text + "'");
+        v[i++] = f;
+    }
+    if (i != 3) throw InputError(option + ": expected x,y,z but got '" + text + "'");
+    return v;
+}
+
+void SceneOptions::add_to(CLI::App& cmd) {
+    cmd.add_option("MODEL", model, "mesh file (.obj .stl .ply .off) or builtin:sphere|torus|torus-knot|teapot")
+        ->required();
+    cmd.add_option("--shading", shading, "shading model (see `inkshade styles`)");
+    cmd.add_option("--set", sets, "parameter override [model.]param=value (repeatable)");
+    cmd.add_option("--size", size, "image size WxH")->capture_default_str();
+    cmd.add_option("--azimuth", azimuth, "camera azimuth in degrees about +y (0 = from +z)");
+    cmd.add_option("--elevation", elevation, "camera elevation in degrees");
+    cmd.add_option("--distance", distance, "camera distance from the target (world units)");
+    cmd.add_option("--eye", eye, "camera position x,y,z");
+    cmd.add_option("--target", target, "camera target x,y,z (default: model centre)");
+    cmd.add_option("--up", up, "camera up vector x,y,z")->capture_default_str();
+    cmd.add_option("--fov", fov, "vertical field of view in degrees")->capture_default_str();
+    cmd.add_flag("--ortho", ortho, "orthographic projection");
+    cmd.add_option("--light-pos", light_pos, "light position x,y,z (world; default above-left of the camera)");
+    cmd.add_option("--light-type", light_type, "directional (from position to the model centre) or point")
+        ->capture_default_str();
+    cmd.add_option("--light-color", light_color, "light colour E (default 0.9 grey)");
+    cmd.add_option("--ambient", ambient, "ambient colour A (default 0.1 grey)");
+    cmd.add_option("--base-color", base_color, "base colour C, multiplies mesh colours (default white)");
+    cmd.add_option("--background", background, "background colour or 'transparent'")->capture_default_str();
+    cmd.add_option("--samples", samples, "MSAA samples (1 = off)")->capture_default_str();
+    cmd.add_flag("--srgb", srgb, "sRGB-encode the output (default: formula values as they are)");
+}
+
+RenderOptions SceneOptions::render_options() const {
+    RenderOptions o;
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(size);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w <= 0 || h <= 0 || w > 16384 || h > 16384)
+        throw InputError("--size: expected WxH with each side in 1..16384, got '" + size + "'");
+    o.width = w;
+    o.height = h;
+    if (samples < 1 || samples > 16) throw InputError("--samples: expected 1..16, got " + std::to_string(samples));
+    o.samples = samples;
+    try {
+        o.background = parse_color(background);
+    } catch (const InputError& e) {
+        throw InputError(std::string("--background: ") + e.what());
+    }
+    o.srgb_output = srgb;
+    return o;
+}
+
+ShadingSelection SceneOptions::shading_selection() const {
+    ShadingSelection s;
+    const ShadingModel& model = shading_model(shading);  // validates the name
+    s.model = model.name;
+    for (const std::string& set : sets) {
+        size_t eq = set.find('=');
+        if (eq == std::string::npos) throw InputError("--set: expected [model.]param=value, got '" + set + "'");
+        std::string key = set.substr(0, eq), value = set.substr(eq + 1);
+        if (size_t dot = key.find('.'); dot != std::string::npos) {
+            std::string prefix = key.substr(0, dot);
+            if (prefix != model.name)
+                throw InputError("--set " + set + ": parameter is for model '" + prefix +
+                                 "' but the shading model is '" + model.name + "'");
+            key = key.substr(dot + 1);
+        }
+        const ParamSpec* spec = nullptr;
+        for (const auto& p : model.params)
+            if (p.name == key) spec = &p;
+        if (!spec) {
+            std::string names;
+            for (const auto& p : model.params) names += (names.empty() ? "" : ", ") + p.name;
+            throw InputError("--set " + set + ": model '" + model.name + "' has no parameter '" + key + "'" +
+                             (names.empty() ? " (it has none)" : " (it has " + names + ")"));
+        }
+        s.params[spec->name] = parse_param_value(*spec, value);
+    }
+    if (!base_color.empty()) s.base_color = glm::vec3(parse_color(base_color));
+    return s;
+}
+
+Camera SceneOptions::camera(const BoundingBox& box, float aspect) const {
+    CameraOptions o;
+    o.azimuth_degrees = azimuth;
+    o.elevation_degrees = elevation;
+    if (distance && (!(*distance > 0.0f) || !std::isfinite(*distance)))
+        throw InputError("--distance: must be a positive number");
+    o.distance = distance;
+    if (!eye.empty()) o.eye = parse_vec3("--eye", eye);
+    if (!target.empty()) o.target = parse_vec3("--target", target);
+    if (!up.empty()) {
+        o.up = parse_vec3("--up", up);
+        if (glm::length(*o.up) == 0.0f) throw InputError("--up: must not be zero");
+    }
+    if (!(fov > 0.0f && fov < 180.0f)) throw InputError("--fov: expected degrees in (0, 180)");
+    o.fov_degrees = fov;
+    o.orthographic = ortho;
+    return frame_camera(box, o, aspect);
+}
+
+Light SceneOptions::light(const BoundingBox& box, const Camera& camera) const {
+    Light l = default_light(box, camera);
+    if (light_type == "point") l.type = LightType::Point;
+    else if (light_type != "directional")
+        throw InputError("--light-type: expected directional or point, got '" + light_type + "'");
+    if (!light_pos.empty()) l.position = parse_vec3("--light-pos", light_pos);
+    auto color = [](const std::string& opt, const std::string& text) {
+        try {
+            return glm::vec3(parse_color(text));
+        } catch (const InputError& e) {
+            throw InputError(opt + ": " + e.what());
+        }
+    };
+    if (!light_color.empty()) l.color = color("--light-color", light_color);
+    if (!ambient.empty()) l.ambient = color("--ambient", ambient);
+    return l;
+}
+
+}  // namespace inkshade::cli

@@ -1,0 +1,59 @@
+// Camera and light: plain data plus auto-framing, no GL.
+#pragma once
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "inkshade/mesh.hpp"
+
+namespace inkshade {
+
+struct Camera {
+    glm::vec3 eye{0.0f, 0.0f, 5.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fov_degrees = 30.0f;  // vertical field of view (perspective)
+    bool orthographic = false;
+    float ortho_height = 2.0f;  // world-space height of the view (orthographic)
+    float near_plane = 0.1f;
+    float far_plane = 100.0f;
+
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+};
+
+// How the user places the camera; anything unset is chosen by auto-framing.
+struct CameraOptions {
+    std::optional<float> azimuth_degrees;    // about +y; 0 looks from +z towards -z, 90 from +x
+    std::optional<float> elevation_degrees;  // above the horizontal plane
+    std::optional<float> distance;           // eye to target, world units
+    std::optional<glm::vec3> eye, target, up;
+    float fov_degrees = 30.0f;
+    bool orthographic = false;
+};
+
+// Default view angles of auto-framing: a three-quarter view from slightly above.
+constexpr float kDefaultAzimuth = 35.0f;
+constexpr float kDefaultElevation = 20.0f;
+
+// Places the camera so the bounding sphere of `box` fills the view with a small margin
+// (both dimensions, any aspect), unless eye/distance are given; near/far enclose the model.
+Camera frame_camera(const BoundingBox& box, const CameraOptions& options, float aspect);
+
+enum class LightType { Directional, Point };
+
+struct Light {
+    LightType type = LightType::Directional;
+    glm::vec3 position{1.0f, 1.0f, 1.0f};  // world; directional lights shine from position to target
+    glm::vec3 target{0.0f};
+    glm::vec3 color{0.9f};
+    glm::vec3 ambient{0.1f};
+    // Unit vector towards the light at world point p (l in the seeds' formulas).
+    glm::vec3 direction_to_light(const glm::vec3& p) const;
+};
+
+// The default light: above, left and in front of the camera (seed 004 style key light),
+// at three bounding radii from the model centre.
+Light default_light(const BoundingBox& box, const Camera& camera);
+
+}  // namespace inkshade

@@ -1,0 +1,24 @@
+// Loading meshes from files (OBJ, STL, PLY, OFF) and built-in models ("builtin:NAME").
+#pragma once
+#include <string>
+#include <vector>
+
+#include "inkshade/mesh.hpp"
+
+namespace inkshade {
+
+struct LoadOptions {
+    // Welding epsilon relative to the bounding-box diagonal (triangle soups: STL, unwelded OBJ).
+    float weld_epsilon = 1e-6f;
+    // Compute angle-weighted vertex normals when the file has none (or they are not sane).
+    bool compute_normals = true;
+};
+
+// Loads a mesh by path or "builtin:NAME". Throws InputError("FILE: problem") on bad input.
+// The result is indexed, validated (indices in range, finite coordinates) and has normals.
+Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
+
+// Names accepted after "builtin:" (sphere, torus, torus-knot, teapot).
+std::vector<std::string> builtin_model_names();
+
+}  // namespace inkshade

@@ -1,0 +1,56 @@
+// Rendering a mesh with a shading model into an image, headless (EGL) or in a window.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "inkshade/camera.hpp"
+#include "inkshade/image.hpp"
+#include "inkshade/mesh.hpp"
+#include "inkshade/shading.hpp"
+
+namespace inkshade {
+
+struct RenderOptions {
+    int width = 1024;
+    int height = 1024;
+    int samples = 4;                         // MSAA samples, resolved before readback
+    glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};  // alpha 0 = transparent PNG
+    bool srgb_output = false;                // default: formula values written as they are
+};
+
+struct ShadingSelection {
+    std::string model = "lambert";
+    ParamValues params;               // overrides of the model's defaults
+    glm::vec3 base_color{1.0f};       // multiplies vertex/material colours (C)
+};
+
+struct PassTiming {
+    std::string pass;
+    double milliseconds = 0.0;
+};
+
+class Renderer {
+public:
+    // Creates a headless OpenGL 4.5 context. Throws RuntimeError when none is available.
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Uploads the mesh (replaces the previous one).
+    void set_mesh(const Mesh& mesh);
+
+    // Renders the current mesh. With `timings`, each pass is finished (glFinish) and timed.
+    Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                 const RenderOptions& options, std::vector<PassTiming>* timings = nullptr);
+
+    // "llvmpipe (LLVM ...)", "NVIDIA H100 ..." — what GL runs on.
+    std::string gl_renderer() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace inkshade

@@ -1,0 +1,21 @@
+#version 450 core
+// Shared vertex stage of every shading model: world-space position, normal and colour.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+
+uniform mat4 u_model;
+uniform mat4 u_view_proj;
+uniform mat3 u_normal_matrix;
+
+out vec3 v_world_pos;
+out vec3 v_world_normal;
+out vec3 v_color;
+
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_world_pos = world.xyz;
+    v_world_normal = u_normal_matrix * a_normal;
+    v_color = a_color;
+    gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,10 @@
+#version 450 core
+// flat: one normal per face from screen-space derivatives of the position, dFdx(p) x dFdy(p)
+// (seed 000, eq. 2), then Lambert: C * (E * max(n.l, 0) + A).
+#include "common/surface.glsl"
+
+void main() {
+    Surface s = surface();
+    vec3 n = normalize(cross(dFdx(s.p), dFdy(s.p)));  // faces the viewer by construction
+    o_color = encode_output(s.albedo * (u_light_color * lambert(n, s.l) + u_ambient));
+}

@@ -1,0 +1,25 @@
+#version 450 core
+// gouraud: Lambert evaluated per vertex, C * (E * max(n.l, 0) + A), colour interpolated
+// (seed 000 section 3.3).
+#include "common/lighting.glsl"
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+
+uniform mat4 u_model;
+uniform mat4 u_view_proj;
+uniform mat3 u_normal_matrix;
+
+out vec3 v_world_pos;
+out vec3 v_world_normal;
+out vec3 v_color;
+
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    vec3 n = normalize(u_normal_matrix * a_normal);
+    vec3 l = to_light(world.xyz);
+    v_world_pos = world.xyz;
+    v_world_normal = n;
+    v_color = u_base_color * a_color * (u_light_color * lambert(n, l) + u_ambient);
+    gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,9 @@
+#version 450 core
+// lambert: per-pixel Lambert with interpolated (Phong) normals, C * (E * max(n.l, 0) + A)
+// (seed 000 section 3.1).
+#include "common/surface.glsl"
+
+void main() {
+    Surface s = surface();
+    o_color = encode_output(s.albedo * (u_light_color * lambert(s.n, s.l) + u_ambient));
+}

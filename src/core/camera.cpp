@@ -1,0 +1,99 @@
+#include "inkshade/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace inkshade {
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+    if (orthographic) {
+        float h = 0.5f * ortho_height, w = h * aspect;
+        return glm::ortho(-w, w, -h, h, near_plane, far_plane);
+    }
+    return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
+}
+
+namespace {
+
+glm::vec3 orbit_direction(float azimuth_deg, float elevation_deg) {
+    float az = glm::radians(azimuth_deg), el = glm::radians(elevation_deg);
+    return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+}
+
+// An up vector that is not parallel to the viewing direction.
+glm::vec3 safe_up(const glm::vec3& forward, const glm::vec3& up) {
+    if (glm::length(glm::cross(forward, up)) > 1e-4f * glm::length(up)) return up;
+    return std::abs(forward.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1);
+}
+
+}  // namespace
+
+Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect) {
+    Camera cam;
+    cam.fov_degrees = std::clamp(o.fov_degrees, 1.0f, 170.0f);
+    cam.orthographic = o.orthographic;
+    const float radius = std::max(0.5f * box.diagonal(), 1e-6f);
+    cam.target = o.target.value_or(box.center());
+    cam.up = o.up.value_or(glm::vec3(0, 1, 0));
+
+    // Distance at which the bounding sphere fits the narrower of the two fields of view,
+    // with a 5% margin.
+    const float half_v = glm::radians(cam.fov_degrees) * 0.5f;
+    const float half_h = std::atan(std::tan(half_v) * aspect);
+    const float fit = 1.05f * radius / std::sin(std::min(half_v, half_h));
+
+    glm::vec3 dir = o.eye ? glm::vec3(0.0f)
+                          : orbit_direction(o.azimuth_degrees.value_or(kDefaultAzimuth),
+                                            o.elevation_degrees.value_or(kDefaultElevation));
+    if (o.eye) cam.eye = *o.eye;
+    else cam.eye = cam.target + dir * o.distance.value_or(fit);
+    if (glm::length(cam.eye - cam.target) < 1e-6f * radius) cam.eye = cam.target + glm::vec3(0, 0, fit), dir = {0, 0, 1};
+    cam.up = safe_up(cam.target - cam.eye, cam.up);
+
+    // Tighter auto-framing: the distance at which all eight box corners fit the view
+    // (the bounding sphere above is only the upper bound).
+    const glm::vec3 f = glm::normalize(cam.target - cam.eye);
+    const glm::vec3 r = glm::normalize(glm::cross(f, cam.up)), u = glm::cross(r, f);
+    float need = 0.0f, half_x = 0.0f, half_y = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                    (i & 4) ? box.max.z : box.min.z);
+        glm::vec3 q = p - cam.target;
+        float x = std::abs(glm::dot(q, r)), y = std::abs(glm::dot(q, u)), z = -glm::dot(q, f);
+        need = std::max({need, z + x / std::tan(half_h), z + y / std::tan(half_v)});
+        half_x = std::max(half_x, x);
+        half_y = std::max(half_y, y);
+    }
+    if (!o.eye && !o.distance && !o.target) cam.eye = cam.target + dir * std::min(fit, 1.08f * need);
+    const float dist = glm::length(cam.eye - cam.target);
+    // Orthographic: the box's projected extent with a 5% margin.
+    cam.ortho_height = 2.1f * std::max({half_y, half_x / aspect, 1e-6f});
+    const float to_center = glm::length(cam.eye - box.center());
+    cam.far_plane = to_center + 2.0f * radius;
+    cam.near_plane = std::max(to_center - 2.0f * radius, 1e-3f * std::max(dist, radius));
+    if (cam.orthographic) cam.near_plane = to_center - 2.0f * radius;  // may be negative: fine
+    return cam;
+}
+
+glm::vec3 Light::direction_to_light(const glm::vec3& p) const {
+    glm::vec3 d = type == LightType::Directional ? position - target : position - p;
+    float len = glm::length(d);
+    return len > 0.0f ? d / len : glm::vec3(0, 0, 1);
+}
+
+Light default_light(const BoundingBox& box, const Camera& camera) {
+    glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    glm::vec3 up = glm::cross(right, forward);
+    glm::vec3 dir = glm::normalize(-0.6f * right + 0.8f * up - 1.0f * forward);
+    Light light;
+    light.target = box.center();
+    light.position = box.center() + dir * 1.5f * std::max(box.diagonal(), 1e-6f);
+    return light;
+}
+
+}  // namespace inkshade

@@ -1,0 +1,113 @@
+// Headless EGL context. PLATFORM.md: eglGetDisplay(EGL_DEFAULT_DISPLAY) fails without an X
+// server, so use EGL_MESA_platform_surfaceless, falling back to EGL_EXT_platform_device.
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <vector>
+
+#include "gpu/gl_context.hpp"
+#include "inkshade/error.hpp"
+
+namespace inkshade::gpu {
+
+std::string GlContext::renderer() const {
+    const GLubyte* s = glGetString(GL_RENDERER);
+    return s ? reinterpret_cast<const char*>(s) : "unknown";
+}
+std::string GlContext::version() const {
+    const GLubyte* s = glGetString(GL_VERSION);
+    return s ? reinterpret_cast<const char*>(s) : "unknown";
+}
+
+namespace {
+
+constexpr const char* kInstallHint =
+    "install Mesa's EGL and software rasteriser: apt-get install libegl1 libegl-mesa0 "
+    "libgl1-mesa-dri";
+
+class EglContext final : public GlContext {
+public:
+    EglContext(EGLDisplay display, EGLContext context) : display_(display), context_(context) {}
+    ~EglContext() override {
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(display_, context_);
+        eglTerminate(display_);
+    }
+    void make_current() override {
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            throw RuntimeError("cannot make the EGL context current");
+    }
+
+private:
+    EGLDisplay display_;
+    EGLContext context_;
+};
+
+bool has_client_extension(const char* name) {
+    const char* exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!exts) return false;
+    std::string all = std::string(" ") + exts + " ";
+    return all.find(std::string(" ") + name + " ") != std::string::npos;
+}
+
+// Creates a GL 4.5 core context on display, or returns EGL_NO_CONTEXT.
+EGLContext create_core_context(EGLDisplay display) {
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(display, &major, &minor)) return EGL_NO_CONTEXT;
+    if (!eglBindAPI(EGL_OPENGL_API)) return EGL_NO_CONTEXT;
+    const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    // Surfaceless rendering needs no config on Mesa, but asking for one keeps drivers happy.
+    if (!eglChooseConfig(display, config_attribs, &config, 1, &count) || count == 0)
+        config = EGL_NO_CONFIG_KHR;
+    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
+    if (context == EGL_NO_CONTEXT) {
+        eglTerminate(display);
+        return EGL_NO_CONTEXT;
+    }
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        eglDestroyContext(display, context);
+        eglTerminate(display);
+        return EGL_NO_CONTEXT;
+    }
+    return context;
+}
+
+}  // namespace
+
+std::unique_ptr<GlContext> create_headless_context() {
+    // Load the EGL library through epoxy; its absence shows as no client extensions.
+    if (!epoxy_has_egl() || !has_client_extension("EGL_EXT_platform_base"))
+        throw RuntimeError(std::string("no EGL library with EGL_EXT_platform_base found; ") +
+                           kInstallHint);
+
+    std::vector<EGLDisplay> candidates;
+    if (has_client_extension("EGL_MESA_platform_surfaceless"))
+        candidates.push_back(
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
+    if (has_client_extension("EGL_EXT_platform_device") &&
+        has_client_extension("EGL_EXT_device_enumeration")) {
+        EGLDeviceEXT devices[8];
+        EGLint n = 0;
+        if (eglQueryDevicesEXT(8, devices, &n))
+            for (EGLint i = 0; i < n; ++i)
+                candidates.push_back(
+                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr));
+    }
+    for (EGLDisplay display : candidates) {
+        if (display == EGL_NO_DISPLAY) continue;
+        EGLContext context = create_core_context(display);
+        if (context == EGL_NO_CONTEXT) continue;
+        auto ctx = std::make_unique<EglContext>(display, context);
+        if (epoxy_gl_version() < 45) continue;  // destructor releases it
+        return ctx;
+    }
+    throw RuntimeError(std::string("no OpenGL 4.5 core context available through EGL "
+                                   "(surfaceless or device platform); ") + kInstallHint);
+}
+
+}  // namespace inkshade::gpu

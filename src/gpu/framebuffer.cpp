@@ -1,0 +1,84 @@
+#include "gpu/framebuffer.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "inkshade/error.hpp"
+
+namespace inkshade::gpu {
+
+Framebuffer::Framebuffer(int width, int height, int samples)
+    : width_(width), height_(height), samples_(std::max(1, samples)) {
+    GLint max_size = 0, max_samples = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    if (width <= 0 || height <= 0 || width > max_size || height > max_size)
+        throw RuntimeError("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                           " is outside what this OpenGL supports (1.." + std::to_string(max_size) + ")");
+    samples_ = std::min(samples_, std::max(1, int(max_samples)));
+
+    glCreateRenderbuffers(1, &msaa_color_);
+    glCreateRenderbuffers(1, &msaa_depth_);
+    glNamedRenderbufferStorageMultisample(msaa_color_, samples_, GL_RGBA8, width, height);
+    glNamedRenderbufferStorageMultisample(msaa_depth_, samples_, GL_DEPTH_COMPONENT32F, width, height);
+    glCreateFramebuffers(1, &msaa_fbo_);
+    glNamedFramebufferRenderbuffer(msaa_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
+    glNamedFramebufferRenderbuffer(msaa_fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
+
+    glCreateRenderbuffers(1, &resolve_color_);
+    glNamedRenderbufferStorage(resolve_color_, GL_RGBA8, width, height);
+    glCreateFramebuffers(1, &resolve_fbo_);
+    glNamedFramebufferRenderbuffer(resolve_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color_);
+
+    if (glCheckNamedFramebufferStatus(msaa_fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+        glCheckNamedFramebufferStatus(resolve_fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
+                           " framebuffer (out of memory?)");
+}
+
+Framebuffer::~Framebuffer() {
+    glDeleteFramebuffers(1, &msaa_fbo_);
+    glDeleteFramebuffers(1, &resolve_fbo_);
+    glDeleteRenderbuffers(1, &msaa_color_);
+    glDeleteRenderbuffers(1, &msaa_depth_);
+    glDeleteRenderbuffers(1, &resolve_color_);
+}
+
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    glViewport(0, 0, width_, height_);
+}
+
+void Framebuffer::resolve() const {
+    glBlitNamedFramebuffer(msaa_fbo_, resolve_fbo_, 0, 0, width_, height_, 0, 0, width_, height_,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+Image Framebuffer::read(bool unpremultiply) const {
+    Image image(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    // GL's first row is the bottom one; images are stored top row first.
+    const size_t row = size_t(width_) * 4;
+    std::vector<uint8_t> tmp(row);
+    for (int y = 0; y < height_ / 2; ++y) {
+        uint8_t* a = image.rgba.data() + size_t(y) * row;
+        uint8_t* b = image.rgba.data() + size_t(height_ - 1 - y) * row;
+        std::memcpy(tmp.data(), a, row);
+        std::memcpy(a, b, row);
+        std::memcpy(b, tmp.data(), row);
+    }
+    if (unpremultiply) {
+        for (size_t i = 0; i < image.rgba.size(); i += 4) {
+            unsigned a = image.rgba[i + 3];
+            if (a == 0 || a == 255) continue;
+            for (int c = 0; c < 3; ++c)
+                image.rgba[i + c] = uint8_t(std::min(255u, (image.rgba[i + c] * 255u + a / 2) / a));
+        }
+    }
+    return image;
+}
+
+}  // namespace inkshade::gpu

@@ -1,0 +1,34 @@
+// Off-screen render target: multisampled colour + depth, resolved into a single-sample
+// colour buffer for readback.
+#pragma once
+#include <epoxy/gl.h>
+
+#include "inkshade/image.hpp"
+
+namespace inkshade::gpu {
+
+class Framebuffer {
+public:
+    // samples = 1 disables MSAA. Throws RuntimeError when incomplete (size too large, ...).
+    Framebuffer(int width, int height, int samples);
+    ~Framebuffer();
+    Framebuffer(const Framebuffer&) = delete;
+    Framebuffer& operator=(const Framebuffer&) = delete;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int samples() const { return samples_; }
+    void bind() const;
+    // Resolves MSAA into the single-sample buffer (a no-op copy when samples == 1).
+    void resolve() const;
+    // Reads the resolved colour, top row first. With `unpremultiply`, colour is divided by
+    // alpha (edges antialiased against a transparent background stay their own colour).
+    Image read(bool unpremultiply) const;
+
+private:
+    int width_, height_, samples_;
+    GLuint msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
+    GLuint resolve_fbo_ = 0, resolve_color_ = 0;
+};
+
+}  // namespace inkshade::gpu

@@ -1,0 +1,22 @@
+// An OpenGL 4.5 core context: headless through EGL (this file) or a window (later, GLFW).
+#pragma once
+#include <memory>
+#include <string>
+
+namespace inkshade::gpu {
+
+class GlContext {
+public:
+    virtual ~GlContext() = default;
+    virtual void make_current() = 0;
+    // GL_RENDERER / GL_VERSION of the current context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    std::string renderer() const;
+    std::string version() const;
+};
+
+// Headless OpenGL 4.5 core through EGL: the surfaceless Mesa platform first (no X server, no
+// GPU needed), then the EGL device platform (vendor drivers, e.g. NVIDIA). Throws
+// RuntimeError with one line saying what is missing and which package provides it.
+std::unique_ptr<GlContext> create_headless_context();
+
+}  // namespace inkshade::gpu

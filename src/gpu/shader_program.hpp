@@ -1,0 +1,39 @@
+// A linked GLSL program built from embedded shader files, with cached uniform locations.
+#pragma once
+#include <epoxy/gl.h>
+
+#include <string>
+#include <unordered_map>
+
+#include <glm/glm.hpp>
+
+namespace inkshade::gpu {
+
+class ShaderProgram {
+public:
+    // Paths are relative to shaders/ (embedded). `defines` is inserted after #version.
+    // Throws RuntimeError naming the file and the compiler's first error line.
+    ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
+                  const std::string& defines = "");
+    ~ShaderProgram();
+    ShaderProgram(const ShaderProgram&) = delete;
+    ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+    void use() const { glUseProgram(id_); }
+    GLuint id() const { return id_; }
+
+    // Setters ignore uniforms the compiler optimised away (location -1).
+    void set(const std::string& name, float v);
+    void set(const std::string& name, int v);
+    void set(const std::string& name, const glm::vec3& v);
+    void set(const std::string& name, const glm::vec4& v);
+    void set(const std::string& name, const glm::mat3& v);
+    void set(const std::string& name, const glm::mat4& v);
+    GLint location(const std::string& name);
+
+private:
+    GLuint id_ = 0;
+    std::unordered_map<std::string, GLint> locations_;
+};
+
+}  // namespace inkshade::gpu

@@ -1,0 +1,298 @@
+// Wavefront OBJ through tinyobjloader (MTL Kd colours, relative indices, triangulation).
+// tinyobj is lenient by design: it reads garbage as zeros, skips faces with bad indices and
+// can be made to allocate per `t` line, so a strict pre-scan of our own runs first. It
+// rejects binary data, non-numeric and non-finite values and out-of-range indices with a line
+// number, and records each polygon's corner count; tinyobj then only sees text it handles
+// well, and its results are still checked against the attribute counts.
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <istream>
+#include <limits>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+#include <tiny_obj_loader.h>
+
+#include "inkshade/error.hpp"
+#include "io/file_bytes.hpp"
+#include "io/readers.hpp"
+#include "io/text_scanner.hpp"
+
+namespace inkshade::io {
+namespace {
+
+// tinyobj's ear clipping costs O(n^3) in the worst case per n-gon: files with larger polygons
+// are fan-triangulated here instead, so no input can make loading crawl.
+constexpr uint32_t kMaxEarClippedCorners = 16;
+
+struct Prescan {
+    size_t positions = 0, texcoords = 0, normals = 0;
+    std::vector<uint32_t> corners;  // per face with >= 3 corners, in file order
+    uint32_t max_corners = 0;
+    bool has_tags = false;          // `t` lines: tinyobj allocates per tag count, drop them
+};
+
+// Checks one "v/vt/vn" corner. Negative indices count back from the elements read so far;
+// positive ones may point forward, so they are checked against the final count afterwards.
+struct IndexCheck {
+    int64_t max_positive = 0;
+    size_t line = 0;
+};
+
+Prescan prescan(std::string_view text, const std::string& path) {
+    for (size_t i = 0; i < text.size(); ++i) {
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c < 0x20 && c != '\n' && c != '\r' && c != '\t')
+            throw InputError(path, "not a text OBJ file (binary byte at offset " + std::to_string(i) + ")");
+    }
+    Prescan s;
+    IndexCheck max_ref[3];  // v, vt, vn
+    TextScanner in(text, path, 1, '#');
+    auto check_corner = [&](std::string_view tok) {
+        std::string_view parts[3];
+        size_t n = 0;
+        for (size_t start = 0;; ++n) {
+            size_t slash = tok.find('/', start);
+            if (n == 3) in.fail("too many '/' in face corner " + quote_token(tok));
+            parts[n] = tok.substr(start, slash == std::string_view::npos ? slash : slash - start);
+            if (slash == std::string_view::npos) break;
+            start = slash + 1;
+        }
+        const size_t counts[3] = {s.positions, s.texcoords, s.normals};
+        static const char* what[3] = {"vertex", "texture coordinate", "normal"};
+        for (size_t k = 0; k <= n; ++k) {
+            if (parts[k].empty() && k == 1 && n == 2) continue;  // "1//3"
+            int64_t idx = 0;
+            if (!parse_number(parts[k], idx) || idx == 0)
+                in.fail("bad face index " + quote_token(tok) + " (indices are non-zero integers)");
+            if (idx < 0 && uint64_t(-idx) > counts[k])
+                in.fail(std::string("face refers to ") + what[k] + " " + std::to_string(idx) + " but only " +
+                        std::to_string(counts[k]) + " are defined before it");
+            if (idx > max_ref[k].max_positive) max_ref[k] = {idx, in.line()};
+        }
+    };
+    auto rest_numbers = [&](const char* what) {  // optional trailing values must still be numbers
+        while (!in.at_line_end()) in.number<float>(what);
+    };
+    while (!in.at_end()) {
+        std::string_view key = in.token_on_line();
+        if (key == "v") {
+            for (int k = 0; k < 3; ++k) {
+                float x = in.number_on_line<float>("a vertex coordinate");
+                if (!std::isfinite(x))
+                    in.fail("vertex " + std::to_string(s.positions) + " has a non-finite coordinate");
+            }
+            rest_numbers("a vertex weight or colour");
+            ++s.positions;
+        } else if (key == "vn") {
+            for (int k = 0; k < 3; ++k) in.number_on_line<float>("a normal coordinate");
+            ++s.normals;
+        } else if (key == "vt") {
+            in.number_on_line<float>("a texture coordinate");
+            rest_numbers("a texture coordinate");
+            ++s.texcoords;
+        } else if (key == "f" || key == "l" || key == "p") {
+            uint32_t n = 0;
+            for (std::string_view tok = in.token_on_line(); !tok.empty(); tok = in.token_on_line(), ++n) check_corner(tok);
+            if (key == "f" && n >= 3) {
+                s.corners.push_back(n);
+                s.max_corners = std::max(s.max_corners, n);
+            }
+        } else if (key == "t") {
+            s.has_tags = true;
+        }
+        in.skip_line();
+    }
+    const size_t counts[3] = {s.positions, s.texcoords, s.normals};
+    static const char* what[3] = {"vertex", "texture coordinate", "normal"};
+    for (int k = 0; k < 3; ++k)
+        if (uint64_t(max_ref[k].max_positive) > counts[k])
+            throw InputError(path, std::string("face refers to ") + what[k] + " " + std::to_string(max_ref[k].max_positive) +
+                                       " but the file has only " + std::to_string(counts[k]) + " at line " +
+                                       std::to_string(max_ref[k].line));
+    if (s.positions > std::numeric_limits<int>::max() / 3) throw InputError(path, "too many vertices for an OBJ file");
+    return s;
+}
+
+// Read-only istream over the mapped file, so tinyobj parses without another copy.
+struct MemoryBuffer : std::streambuf {
+    MemoryBuffer(const char* data, size_t size) {
+        char* p = const_cast<char*>(data);  // get area only: never written
+        setg(p, p, p + size);
+    }
+};
+
+std::string first_line(const std::string& s) {
+    std::string line = s.substr(0, s.find('\n'));
+    return line.empty() ? "unknown error" : line;
+}
+
+// True when many positions repeat exactly: exporters that write each face's corners as
+// fresh `v` lines produce this soup, which needs welding like STL.
+bool positions_repeat(const std::vector<float>& v) {
+    size_t n = v.size() / 3;
+    if (n < 4) return false;
+    std::vector<std::array<uint32_t, 3>> keys(n);
+    for (size_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            float x = v[3 * i + size_t(k)] + 0.0f;  // -0 == +0
+            std::memcpy(&keys[i][size_t(k)], &x, 4);
+        }
+    std::sort(keys.begin(), keys.end());
+    size_t repeats = 0;
+    for (size_t i = 1; i < n; ++i) repeats += keys[i] == keys[i - 1];
+    return repeats * 4 >= n;  // a quarter or more
+}
+
+}  // namespace
+
+Mesh read_obj(const std::string& path, bool& is_soup) {
+    FileBytes file(path);
+    Prescan scan = prescan(file.view(), path);
+
+    std::string filtered;  // the text without `t` lines, only when it has any
+    std::string_view text = file.view();
+    if (scan.has_tags) {
+        for (size_t pos = 0; pos < text.size();) {
+            size_t nl = std::min(text.find('\n', pos), text.size());
+            std::string_view line = text.substr(pos, nl - pos);
+            size_t b = line.find_first_not_of(" \t");
+            bool tag = b != std::string_view::npos && line[b] == 't' && b + 1 < line.size() && (line[b + 1] == ' ' || line[b + 1] == '\t');
+            if (!tag) filtered.append(line).push_back('\n');
+            pos = nl + 1;
+        }
+        text = filtered;
+    }
+
+    MemoryBuffer buffer(text.data(), text.size());
+    std::istream stream(&buffer);
+    std::string dir = std::filesystem::path(path).parent_path().string();
+    tinyobj::MaterialFileReader mtl_reader(dir.empty() ? dir : dir + "/");
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warn, err;
+    bool triangulate = scan.max_corners <= kMaxEarClippedCorners;
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &stream, &mtl_reader, triangulate,
+                          /*default_vcols_fallback=*/false))
+        throw InputError(path, first_line(err));
+    if (warn.find("invalid vertex index") != std::string::npos || warn.find("out of bounds") != std::string::npos)
+        throw InputError(path, first_line(warn));
+
+    // Every corner must index existing attributes (the pre-scan makes this a safety net).
+    const size_t nv = attrib.vertices.size() / 3, nt = attrib.texcoords.size() / 2, nn = attrib.normals.size() / 3;
+    bool all_normals = nn > 0, all_uvs = nt > 0;
+    size_t corner_total = 0, face_total = 0;
+    for (const tinyobj::shape_t& shape : shapes) {
+        face_total += shape.mesh.num_face_vertices.size();
+        for (const tinyobj::index_t& c : shape.mesh.indices) {
+            if (c.vertex_index < 0 || size_t(c.vertex_index) >= nv || c.normal_index >= int(nn) ||
+                c.texcoord_index >= int(nt) || c.normal_index < -1 || c.texcoord_index < -1)
+                throw InputError(path, "face refers to a vertex, normal or texture coordinate that does not exist");
+            all_normals &= c.normal_index >= 0;
+            all_uvs &= c.texcoord_index >= 0;
+        }
+        corner_total += shape.mesh.indices.size();
+    }
+    if (!triangulate) {  // polygons as written: tinyobj's per-face counts are 8-bit, use ours
+        size_t sum = 0;
+        for (uint32_t c : scan.corners) sum += c;
+        bool same_face_count = face_total == scan.corners.size();
+        if (sum != corner_total || !same_face_count) throw InputError(path, "face corner counts do not match the parsed faces");
+    }
+
+    Mesh mesh;
+    bool colors = attrib.colors.size() == attrib.vertices.size() && nv > 0;
+    // Vertex ids per corner: the position index when no per-corner attribute is kept, else
+    // one vertex per distinct (v, vn, vt), found through a short chain per position.
+    auto add_vertex = [&](const tinyobj::index_t& c) {
+        size_t v = size_t(c.vertex_index);
+        mesh.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
+        if (colors) mesh.colors.emplace_back(attrib.colors[3 * v], attrib.colors[3 * v + 1], attrib.colors[3 * v + 2]);
+        if (all_normals) {
+            size_t n = size_t(c.normal_index);
+            mesh.normals.emplace_back(attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]);
+        }
+        if (all_uvs) {
+            size_t t = size_t(c.texcoord_index);
+            mesh.uvs.emplace_back(attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]);
+        }
+        return uint32_t(mesh.positions.size() - 1);
+    };
+    constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> first(nv, kNone), next;  // chains of vertices sharing a position
+    std::vector<tinyobj::index_t> key;            // the corner each vertex was made from
+    if (!all_normals && !all_uvs) {
+        for (size_t v = 0; v < nv; ++v) add_vertex({int(v), -1, -1});
+    }
+    auto vertex_of = [&](const tinyobj::index_t& c) -> uint32_t {
+        if (!all_normals && !all_uvs) return uint32_t(c.vertex_index);
+        uint32_t prev = kNone;
+        for (uint32_t cur = first[size_t(c.vertex_index)]; cur != kNone; prev = cur, cur = next[cur]) {
+            const tinyobj::index_t& k = key[cur];
+            if ((!all_normals || k.normal_index == c.normal_index) && (!all_uvs || k.texcoord_index == c.texcoord_index))
+                return cur;
+        }
+        uint32_t id = add_vertex(c);
+        key.push_back(c);
+        next.push_back(kNone);
+        (prev == kNone ? first[size_t(c.vertex_index)] : next[prev]) = id;
+        return id;
+    };
+
+    // Materials: Kd per face; faces without `usemtl` get an appended default material.
+    bool any_material = false;
+    for (const tinyobj::shape_t& shape : shapes)
+        for (int id : shape.mesh.material_ids) any_material |= id >= 0 && size_t(id) < materials.size();
+    uint32_t default_material = kNone;
+    if (any_material) {
+        for (const tinyobj::material_t& m : materials) {
+            Material mat;
+            mat.name = m.name;
+            for (int k = 0; k < 3; ++k)
+                if (std::isfinite(m.diffuse[k])) mat.diffuse[k] = std::clamp(float(m.diffuse[k]), 0.0f, 1.0f);
+            mesh.materials.push_back(mat);
+        }
+    }
+
+    size_t face_index = 0;
+    for (const tinyobj::shape_t& shape : shapes) {
+        const auto& idx = shape.mesh.indices;
+        size_t corner = 0;
+        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face_index) {
+            size_t n = triangulate ? shape.mesh.num_face_vertices[f] : scan.corners[face_index];
+            if (n < 3 || corner + n > idx.size()) throw InputError(path, "face corner counts do not match the parsed faces");
+            uint32_t material = kNone;
+            if (any_material) {
+                int id = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+                if (id >= 0 && size_t(id) < materials.size()) {
+                    material = uint32_t(id);
+                } else {
+                    if (default_material == kNone) {
+                        default_material = uint32_t(mesh.materials.size());
+                        mesh.materials.push_back(Material{"default"});
+                    }
+                    material = default_material;
+                }
+            }
+            uint32_t a = vertex_of(idx[corner]);
+            for (size_t k = 1; k + 1 < n; ++k) {  // fan; tinyobj already gave triangles when it triangulated
+                mesh.triangles.emplace_back(a, vertex_of(idx[corner + k]), vertex_of(idx[corner + k + 1]));
+                if (any_material) mesh.face_materials.push_back(material);
+            }
+            corner += n;
+        }
+    }
+    is_soup = positions_repeat(attrib.vertices);
+    return mesh;
+}
+
+Mesh read_obj(const std::string& path) {
+    bool is_soup = false;
+    return read_obj(path, is_soup);
+}
+
+}  // namespace inkshade::io

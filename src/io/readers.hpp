@@ -1,0 +1,22 @@
+// Per-format readers. Each throws InputError(path, problem) on bad input and returns the
+// mesh as stored (triangulated, not yet welded or given normals): load_mesh does the rest.
+#pragma once
+#include <string>
+
+#include "inkshade/mesh.hpp"
+
+namespace inkshade::io {
+
+Mesh read_obj(const std::string& path);  // + MTL Kd, polygons fan-triangulated, negative indices
+Mesh read_stl(const std::string& path);  // ASCII and binary; a triangle soup (3 vertices per face)
+Mesh read_ply(const std::string& path);  // ascii, binary_little_endian, binary_big_endian
+Mesh read_off(const std::string& path);  // OFF, with optional vertex colours (COFF)
+
+// read_obj that also reports whether the file is a soup anyway: exporters that write each
+// face's corners as fresh `v` lines repeat most positions exactly, and need welding too.
+Mesh read_obj(const std::string& path, bool& is_soup);
+
+// True when the reader returned an unindexed soup that load_mesh must weld.
+bool format_is_soup(const std::string& extension);
+
+}  // namespace inkshade::io

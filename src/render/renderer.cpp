@@ -1,0 +1,150 @@
+#include "inkshade/renderer.hpp"
+
+#include <chrono>
+#include <map>
+#include <optional>
+
+#include "gpu/framebuffer.hpp"
+#include "gpu/gl_context.hpp"
+#include "gpu/shader_program.hpp"
+#include "inkshade/error.hpp"
+#include "render/gpu_mesh.hpp"
+
+namespace inkshade {
+
+namespace {
+
+std::string uniform_name(const std::string& param) {
+    std::string u = "u_" + param;
+    for (char& c : u)
+        if (c == '-' || c == '.') c = '_';
+    return u;
+}
+
+// Times one pass by finishing the GPU work before and after it (benchmark mode only).
+class PassTimer {
+public:
+    PassTimer(std::vector<PassTiming>* out, std::string name) : out_(out), name_(std::move(name)) {
+        if (out_) {
+            glFinish();
+            start_ = std::chrono::steady_clock::now();
+        }
+    }
+    ~PassTimer() {
+        if (!out_) return;
+        glFinish();
+        auto end = std::chrono::steady_clock::now();
+        out_->push_back({name_, std::chrono::duration<double, std::milli>(end - start_).count()});
+    }
+
+private:
+    std::vector<PassTiming>* out_;
+    std::string name_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+    std::unique_ptr<gpu::GlContext> context;
+    std::unique_ptr<render::GpuMesh> mesh;
+    BoundingBox bounds;
+    std::map<std::string, std::unique_ptr<gpu::ShaderProgram>> programs;  // by model name
+    std::unique_ptr<gpu::Framebuffer> framebuffer;
+
+    gpu::ShaderProgram& program_for(const ShadingModel& model) {
+        auto& p = programs[model.name];
+        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment);
+        return *p;
+    }
+
+    gpu::Framebuffer& framebuffer_for(const RenderOptions& o) {
+        if (!framebuffer || framebuffer->width() != o.width || framebuffer->height() != o.height ||
+            framebuffer->samples() != std::max(1, o.samples))
+            framebuffer = std::make_unique<gpu::Framebuffer>(o.width, o.height, o.samples);
+        return *framebuffer;
+    }
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
+    impl_->context = gpu::create_headless_context();
+    impl_->context->make_current();
+}
+
+Renderer::~Renderer() {
+    if (!impl_ || !impl_->context) return;
+    impl_->context->make_current();
+    // GL objects go before the context that owns them.
+    impl_->framebuffer.reset();
+    impl_->programs.clear();
+    impl_->mesh.reset();
+}
+
+std::string Renderer::gl_renderer() const { return impl_->context->renderer(); }
+
+void Renderer::set_mesh(const Mesh& mesh) {
+    if (mesh.triangles.empty()) throw InputError("mesh has no triangles");
+    impl_->context->make_current();
+    impl_->mesh = std::make_unique<render::GpuMesh>(mesh);
+    impl_->bounds = mesh.bounds();
+}
+
+Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                       const RenderOptions& options, std::vector<PassTiming>* timings) {
+    if (!impl_->mesh) throw RuntimeError("no mesh to render (set_mesh first)");
+    impl_->context->make_current();
+    const ShadingModel& model = shading_model(shading.model);
+    gpu::ShaderProgram& program = impl_->program_for(model);
+    gpu::Framebuffer& fb = impl_->framebuffer_for(options);
+    const float aspect = float(options.width) / float(options.height);
+
+    {
+        PassTimer t(timings, "shading");
+        fb.bind();
+        const glm::vec4& bg = options.background;
+        // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
+        glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDisable(GL_CULL_FACE);  // two-sided: open meshes show their inside
+        if (options.samples > 1) glEnable(GL_MULTISAMPLE);
+
+        program.use();
+        const glm::mat4 model_matrix(1.0f);
+        program.set("u_model", model_matrix);
+        program.set("u_view_proj", camera.projection(aspect) * camera.view());
+        program.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model_matrix))));
+        program.set("u_eye", camera.eye);
+        program.set("u_view_dir", glm::normalize(camera.target - camera.eye));
+        program.set("u_orthographic", camera.orthographic ? 1 : 0);
+        program.set("u_light_type", light.type == LightType::Point ? 1 : 0);
+        program.set("u_light_pos", light.position);
+        program.set("u_light_target", light.target);
+        program.set("u_light_color", light.color);
+        program.set("u_ambient", light.ambient);
+        program.set("u_base_color", shading.base_color);
+        program.set("u_srgb_output", options.srgb_output ? 1 : 0);
+        for (const ParamSpec& spec : model.params) {
+            auto it = shading.params.find(spec.name);
+            glm::vec4 v = it != shading.params.end() ? it->second : spec.default_value;
+            const std::string u = uniform_name(spec.name);
+            switch (spec.type) {
+                case ParamType::Float: program.set(u, v.x); break;
+                case ParamType::Int:
+                case ParamType::Bool: program.set(u, int(v.x)); break;
+                case ParamType::Color: program.set(u, glm::vec3(v)); break;
+            }
+        }
+        impl_->mesh->draw();
+    }
+    {
+        PassTimer t(timings, "resolve");
+        fb.resolve();
+    }
+    PassTimer t(timings, "readback");
+    return fb.read(options.background.a < 1.0f);
+}
+
+}  // namespace inkshade

@@ -1,0 +1,141 @@
+// `inkshade render`, `info`, `styles`: exit codes, one-line errors, outputs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli/run_cli.hpp"
+#include "inkshade/image.hpp"
+
+namespace inkshade::test {
+namespace {
+
+TEST(RenderCommand, WritesPngOfRequestedSize) {
+    TempDir dir;
+    auto r = run_cli("render builtin:sphere --size 96x64 -o " + dir.file("a.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    Image img = read_png(dir.file("a.png"));
+    EXPECT_EQ(img.width, 96);
+    EXPECT_EQ(img.height, 64);
+    // Model in the middle (not background white), white background in the corner.
+    const uint8_t* c = img.pixel(48, 32);
+    EXPECT_LT(int(c[0]) + c[1] + c[2], 3 * 250);
+    EXPECT_EQ(img.pixel(0, 0)[0], 255);
+}
+
+TEST(RenderCommand, TransparentBackgroundGivesAlphaZero) {
+    TempDir dir;
+    auto r = run_cli("render builtin:torus --size 64x64 --background transparent -o " + dir.file("t.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    Image img = read_png(dir.file("t.png"));
+    EXPECT_EQ(img.pixel(0, 0)[3], 0);
+}
+
+TEST(RenderCommand, MissingModelFileIsExit2WithOneLine) {
+    TempDir dir;
+    auto r = run_cli("render " + dir.file("nope.obj") + " -o " + dir.file("a.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("inkshade: " + dir.file("nope.obj") + ":"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
+}
+
+TEST(RenderCommand, FailedRunLeavesNoPartialFile) {
+    TempDir dir;
+    std::string bad = dir.write("bad.stl", "solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0");
+    auto r = run_cli("render " + bad + " -o " + dir.file("a.png"));
+    EXPECT_EQ(r.status, 2);
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+        EXPECT_EQ(e.path().filename().string().find("a.png"), std::string::npos) << e.path();
+}
+
+TEST(RenderCommand, UnknownShadingModelIsExit2) {
+    TempDir dir;
+    auto r = run_cli("render builtin:sphere --shading glossy -o " + dir.file("a.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("unknown shading model 'glossy'"), std::string::npos) << r.err;
+    EXPECT_EQ(line_count(r.err), 1);
+}
+
+TEST(RenderCommand, BadOptionValuesAreExit2) {
+    TempDir dir;
+    const std::string out = " -o " + dir.file("a.png");
+    for (std::string args :
+         {"--size 0x10", "--size big", "--set shininess=abc", "--shading phong --set shininess=-3",
+          "--shading phong --set gloss=1", "--shading phong --set lambert.shininess=2", "--eye 1,2",
+          "--light-type spot", "--background notacolour", "--fov 0", "--distance -1", "--samples 0"}) {
+        auto r = run_cli("render builtin:sphere " + args + out);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+        EXPECT_EQ(r.err.rfind("inkshade: ", 0), 0u) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
+}
+
+TEST(RenderCommand, MissingOutputDirectoryIsExit2) {
+    TempDir dir;
+    auto r = run_cli("render builtin:sphere -o " + dir.file("no/such/dir/a.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}
+
+TEST(RenderCommand, UsageErrorsAreExit2) {
+    EXPECT_EQ(run_cli("").status, 2);
+    EXPECT_EQ(run_cli("render").status, 2);
+    EXPECT_EQ(run_cli("render builtin:sphere").status, 2);  // no -o
+    EXPECT_EQ(run_cli("frobnicate").status, 2);
+    EXPECT_EQ(run_cli("render builtin:sphere -o x.png --no-such-flag").status, 2);
+}
+
+TEST(RenderCommand, HelpIsExit0ForEveryCommand) {
+    for (const char* c : {"--help", "render --help", "info --help", "styles --help", "demo --help"}) {
+        auto r = run_cli(c);
+        EXPECT_EQ(r.status, 0) << c;
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << c;
+    }
+}
+
+TEST(RenderCommand, TimingPrintsMedianPerPassAndTotal) {
+    TempDir dir;
+    auto r = run_cli("render builtin:sphere --size 64x64 --timing 3 -o " + dir.file("a.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* pass : {"shading", "resolve", "readback", "total"})
+        EXPECT_NE(r.out.find(std::string(pass) + " "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("median"), std::string::npos);
+}
+
+TEST(RenderCommand, NoOpenGlIsExit1WithInstallHint) {
+    TempDir dir;
+    // An EGL vendor list with no usable driver: glvnd then offers no display at all.
+    std::string empty = dir.write("none.json", "{}");
+    auto r = run_cli("render builtin:sphere -o " + dir.file("a.png"),
+                     "__EGL_VENDOR_LIBRARY_FILENAMES=" + empty + " __EGL_VENDOR_LIBRARY_DIRS=" + dir.path().string());
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("apt-get install"), std::string::npos) << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+}
+
+TEST(InfoCommand, PrintsCountsAndTopologyOfBuiltinSphere) {
+    auto r = run_cli("info builtin:sphere");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("euler characteristic: 2"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("boundary edges:       0"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("components:           1"), std::string::npos) << r.out;
+}
+
+TEST(InfoCommand, BadFileIsExit2) {
+    TempDir dir;
+    auto r = run_cli("info " + dir.write("e.ply", ""));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(line_count(r.err), 1);
+}
+
+TEST(StylesCommand, ListsEveryModelWithParameters) {
+    auto r = run_cli("styles");
+    ASSERT_EQ(r.status, 0);
+    for (const char* m : {"flat", "gouraud", "lambert", "phong", "blinn-phong", "normal", "view", "w", "ndotv",
+                          "shininess"})
+        EXPECT_NE(r.out.find(m), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace inkshade::test

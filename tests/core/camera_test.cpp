@@ -1,0 +1,89 @@
+// Auto-framing and camera placement (no GL).
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "inkshade/camera.hpp"
+
+namespace inkshade {
+namespace {
+
+BoundingBox unit_box() { return {glm::vec3(-1), glm::vec3(1)}; }
+
+// Every corner of the box projects inside the image (|ndc| < 1) for any aspect.
+void expect_box_in_view(const Camera& cam, const BoundingBox& b, float aspect) {
+    glm::mat4 vp = cam.projection(aspect) * cam.view();
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+        glm::vec4 c = vp * glm::vec4(p, 1);
+        ASSERT_GT(c.w, 0.0f);
+        EXPECT_LT(std::abs(c.x / c.w), 1.0f);
+        EXPECT_LT(std::abs(c.y / c.w), 1.0f);
+        EXPECT_GT(c.z / c.w, -1.0f);
+        EXPECT_LT(c.z / c.w, 1.0f);
+    }
+}
+
+TEST(FrameCamera, WholeModelInViewForAnyAspect) {
+    for (float aspect : {0.25f, 1.0f, 3.0f})
+        for (bool ortho : {false, true}) {
+            CameraOptions o;
+            o.orthographic = ortho;
+            expect_box_in_view(frame_camera(unit_box(), o, aspect), unit_box(), aspect);
+        }
+}
+
+TEST(FrameCamera, ModelFillsMostOfTheView) {
+    Camera cam = frame_camera(unit_box(), {}, 1.0f);
+    glm::vec4 c = cam.projection(1.0f) * cam.view() * glm::vec4(0, 1.7320508f, 0, 1);  // top of bounding sphere
+    // The bounding sphere touches ~95% of the half height (5% margin).
+    EXPECT_GT(std::abs(c.y / c.w), 0.6f);
+}
+
+TEST(FrameCamera, AzimuthAndElevationPlaceEye) {
+    CameraOptions o;
+    o.azimuth_degrees = 90.0f;
+    o.elevation_degrees = 0.0f;
+    o.distance = 10.0f;
+    Camera cam = frame_camera(unit_box(), o, 1.0f);
+    EXPECT_NEAR(cam.eye.x, 10.0f, 1e-4f);
+    EXPECT_NEAR(cam.eye.y, 0.0f, 1e-4f);
+    EXPECT_NEAR(cam.eye.z, 0.0f, 1e-4f);
+    o.azimuth_degrees = 0.0f;
+    o.elevation_degrees = 90.0f;
+    cam = frame_camera(unit_box(), o, 1.0f);
+    EXPECT_NEAR(cam.eye.y, 10.0f, 1e-4f);
+    // Looking straight down: up must not be parallel to the view direction.
+    EXPECT_GT(glm::length(glm::cross(cam.target - cam.eye, cam.up)), 1e-3f);
+}
+
+TEST(FrameCamera, ExplicitEyeAndTargetAreKept) {
+    CameraOptions o;
+    o.eye = glm::vec3(3, 4, 5);
+    o.target = glm::vec3(0.5f, 0, 0);
+    Camera cam = frame_camera(unit_box(), o, 1.0f);
+    EXPECT_EQ(cam.eye, glm::vec3(3, 4, 5));
+    EXPECT_EQ(cam.target, glm::vec3(0.5f, 0, 0));
+    EXPECT_LT(cam.near_plane, cam.far_plane);
+}
+
+TEST(Light, DirectionalLightDirectionIsIndependentOfPoint) {
+    Light l;
+    l.position = glm::vec3(0, 10, 0);
+    l.target = glm::vec3(0);
+    EXPECT_EQ(l.direction_to_light(glm::vec3(5, 0, 0)), glm::vec3(0, 1, 0));
+    l.type = LightType::Point;
+    glm::vec3 d = l.direction_to_light(glm::vec3(10, 10, 0));
+    EXPECT_NEAR(d.x, -1.0f, 1e-6f);
+}
+
+TEST(Light, DefaultLightIsAboveAndInFrontOfModel) {
+    Camera cam = frame_camera(unit_box(), {}, 1.0f);
+    Light l = default_light(unit_box(), cam);
+    glm::vec3 to_light = l.direction_to_light(glm::vec3(0));
+    EXPECT_GT(glm::dot(to_light, glm::normalize(cam.eye - cam.target)), 0.3f);  // lights the visible side
+    EXPECT_GT(to_light.y, 0.3f);
+}
+
+}  // namespace
+}  // namespace inkshade

@@ -1,0 +1,246 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "io/mesh_files.hpp"
+#include "io/readers.hpp"
+#include "support/temp_dir.hpp"
+
+namespace inkshade::test {
+namespace {
+
+void expect_cube(const Mesh& m) {
+    ASSERT_EQ(m.vertex_count(), 8u);
+    ASSERT_EQ(m.triangle_count(), 12u);
+    for (size_t i = 0; i < 8; ++i)
+        EXPECT_EQ(m.positions[i], glm::vec3(kCubeVertices[i][0], kCubeVertices[i][1], kCubeVertices[i][2]));
+    auto tris = cube_triangles();
+    for (size_t t = 0; t < 12; ++t) EXPECT_EQ(m.triangles[t], glm::uvec3(tris[t][0], tris[t][1], tris[t][2]));
+}
+
+TEST(PlyReader, AsciiCubeHasExactVerticesAndFanTriangles) {
+    TempDir dir;
+    expect_cube(io::read_ply(dir.write("cube.ply", cube_ascii_ply())));
+}
+
+TEST(PlyReader, BinaryLittleEndianCube) {
+    TempDir dir;
+    expect_cube(io::read_ply(dir.write("cube.ply", cube_binary_ply(false))));
+}
+
+TEST(PlyReader, BinaryBigEndianCube) {
+    TempDir dir;
+    expect_cube(io::read_ply(dir.write("cube.ply", cube_binary_ply(true))));
+}
+
+TEST(PlyReader, LoadMeshKeepsIndexingAndAddsNormals) {
+    TempDir dir;
+    Mesh m = load_mesh(dir.write("cube.ply", cube_binary_ply(false)));
+    EXPECT_EQ(m.vertex_count(), 8u);
+    EXPECT_EQ(m.triangle_count(), 12u);
+    EXPECT_FALSE(m.welded);
+    ASSERT_EQ(m.normals.size(), 8u);
+    for (auto n : m.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+}
+
+TEST(PlyReader, ColoursNormalsAndUvsAreKept) {
+    TempDir dir;
+    std::string text =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property float nx\nproperty float ny\nproperty float nz\nproperty uchar red\nproperty uchar green\n"
+        "property uchar blue\nproperty uchar alpha\nproperty float s\nproperty float t\n"
+        "element face 1\nproperty list uchar uint vertex_index\nend_header\n"
+        "0 0 0 0 0 1 255 0 0 255 0 0\n1 0 0 0 0 1 0 255 0 255 1 0\n0 1 0 0 0 1 0 0 51 255 0 1\n3 0 1 2\n";
+    Mesh m = load_mesh(dir.write("tri.ply", text));
+    ASSERT_EQ(m.colors.size(), 3u);
+    EXPECT_EQ(m.colors[0], glm::vec3(1, 0, 0));
+    EXPECT_EQ(m.colors[1], glm::vec3(0, 1, 0));
+    EXPECT_NEAR(m.colors[2].z, 0.2f, 1e-6f);
+    ASSERT_EQ(m.normals.size(), 3u);
+    EXPECT_EQ(m.normals[1], glm::vec3(0, 0, 1));
+    ASSERT_EQ(m.uvs.size(), 3u);
+    EXPECT_EQ(m.uvs[2], glm::vec2(0, 1));
+}
+
+TEST(PlyReader, FloatColoursAreKeptAsIs) {
+    TempDir dir;
+    std::string s = "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                    "property double z\nproperty float red\nproperty float green\nproperty float blue\n"
+                    "element face 1\nproperty list int short vertex_indices\nend_header\n";
+    float rgb[3][3] = {{0.25f, 0.5f, 0.75f}, {1, 1, 1}, {0, 0, 0}};
+    double xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int i = 0; i < 3; ++i) {
+        for (double x : xyz[i]) put<double>(s, x, true);
+        for (float c : rgb[i]) put<float>(s, c, true);
+    }
+    put<int32_t>(s, 3, true);
+    for (int16_t i : {0, 1, 2}) put<int16_t>(s, i, true);
+    Mesh m = io::read_ply(dir.write("tri.ply", s));
+    ASSERT_EQ(m.colors.size(), 3u);
+    EXPECT_EQ(m.colors[0], glm::vec3(0.25f, 0.5f, 0.75f));
+    EXPECT_EQ(m.positions[2], glm::vec3(0, 1, 0));
+    EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2));
+}
+
+TEST(PlyReader, UnknownElementsAndPropertiesAreSkipped) {
+    TempDir dir;
+    for (bool binary : {false, true}) {
+        std::string s = std::string("ply\nformat ") + (binary ? "binary_little_endian" : "ascii") +
+                        " 1.0\ncomment extra stuff everywhere\nobj_info scanner 3\n"
+                        "element camera 1\nproperty float view_px\nproperty list uchar int32 ids\n"
+                        "element vertex 3\nproperty int8 flags\nproperty float32 x\nproperty float32 y\n"
+                        "property list uint16 float32 weights\nproperty float32 z\nproperty uint16 quality\n"
+                        "element face 1\nproperty uchar kind\nproperty list uint8 int32 vertex_indices\n"
+                        "property list uchar float texcoord\n"
+                        "element edge 2\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+        if (!binary) {
+            s += "1.5 2 7 8\n1 0 0 2 0.5 0.5 0 9\n2 1 0 0 0 9\n3 0 1 1 1.0 0 9\n9 3 0 1 2 2 0.1 0.2\n0 1\n1 2\n";
+        } else {
+            put<float>(s, 1.5f);
+            put<uint8_t>(s, 2);
+            put<int32_t>(s, 7);
+            put<int32_t>(s, 8);
+            float xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+            for (int i = 0; i < 3; ++i) {
+                put<int8_t>(s, 1);
+                put<float>(s, xyz[i][0]);
+                put<float>(s, xyz[i][1]);
+                put<uint16_t>(s, uint16_t(i));  // list of i weights
+                for (int k = 0; k < i; ++k) put<float>(s, 0.5f);
+                put<float>(s, xyz[i][2]);
+                put<uint16_t>(s, 9);
+            }
+            put<uint8_t>(s, 9);
+            put<uint8_t>(s, 3);
+            for (int32_t i : {0, 1, 2}) put<int32_t>(s, i);
+            put<uint8_t>(s, 2);
+            put<float>(s, 0.1f);
+            put<float>(s, 0.2f);
+            for (int32_t i : {0, 1, 1, 2}) put<int32_t>(s, i);
+        }
+        Mesh m = io::read_ply(dir.write("extra.ply", s));
+        ASSERT_EQ(m.vertex_count(), 3u) << binary;
+        EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0)) << binary;
+        EXPECT_EQ(m.positions[2], glm::vec3(0, 1, 0)) << binary;
+        ASSERT_EQ(m.triangle_count(), 1u) << binary;
+        EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2)) << binary;
+    }
+}
+
+TEST(PlyReader, PolygonsAreFanTriangulatedAndShortFacesDropped) {
+    TempDir dir;
+    std::string s = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                    "0 0 0\n1 0 0\n1 1 0\n0.5 1.5 0\n0 1 0\n5 0 1 2 3 4\n2 0 1\n";
+    Mesh m = io::read_ply(dir.write("penta.ply", s));
+    ASSERT_EQ(m.triangle_count(), 3u);
+    EXPECT_EQ(m.triangles[2], glm::uvec3(0, 3, 4));
+}
+
+TEST(PlyReader, CrlfHeaderIsAccepted) {
+    TempDir dir;
+    std::string s = cube_ascii_ply();
+    std::string crlf;
+    for (char c : s) {
+        if (c == '\n') crlf += '\r';
+        crlf += c;
+    }
+    expect_cube(io::read_ply(dir.write("crlf.ply", crlf)));
+}
+
+TEST(PlyReader, EmptyFileIsAnError) {
+    TempDir dir;
+    EXPECT_TRUE(LoadFailsWith(dir.write("empty.ply", ""), "empty file"));
+}
+
+TEST(PlyReader, MissingMagicIsAnError) {
+    TempDir dir;
+    EXPECT_TRUE(LoadFailsWith(dir.write("x.ply", "solid not a ply\n"), "not a PLY file"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("y.ply", std::string("\x89PNG\r\n\x1a\n\0\0", 10)), "not a PLY file"));
+}
+
+TEST(PlyReader, HeaderErrorsAreReportedWithLine) {
+    TempDir dir;
+    EXPECT_TRUE(LoadFailsWith(dir.write("a.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), "truncated PLY header (no end_header)"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("b.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty quad x\nend_header\n"),
+                              "unknown PLY property type 'quad' at line 4"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("c.ply", "ply\nformat utf8 1.0\nend_header\n"), "unknown PLY format 'utf8' at line 2"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("d.ply", "ply\nformat ascii 1.0\nelement vertex many\nend_header\n"),
+                              "expected an element count but found 'many' at line 3"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("e.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nend_header\n1\n"),
+                              "PLY vertex element lacks x, y or z"));
+}
+
+TEST(PlyReader, TruncatedBinaryIsAnError) {
+    TempDir dir;
+    std::string s = cube_binary_ply(false);
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut_vertices.ply", s.substr(0, s.find("end_header") + 11 + 40)),
+                              "header claims 8 vertices but file has only 40 bytes"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut_faces.ply", s.substr(0, s.size() - 3)), "truncated"));
+}
+
+TEST(PlyReader, TruncatedAsciiReportsLine) {
+    TempDir dir;
+    std::string s = cube_ascii_ply();
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut.ply", s.substr(0, s.size() - 4)), "unexpected end of file while reading"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut.ply", s.substr(0, s.size() - 4)), "at line 24"));
+}
+
+TEST(PlyReader, HeaderClaimingTwoToThe31ElementsFailsWithoutAllocating) {
+    TempDir dir;
+    std::string s = cube_binary_ply(false);
+    std::string v = s, f = s, a = cube_ascii_ply();
+    v.replace(v.find("vertex 8"), 8, "vertex 2147483648");
+    f.replace(f.find("face 6"), 6, "face 2147483648");
+    a.replace(a.find("vertex 8"), 8, "vertex 2147483648");
+    EXPECT_TRUE(LoadFailsWith(dir.write("v.ply", v), "header claims 2147483648 vertices but file has only"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("f.ply", f), "header claims 2147483648 faces but file has only 102 bytes"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("a.ply", a), "header claims 2147483648 vertices but file has only"));
+    std::string huge_list = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+    for (int k = 0; k < 9; ++k) put<float>(huge_list, float(k % 2));
+    put<uint32_t>(huge_list, 0x80000000u);
+    put<int32_t>(huge_list, 0);
+    EXPECT_TRUE(LoadFailsWith(dir.write("list.ply", huge_list), "list claims 2147483648 items"));
+}
+
+TEST(PlyReader, OutOfRangeAndNegativeIndicesAreErrors) {
+    TempDir dir;
+    std::string s = cube_ascii_ply();
+    std::string big = s, neg = s;
+    big.replace(big.rfind("4 1 2 6 5"), 9, "4 1 2 6 8");
+    neg.replace(neg.rfind("4 1 2 6 5"), 9, "4 1 -1 6 5");
+    EXPECT_TRUE(LoadFailsWith(dir.write("big.ply", big), "face 5 refers to vertex 8 but there are only 8 vertices at line 24"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("neg.ply", neg), "face 5 refers to vertex -1"));
+    std::string bin = cube_binary_ply(true);
+    bin[bin.size() - 1] = 9;  // last index of the last face, big endian low byte
+    EXPECT_TRUE(LoadFailsWith(dir.write("bin.ply", bin), "face 5 refers to vertex 9 but there are only 8 vertices at byte"));
+}
+
+TEST(PlyReader, NanInfAndNonNumericValuesAreErrors) {
+    TempDir dir;
+    std::string s = cube_ascii_ply();
+    size_t at = s.find("end_header\n") + 11;
+    std::string nan = s, inf = s, word = s;
+    nan.replace(s.find("1 1 0\n", at), 5, "1 nan 0");
+    inf.replace(s.find("1 1 0\n", at), 5, "1 -inf 0");
+    word.replace(s.find("1 1 0\n", at), 5, "1 one 0");
+    EXPECT_TRUE(LoadFailsWith(dir.write("nan.ply", nan), "vertex 2 has a non-finite coordinate at line 13"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("inf.ply", inf), "vertex 2 has a non-finite coordinate"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("word.ply", word), "expected a PLY property value but found 'one' at line 13"));
+    std::string bin = cube_binary_ply(false);
+    size_t data = bin.find("end_header\n") + 11;
+    float n = std::nanf("");
+    std::memcpy(&bin[data + 12 * 3 + 4], &n, 4);
+    EXPECT_TRUE(LoadFailsWith(dir.write("nan_bin.ply", bin), "vertex 3 has a non-finite coordinate"));
+}
+
+TEST(PlyReader, PointCloudHasNoTriangles) {
+    TempDir dir;
+    EXPECT_TRUE(LoadFailsWith(dir.write("points.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                                                      "property float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n"),
+                              "no triangles"));
+}
+
+}  // namespace
+}  // namespace inkshade::test

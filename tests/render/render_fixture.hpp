@@ -1,0 +1,94 @@
+// Shared pieces of the GL tests: one headless renderer per test binary, an orthographic
+// camera looking down -z, and a CPU ray caster that recovers what each pixel sees.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "inkshade/camera.hpp"
+#include "inkshade/renderer.hpp"
+
+namespace inkshade::test {
+
+// One GL context for the whole binary (creating contexts is slow on llvmpipe).
+inline Renderer& shared_renderer() {
+    static std::unique_ptr<Renderer> renderer = std::make_unique<Renderer>();
+    return *renderer;
+}
+
+constexpr int kSize = 256;
+
+// Orthographic camera on +z looking at the origin; the view is 2.5 units high.
+inline Camera ortho_camera() {
+    Camera c;
+    c.eye = {0, 0, 5};
+    c.target = {0, 0, 0};
+    c.up = {0, 1, 0};
+    c.orthographic = true;
+    c.ortho_height = 2.5f;
+    c.near_plane = 1.0f;
+    c.far_plane = 10.0f;
+    return c;
+}
+
+// World-space ray through image point (x, y) in pixels (top-left origin, y down) for the
+// orthographic camera above: origin on the near plane, direction -z.
+inline glm::vec3 ray_origin(const Camera& c, float x, float y, int w = kSize, int h = kSize) {
+    float half_h = 0.5f * c.ortho_height, half_w = half_h * float(w) / float(h);
+    float wx = (x / float(w) * 2.0f - 1.0f) * half_w;
+    float wy = (1.0f - y / float(h) * 2.0f) * half_h;
+    return {wx, wy, c.eye.z};
+}
+
+// Image position of a world point under the same camera.
+inline glm::vec2 project(const Camera& c, const glm::vec3& p, int w = kSize, int h = kSize) {
+    float half_h = 0.5f * c.ortho_height, half_w = half_h * float(w) / float(h);
+    return {(p.x / half_w + 1.0f) * 0.5f * float(w), (1.0f - p.y / half_h) * 0.5f * float(h)};
+}
+
+struct Hit {
+    int triangle = -1;
+    glm::vec3 point{0.0f};
+    glm::vec3 barycentric{0.0f};  // weights of the triangle's vertices 0, 1, 2
+};
+
+// Nearest hit of the ray (origin, -z) on the mesh (Moller-Trumbore), or nullopt.
+inline std::optional<Hit> cast_down(const Mesh& mesh, const glm::vec3& origin) {
+    const glm::vec3 dir(0, 0, -1);
+    std::optional<Hit> best;
+    float best_t = INFINITY;
+    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const glm::vec3 a = mesh.positions[mesh.triangles[f].x], b = mesh.positions[mesh.triangles[f].y],
+                        c = mesh.positions[mesh.triangles[f].z];
+        glm::vec3 e1 = b - a, e2 = c - a, pv = glm::cross(dir, e2);
+        float det = glm::dot(e1, pv);
+        if (std::abs(det) < 1e-12f) continue;
+        glm::vec3 tv = origin - a;
+        float u = glm::dot(tv, pv) / det;
+        if (u < 0 || u > 1) continue;
+        glm::vec3 qv = glm::cross(tv, e1);
+        float v = glm::dot(dir, qv) / det;
+        if (v < 0 || u + v > 1) continue;
+        float t = glm::dot(e2, qv) / det;
+        if (t > 0 && t < best_t) {
+            best_t = t;
+            best = Hit{int(f), origin + t * dir, {1 - u - v, u, v}};
+        }
+    }
+    return best;
+}
+
+// Ray/sphere (centre 0, radius r) for the analytic normal at a pixel; nullopt on a miss.
+inline std::optional<glm::vec3> sphere_normal(const glm::vec3& origin, float r = 1.0f) {
+    float d2 = origin.x * origin.x + origin.y * origin.y;
+    if (d2 >= r * r) return std::nullopt;
+    return glm::vec3(origin.x, origin.y, std::sqrt(r * r - d2)) / r;
+}
+
+inline int to_byte(float v) { return int(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f))); }
+
+}  // namespace inkshade::test
