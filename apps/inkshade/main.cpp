@@ -1,4 +1,6 @@
 // inkshade: non-photorealistic rendering of triangle meshes from the command line.
+#include <malloc.h>
+
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -19,6 +21,11 @@ void print_error(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // llvmpipe allocates and frees large per-draw buffers every frame; glibc would mmap each
+    // one afresh and page-fault it in again. Keeping them in the heap halved the per-frame
+    // time of a 1M-triangle render here (docs/benchmarks.md).
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     CLI::App app{"inkshade: non-photorealistic rendering of triangle meshes (toon, technical, lines)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "inkshade 0.1.0");

@@ -1,4 +1,6 @@
 // `inkshade render MODEL -o out.png`: one image of a model with a shading model.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -41,7 +43,10 @@ int run_render(const RenderArgs& args) {
     check_output_path(args.output);
     const RenderOptions options = args.scene.render_options();
     const ShadingSelection shading = args.scene.shading_selection();
+    const auto load_start = std::chrono::steady_clock::now();
     const Mesh mesh = load_mesh(args.scene.model);
+    const double load_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();
     const Camera camera = args.scene.camera(box, float(options.width) / float(options.height));
     const Light light = args.scene.light(box, camera);
@@ -68,6 +73,9 @@ int run_render(const RenderArgs& args) {
                     renderer.gl_renderer().c_str());
         for (const auto& pass : order) std::printf("  %-10s median %8.2f ms\n", pass.c_str(), median(per_pass[pass]));
         std::printf("  %-10s median %8.2f ms\n", "total", median(totals));
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, double(usage.ru_maxrss) / 1024.0);
     }
     write_png(args.output, image);
     return 0;

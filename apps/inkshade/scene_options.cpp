@@ -29,7 +29,8 @@ void SceneOptions::add_to(CLI::App& cmd) {
     cmd.add_option("MODEL", model, "mesh file (.obj .stl .ply .off) or builtin:sphere|torus|torus-knot|teapot")
         ->required();
     cmd.add_option("--shading", shading, "shading model (see `inkshade styles`)");
-    cmd.add_option("--set", sets, "parameter override [model.]param=value (repeatable)");
+    cmd.add_option("--set", sets, "parameter override [model.]param=value (repeatable)")
+        ->allow_extra_args(false);  // one value per --set, so MODEL may follow
     cmd.add_option("--size", size, "image size WxH")->capture_default_str();
     cmd.add_option("--azimuth", azimuth, "camera azimuth in degrees about +y (0 = from +z)");
     cmd.add_option("--elevation", elevation, "camera elevation in degrees");

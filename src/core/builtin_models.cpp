@@ -8,6 +8,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <map>
 #include <numbers>
 #include <numeric>
 #include <string>
@@ -220,13 +222,91 @@ Mesh teapot(int subdivisions) {
 
 std::vector<std::string> names() { return {"sphere", "torus", "torus-knot", "teapot"}; }
 
+namespace {
+
+// "key=value,key=value" after "NAME:" -> numbers, with unknown keys and bad numbers refused.
+class BuiltinOptions {
+public:
+    BuiltinOptions(const std::string& spec, const std::string& model, std::vector<std::string> allowed)
+        : spec_(spec) {
+        size_t start = 0;
+        while (start < model.size()) {
+            size_t comma = model.find(',', start);
+            std::string item = model.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            start = comma == std::string::npos ? model.size() : comma + 1;
+            size_t eq = item.find('=');
+            std::string key = item.substr(0, eq);
+            if (eq == std::string::npos || std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+                std::string list;
+                for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+                throw InputError(spec_, "unknown option '" + item + "' (options: " + list + ")");
+            }
+            char* end = nullptr;
+            std::string text = item.substr(eq + 1);
+            double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !std::isfinite(v))
+                throw InputError(spec_, "option " + key + ": '" + text + "' is not a number");
+            values_[key] = v;
+        }
+    }
+    float real(const std::string& key, float fallback) const {
+        auto it = values_.find(key);
+        return it == values_.end() ? fallback : float(it->second);
+    }
+    int integer(const std::string& key, int fallback) const {
+        auto it = values_.find(key);
+        if (it == values_.end()) return fallback;
+        if (it->second != std::floor(it->second) || std::abs(it->second) > 1e6)
+            throw InputError(spec_, "option " + key + " must be an integer up to 1000000");
+        return int(it->second);
+    }
+
+private:
+    std::string spec_;
+    std::map<std::string, double> values_;
+};
+
+// Tessellations beyond this many triangles are refused before allocating (~3 GB of mesh).
+constexpr double kMaxBuiltinTriangles = 1e8;
+
+void check_size(const std::string& spec, double triangles) {
+    if (triangles > kMaxBuiltinTriangles)
+        throw InputError(spec, "tessellation would make " + std::to_string(int64_t(triangles)) +
+                                   " triangles (limit 100000000)");
+}
+
+}  // namespace
+
 Mesh by_name(const std::string& name) {
-    if (name == "sphere") return sphere();
-    if (name == "torus") return torus();
-    if (name == "torus-knot") return torus_knot();
-    if (name == "teapot") return teapot();
-    throw InputError("builtin:" + name,
-                     "unknown built-in model (choose sphere, torus, torus-knot, teapot)");
+    const std::string spec = "builtin:" + name;
+    const size_t colon = name.find(':');
+    const std::string model = name.substr(0, colon);
+    const std::string opts = colon == std::string::npos ? "" : name.substr(colon + 1);
+    if (model == "sphere") {
+        BuiltinOptions o(spec, opts, {"rings", "segments", "radius"});
+        int rings = o.integer("rings", 64), segments = o.integer("segments", 128);
+        check_size(spec, 2.0 * rings * segments);
+        return sphere(rings, segments, o.real("radius", 1.0f));
+    }
+    if (model == "torus") {
+        BuiltinOptions o(spec, opts, {"major", "minor", "major-segments", "minor-segments"});
+        int a = o.integer("major-segments", 128), b = o.integer("minor-segments", 64);
+        check_size(spec, 2.0 * a * b);
+        return torus(o.real("major", 1.0f), o.real("minor", 0.4f), a, b);
+    }
+    if (model == "torus-knot") {
+        BuiltinOptions o(spec, opts, {"p", "q", "tube", "segments", "tube-segments"});
+        int a = o.integer("segments", 512), b = o.integer("tube-segments", 32);
+        check_size(spec, 2.0 * a * b);
+        return torus_knot(o.integer("p", 2), o.integer("q", 3), o.real("tube", 0.15f), a, b);
+    }
+    if (model == "teapot") {
+        BuiltinOptions o(spec, opts, {"subdivisions"});
+        int n = o.integer("subdivisions", 16);
+        check_size(spec, 64.0 * n * n);
+        return teapot(n);
+    }
+    throw InputError(spec, "unknown built-in model (choose sphere, torus, torus-knot, teapot)");
 }
 
 }  // namespace inkshade::builtin

@@ -1,5 +1,5 @@
 // One read path for all readers: mmap (zero-copy, MAP_POPULATE so a 500 MB file faults in
-// once instead of page by page), falling back to read() for pipes and special files.
+// at once instead of page by page), falling back to pread() where mapping fails.
 #include "io/file_bytes.hpp"
 
 #include <fcntl.h>
@@ -7,11 +7,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <memory>
 #include <system_error>
-#include <vector>
 
 #include "inkshade/error.hpp"
 
@@ -26,7 +24,7 @@ namespace {
 }  // namespace
 
 FileBytes::FileBytes(const std::string& path) {
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);  // a FIFO must not block the open
     if (fd < 0) fail_errno(path, errno);
     struct Closer {
         int fd;
@@ -37,31 +35,30 @@ FileBytes::FileBytes(const std::string& path) {
     if (::fstat(fd, &st) != 0) fail_errno(path, errno);
     if (S_ISDIR(st.st_mode)) throw InputError(path, "is a directory");
 
-    if (S_ISREG(st.st_mode)) {
-        if (st.st_size == 0) throw InputError(path, "empty file");
-        size_ = size_t(st.st_size);
-        void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-        if (p != MAP_FAILED) {
-            data_ = static_cast<const char*>(p);
-            mapped_ = true;
-            return;
-        }
+    // Devices and pipes could stream forever (a link named x.stl to /dev/zero): refuse them.
+    if (!S_ISREG(st.st_mode)) throw InputError(path, "not a regular file");
+    if (st.st_size == 0) throw InputError(path, "empty file");
+    size_ = size_t(st.st_size);
+    void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (p != MAP_FAILED) {
+        data_ = static_cast<const char*>(p);
+        mapped_ = true;
+        return;
     }
-    // Not mappable (pipe, /dev/stdin, exotic file system): read until end of file.
-    std::vector<char> bytes;
-    char chunk[1 << 16];
-    for (;;) {
-        ssize_t n = ::read(fd, chunk, sizeof chunk);
+    // Not mappable (some network or FUSE file systems): read it instead.
+    std::unique_ptr<char[]> owned(new char[size_]);
+    for (size_t done = 0; done < size_;) {
+        ssize_t n = ::pread(fd, owned.get() + done, size_ - done, off_t(done));
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) fail_errno(path, errno);
-        if (n == 0) break;
-        bytes.insert(bytes.end(), chunk, chunk + n);
+        if (n == 0) {  // shrank since fstat
+            size_ = done;
+            break;
+        }
+        done += size_t(n);
     }
-    if (bytes.empty()) throw InputError(path, "empty file");
-    char* owned = new char[bytes.size()];
-    std::copy(bytes.begin(), bytes.end(), owned);
-    data_ = owned;
-    size_ = bytes.size();
+    if (size_ == 0) throw InputError(path, "empty file");
+    data_ = owned.release();
 }
 
 FileBytes::~FileBytes() {

@@ -97,14 +97,18 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     }
 
     validate(mesh, path);
-    // OBJ decides for itself: its vertices are split where corner normals differ on purpose.
-    if (soup || (ext != ".obj" && shares_no_vertex(mesh))) {
+    // Not for OBJ with per-corner normals or uvs: those vertices are split on purpose.
+    bool split_on_purpose = ext == ".obj" && (!mesh.normals.empty() || !mesh.uvs.empty());
+    if (soup || (!split_on_purpose && shares_no_vertex(mesh))) {
         // Per-corner normals of a soup are facet normals; after merging, the first one of each
         // cluster would win, so recompute smooth ones instead.
         mesh.normals.clear();
         geometry::weld(mesh, geometry::WeldOptions{options.weld_epsilon});
     }
-    if (options.compute_normals) geometry::ensure_vertex_normals(mesh);
+    if (options.compute_normals)
+        geometry::ensure_vertex_normals(mesh);
+    else if (!mesh.normals.empty() && !geometry::normals_are_sane(mesh))
+        mesh.normals.clear();  // empty means "compute": better than passing NaNs on
     return mesh;
 }
 

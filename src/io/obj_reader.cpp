@@ -68,7 +68,7 @@ Prescan prescan(std::string_view text, const std::string& path) {
             int64_t idx = 0;
             if (!parse_number(parts[k], idx) || idx == 0)
                 in.fail("bad face index " + quote_token(tok) + " (indices are non-zero integers)");
-            if (idx < 0 && uint64_t(-idx) > counts[k])
+            if (idx < 0 && 0 - uint64_t(idx) > counts[k])  // unsigned negation: INT64_MIN is valid input
                 in.fail(std::string("face refers to ") + what[k] + " " + std::to_string(idx) + " but only " +
                         std::to_string(counts[k]) + " are defined before it");
             if (idx > max_ref[k].max_positive) max_ref[k] = {idx, in.line()};
@@ -103,6 +103,15 @@ Prescan prescan(std::string_view text, const std::string& path) {
             }
         } else if (key == "t") {
             s.has_tags = true;
+        } else if (key == "mtllib") {
+            // tinyobj reads a library line by line with no size limit: a device (or a link to
+            // one) would never end, so only regular files may be named.
+            for (std::string_view name = in.token_on_line(); !name.empty(); name = in.token_on_line()) {
+                std::error_code ec;
+                auto lib = std::filesystem::path(path).parent_path() / std::string(name);
+                if (std::filesystem::exists(lib, ec) && !std::filesystem::is_regular_file(lib, ec))
+                    in.fail("material library " + quote_token(name) + " is not a regular file");
+            }
         }
         in.skip_line();
     }
@@ -223,13 +232,13 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
         return uint32_t(mesh.positions.size() - 1);
     };
     constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
-    std::vector<uint32_t> first(nv, kNone), next;  // chains of vertices sharing a position
-    std::vector<tinyobj::index_t> key;            // the corner each vertex was made from
-    if (!all_normals && !all_uvs) {
+    const bool keyed = all_normals || all_uvs;
+    std::vector<uint32_t> first(keyed ? nv : 0, kNone), next;  // chains of vertices sharing a position
+    std::vector<tinyobj::index_t> key;                        // the corner each vertex was made from
+    if (!keyed)
         for (size_t v = 0; v < nv; ++v) add_vertex({int(v), -1, -1});
-    }
     auto vertex_of = [&](const tinyobj::index_t& c) -> uint32_t {
-        if (!all_normals && !all_uvs) return uint32_t(c.vertex_index);
+        if (!keyed) return uint32_t(c.vertex_index);
         uint32_t prev = kNone;
         for (uint32_t cur = first[size_t(c.vertex_index)]; cur != kNone; prev = cur, cur = next[cur]) {
             const tinyobj::index_t& k = key[cur];
@@ -258,6 +267,7 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
         }
     }
 
+    mesh.triangles.reserve(triangulate ? face_total : corner_total);  // exact, or an upper bound
     size_t face_index = 0;
     for (const tinyobj::shape_t& shape : shapes) {
         const auto& idx = shape.mesh.indices;
@@ -278,10 +288,14 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
                     material = default_material;
                 }
             }
-            uint32_t a = vertex_of(idx[corner]);
-            for (size_t k = 1; k + 1 < n; ++k) {  // fan; tinyobj already gave triangles when it triangulated
-                mesh.triangles.emplace_back(a, vertex_of(idx[corner + k]), vertex_of(idx[corner + k + 1]));
+            // Fan (tinyobj already gave triangles when it triangulated); vertices are numbered
+            // in corner order, so evaluate them one statement at a time.
+            uint32_t a = vertex_of(idx[corner]), b = vertex_of(idx[corner + 1]);
+            for (size_t k = 2; k < n; ++k) {
+                uint32_t c = vertex_of(idx[corner + k]);
+                mesh.triangles.emplace_back(a, b, c);
                 if (any_material) mesh.face_materials.push_back(material);
+                b = c;
             }
             corner += n;
         }

@@ -30,9 +30,10 @@ Mesh read_off(const std::string& path) {
     if (!parse_number(tok, nv)) in.fail("not an OFF file (expected 'OFF' or a vertex count but found " + quote_token(tok) + ")");
     nf = in.number_on_line<uint64_t>("a face count");
     if (!in.at_line_end()) in.number<uint64_t>("an edge count");  // unused, often absent
-    // Every vertex and face needs at least two bytes: bounds the counts before allocating.
+    // Each number needs at least two bytes (digit and separator): bounds the counts before
+    // anything is allocated.
     size_t room = in.remaining() / 2 + 1;
-    if (nv > room || nv > UINT32_MAX)
+    if (nv > room / (has_normal ? 6 : 3) || nv > UINT32_MAX)
         in.fail("header claims " + std::to_string(nv) + " vertices but file has only " + std::to_string(in.remaining()) + " bytes");
     if (nf > room)
         in.fail("header claims " + std::to_string(nf) + " faces but file has only " + std::to_string(in.remaining()) + " bytes");

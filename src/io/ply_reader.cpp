@@ -238,11 +238,12 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
     bool have_vertices = false;
     std::vector<uint32_t> polygon;
     for (const Element& e : h.elements) {
+        if (e.properties.empty()) continue;  // no bytes at all, whatever its count claims
         // Smallest possible record: binary = sum of scalar and list-count sizes; ascii = one
         // character and one separator per property.
         size_t min_record = 0;
         for (const Property& p : e.properties) min_record += binary ? size_of(p.is_list ? p.count_type : p.type) : 2;
-        if (min_record > 0 && e.count > (src.remaining() + (binary ? 0 : 1)) / min_record)
+        if (e.count > (src.remaining() + (binary ? 0 : 1)) / min_record)
             throw InputError(src.path(), "header claims " + std::to_string(e.count) + " " + plural(e) +
                                              " but file has only " + std::to_string(src.remaining()) + " bytes");
 
@@ -334,7 +335,7 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
             }
         } else if (binary && !e.has_lists()) {
             src.skip(Scalar::U8, e.count * min_record);  // fixed-size records: one jump
-        } else if (!e.properties.empty()) {
+        } else {
             for (uint64_t i = 0; i < e.count; ++i)
                 for (const Property& p : e.properties) skip_property(p);
         }

@@ -22,6 +22,13 @@ TEST(RenderCommand, WritesPngOfRequestedSize) {
     EXPECT_EQ(img.pixel(0, 0)[0], 255);
 }
 
+TEST(RenderCommand, RepeatedSetBeforeModelTakesOneValueEach) {
+    TempDir dir;
+    auto r = run_cli("render --shading phong --set shininess=3 --set specular=1,0,0 builtin:sphere --size 32x32 -o " +
+                     dir.file("a.png"));
+    EXPECT_EQ(r.status, 0) << r.err;
+}
+
 TEST(RenderCommand, TransparentBackgroundGivesAlphaZero) {
     TempDir dir;
     auto r = run_cli("render builtin:torus --size 64x64 --background transparent -o " + dir.file("t.png"));

@@ -244,3 +244,23 @@ TEST(BuiltinModels, BadParametersThrowInputError) {
 
 }  // namespace
 }  // namespace inkshade::builtin
+
+namespace inkshade {
+namespace {
+
+TEST(BuiltinByName, OptionsChangeTessellation) {
+    Mesh m = builtin::by_name("sphere:rings=10,segments=20");
+    EXPECT_EQ(m.triangle_count(), 2u * 10u * 20u - 2u * 20u);  // pole rows are triangles, not quads
+    Mesh t = builtin::by_name("torus:major-segments=12,minor-segments=8,minor=0.25");
+    EXPECT_EQ(t.triangle_count(), 2u * 12u * 8u);
+    EXPECT_NEAR(t.bounds().max.z, 0.25f, 1e-5f);
+}
+
+TEST(BuiltinByName, BadOptionsAreInputErrors) {
+    for (const char* bad : {"sphere:rings", "sphere:rings=abc", "sphere:colour=3", "teapot:subdivisions=2.5",
+                            "sphere:rings=100000,segments=100000", "torus:minor=nan", "cube"})
+        EXPECT_THROW(builtin::by_name(bad), InputError) << bad;
+}
+
+}  // namespace
+}  // namespace inkshade

@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -113,6 +114,38 @@ TEST(LoadMesh, EveryFormatGivesTheSameCube) {
         EXPECT_EQ(sorted_positions(m), sorted_cube()) << name;
         EXPECT_EQ(m.normals.size(), 8u) << name;
     }
+}
+
+}  // namespace
+}  // namespace inkshade::test
+
+namespace inkshade::test {
+namespace {
+
+TEST(LoadMesh, DevicesAndFifosAreRefused) {
+    TempDir dir;
+    std::filesystem::create_symlink("/dev/zero", dir.file("zero.stl"));
+    EXPECT_TRUE(LoadFailsWith(dir.file("zero.stl"), "not a regular file"));
+    ASSERT_EQ(::mkfifo(dir.file("pipe.obj").c_str(), 0600), 0);
+    EXPECT_TRUE(LoadFailsWith(dir.file("pipe.obj"), "not a regular file"));
+}
+
+TEST(LoadMesh, MaterialLibraryMustBeARegularFile) {
+    TempDir dir;
+    std::filesystem::create_symlink("/dev/zero", dir.file("zero.mtl"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("m.obj", "mtllib zero.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                              "material library 'zero.mtl' is not a regular file at line 1"));
+}
+
+TEST(LoadMesh, InsaneFileNormalsAreDroppedWhenNotComputed) {
+    TempDir dir;
+    std::string p = dir.write("n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+    LoadOptions keep;
+    keep.compute_normals = false;
+    EXPECT_TRUE(load_mesh(p, keep).normals.empty());
+    Mesh m = load_mesh(p);
+    ASSERT_EQ(m.normals.size(), 3u);
+    EXPECT_NEAR(m.normals[0].z, 1.0f, 1e-6f);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // sanitizer build too (INKSHADE_SANITIZE), which turns out-of-bounds reads into failures.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <random>
 
 #include "io/mesh_files.hpp"
@@ -10,6 +12,12 @@
 
 namespace inkshade::test {
 namespace {
+
+// INKSHADE_FUZZ_SCALE=100 runs a hundred times the default number of cases (for a soak).
+int scale() {
+    const char* s = std::getenv("INKSHADE_FUZZ_SCALE");
+    return s ? std::max(1, std::atoi(s)) : 1;
+}
 
 void expect_loads_or_input_error(const std::string& path, const std::string& label) {
     try {
@@ -27,7 +35,7 @@ TEST(MalformedInput, RandomBytesFailCleanlyInEveryFormat) {
     TempDir dir;
     std::mt19937 rng(1234);
     for (const char* ext : {".obj", ".stl", ".ply", ".off"}) {
-        for (int i = 0; i < 100; ++i) {
+        for (int i = 0; i < 100 * scale(); ++i) {
             std::string s(rng() % 3000 + 1, '\0');
             for (char& c : s) c = char(rng());
             expect_loads_or_input_error(dir.write(std::string("r") + ext, s), ext);
@@ -44,7 +52,7 @@ TEST(MalformedInput, DamagedValidFilesFailCleanly) {
         {".off", cube_off()}};
     const std::string tokens[] = {"-1", "0", "nan", "inf", "1e40", "2147483648", "4294967295", "99999999999", "x", "\n", " ", "/", "#"};
     for (const auto& [ext, original] : originals) {
-        for (int i = 0; i < 300; ++i) {
+        for (int i = 0; i < 300 * scale(); ++i) {
             std::string s = original;
             for (int edits = 1 + int(rng() % 3); edits > 0 && !s.empty(); --edits) {
                 size_t at = rng() % s.size();

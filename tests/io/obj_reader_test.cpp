@@ -120,6 +120,15 @@ TEST(ObjReader, SoupWithRepeatedPositionsIsWelded) {
     EXPECT_TRUE(m.welded);
 }
 
+TEST(ObjReader, SoupWithNearlyEqualPositionsIsWeldedWithinEpsilon) {
+    TempDir dir;
+    // Two triangles written separately; the shared edge's copies differ in the last digits.
+    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.0000001 0 0\nv 1 1.0000001 0\nv 0 1 0\nf 1 2 3\nf 4 5 6\n";
+    Mesh m = load_mesh(dir.write("near.obj", s));
+    EXPECT_EQ(m.vertex_count(), 4u);
+    EXPECT_TRUE(m.welded);
+}
+
 TEST(ObjReader, LargePolygonsAreTriangulated) {
     TempDir dir;
     for (int n : {20, 300}) {  // 300 > 255: tinyobj's per-face counts are 8-bit
@@ -184,6 +193,8 @@ TEST(ObjReader, OutOfRangeIndicesAreErrors) {
     EXPECT_TRUE(LoadFailsWith(dir.write("big.obj", cube_obj() + "f 1 2 9\n"), "face refers to vertex 9 but the file has only 8 at line 17"));
     EXPECT_TRUE(LoadFailsWith(dir.write("neg.obj", cube_obj() + "f 1 2 -9\n"), "face refers to vertex -9 but only 8 are defined before it at line 17"));
     EXPECT_TRUE(LoadFailsWith(dir.write("zero.obj", cube_obj() + "f 0 1 2\n"), "bad face index '0'"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("min.obj", cube_obj() + "f 1 2 -9223372036854775808\n"), "face refers to vertex -9223372036854775808"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("max.obj", cube_obj() + "f 1 2 99999999999999999999\n"), "bad face index"));
     EXPECT_TRUE(LoadFailsWith(dir.write("quad.obj", cube_obj() + "f 1 2 3 99\n"), "face refers to vertex 99"));
     EXPECT_TRUE(LoadFailsWith(dir.write("vn.obj", std::string(kTetrahedron) + "vn 0 0 1\nf 1//2 2//1 3//1\n"),
                               "face refers to normal 2 but the file has only 1"));

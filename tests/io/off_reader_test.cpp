@@ -65,7 +65,8 @@ TEST(OffReader, TruncatedFileReportsLine) {
     TempDir dir;
     std::string s = cube_off();
     EXPECT_TRUE(LoadFailsWith(dir.write("cut.off", s.substr(0, s.size() - 4)), "unexpected end of file while reading a vertex index at line 17"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("cut2.off", s.substr(0, s.find("1 1 1"))), "unexpected end of file while reading a vertex coordinate"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut2.off", s.substr(0, s.find("1 1 1"))), "header claims 8 vertices but file has only 37 bytes"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut3.off", s.substr(0, s.find("4 0 3 2 1"))), "unexpected end of file while reading a face vertex count at line 12"));
 }
 
 TEST(OffReader, NonNumericNanAndInfAreErrors) {

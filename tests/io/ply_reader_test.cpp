@@ -235,6 +235,14 @@ TEST(PlyReader, NanInfAndNonNumericValuesAreErrors) {
     EXPECT_TRUE(LoadFailsWith(dir.write("nan_bin.ply", bin), "vertex 3 has a non-finite coordinate"));
 }
 
+TEST(PlyReader, ElementsWithoutPropertiesTakeNoTimeWhateverTheirCount) {
+    TempDir dir;
+    std::string s = cube_binary_ply(false);
+    s.insert(s.find("element face"), "element nothing 1152921504606846976\n");
+    s.insert(s.find("end_header"), "element face 1152921504606846976\n");
+    EXPECT_EQ(io::read_ply(dir.write("empty_elements.ply", s)).triangle_count(), 12u);
+}
+
 TEST(PlyReader, PointCloudHasNoTriangles) {
     TempDir dir;
     EXPECT_TRUE(LoadFailsWith(dir.write("points.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
