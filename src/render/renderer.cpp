@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 
+#include "geometry/orientation.hpp"
 #include "gpu/framebuffer.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/shader_program.hpp"
@@ -49,6 +50,7 @@ struct Renderer::Impl {
     std::unique_ptr<gpu::GlContext> context;
     std::unique_ptr<render::GpuMesh> mesh;
     BoundingBox bounds;
+    bool closed = false;  // closed and outward: back faces invisible from outside
     std::map<std::string, std::unique_ptr<gpu::ShaderProgram>> programs;  // by model name
     std::unique_ptr<gpu::Framebuffer> framebuffer;
 
@@ -87,7 +89,24 @@ void Renderer::set_mesh(const Mesh& mesh) {
     impl_->context->make_current();
     impl_->mesh = std::make_unique<render::GpuMesh>(mesh);
     impl_->bounds = mesh.bounds();
+    impl_->closed = geometry::is_closed_outward(mesh);
 }
+
+namespace {
+
+// Back faces may be culled only when none can be seen: a closed outward surface with the
+// whole bounding box in front of the near plane (the camera outside, nothing clipped open).
+bool can_cull_back_faces(bool closed, const BoundingBox& b, const Camera& camera) {
+    if (!closed) return false;
+    const glm::mat4 view = camera.view();
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+        if (-(view * glm::vec4(p, 1.0f)).z <= camera.near_plane) return false;
+    }
+    return true;
+}
+
+}  // namespace
 
 Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                        const RenderOptions& options, std::vector<PassTiming>* timings) {
@@ -108,7 +127,13 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
-        glDisable(GL_CULL_FACE);  // two-sided: open meshes show their inside
+        // Two-sided by default (open meshes show their lit inside); culling is only a speed-up.
+        if (can_cull_back_faces(impl_->closed, impl_->bounds, camera)) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
         if (options.samples > 1) glEnable(GL_MULTISAMPLE);
 
         program.use();

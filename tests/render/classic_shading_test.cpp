@@ -241,6 +241,36 @@ TEST_F(ClassicShading, ViewViewIsConstantForOrthographicCamera) {
     EXPECT_GE(compare_on_sphere(img, [](const glm::vec3&) { return glm::vec3(0.5f, 0.5f, 1.0f); }), 50);
 }
 
+// Two-sided lighting: through a hole in an open sphere the inner back wall is lit with the
+// normal flipped towards the viewer (no black or inverted inside).
+TEST_F(ClassicShading, OpenMeshShowsLitInside) {
+    Mesh open = *fine_;
+    std::erase_if(open.triangles, [&](const glm::uvec3& t) { return open.positions[t.x].z > 0.5f; });
+    Scene s = make_scene("lambert", {0.2f, 0.3f, 1.0f});
+    Image img = render(open, s);
+    glm::vec3 want = lambert_formula(s, glm::vec3(0, 0, 1));  // inner wall at (0,0,-1), flipped
+    const uint8_t* got = img.pixel(kSize / 2, kSize / 2);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(got[c]), to_byte(want[c]), 2) << c;
+}
+
+// Back faces are culled only when none can be seen: from inside a closed sphere the camera
+// sees the inner wall, not the background.
+TEST_F(ClassicShading, CameraInsideClosedMeshSeesInnerWall) {
+    Scene s = make_scene("ndotv");
+    s.options.background = glm::vec4(1, 0, 0, 1);
+    Camera inside;
+    inside.eye = glm::vec3(0, 0, 0.2f);
+    inside.target = glm::vec3(0, 0, -1);
+    inside.near_plane = 0.01f;
+    inside.far_plane = 10.0f;
+    Renderer& r = shared_renderer();
+    r.set_mesh(*fine_);
+    Image img = r.render(inside, s.light, s.shading, s.options);
+    const uint8_t* c = img.pixel(kSize / 2, kSize / 2);
+    EXPECT_EQ(int(c[0]), int(c[1])) << "background (red) visible: back faces were culled";
+    EXPECT_GT(int(c[1]), 240);  // n.v = 1 at the inner wall straight ahead
+}
+
 TEST_F(ClassicShading, SameRenderTwiceIsByteIdentical) {
     Scene s = make_scene("phong");
     Image a = render(*fine_, s), b = render(*fine_, s);
