@@ -11,11 +11,13 @@ uniform mat3 u_normal_matrix;
 out vec3 v_world_pos;
 out vec3 v_world_normal;
 out vec3 v_color;
+out vec3 v_object_pos;  // model space, for surface-attached patterns (voronoi, stipple)
 
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_world_pos = world.xyz;
     v_world_normal = u_normal_matrix * a_normal;
     v_color = a_color;
+    v_object_pos = a_position;
     gl_Position = u_view_proj * world;
 }

@@ -8,21 +8,14 @@ namespace inkshade::cli {
 
 namespace {
 
-std::string value_text(const ParamSpec& p) {
-    char buf[96];
-    const glm::vec4& d = p.default_value;
-    if (p.type == ParamType::Color) std::snprintf(buf, sizeof buf, "%g,%g,%g", d.r, d.g, d.b);
-    else if (p.type == ParamType::Bool) std::snprintf(buf, sizeof buf, "%s", d.x != 0 ? "true" : "false");
-    else std::snprintf(buf, sizeof buf, "%g", d.x);
-    return buf;
-}
-
 const char* type_text(ParamType t) {
     switch (t) {
         case ParamType::Float: return "float";
         case ParamType::Int: return "int";
         case ParamType::Bool: return "bool";
         case ParamType::Color: return "colour";
+        case ParamType::Choice: return "choice";
+        case ParamType::FloatList: return "list";
     }
     return "?";
 }
@@ -43,7 +36,7 @@ Command add_styles_command(CLI::App& app) {
             std::printf("  %-12s %s\n", m->name.c_str(), m->summary.c_str());
             for (const ParamSpec& p : m->params)
                 std::printf("      %-12s %-6s default %-12s range [%g, %g]  %s\n", p.name.c_str(), type_text(p.type),
-                            value_text(p).c_str(), p.min, p.max, p.doc.c_str());
+                            format_param_value(p, p.default_value).c_str(), p.min, p.max, p.doc.c_str());
         }
         return 0;
     };

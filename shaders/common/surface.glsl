@@ -4,8 +4,20 @@
 in vec3 v_world_pos;
 in vec3 v_world_normal;
 in vec3 v_color;
+in vec3 v_object_pos;
 
 layout(location = 0) out vec4 o_color;
+
+uniform vec3 u_bbox_min;      // model-space bounding box, for patterns normalised to the model
+uniform vec3 u_bbox_max;
+uniform vec2 u_viewport_size; // pixels
+
+// Model-space position scaled so the bounding box's longest side is 1 (origin at its min):
+// patterns keep their look on any model size and stay attached to the surface.
+vec3 normalized_object_pos() {
+    vec3 extent = max(u_bbox_max - u_bbox_min, vec3(1e-20));
+    return (v_object_pos - u_bbox_min) / max(extent.x, max(extent.y, extent.z));
+}
 
 struct Surface {
     vec3 p;       // world position

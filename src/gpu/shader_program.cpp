@@ -103,6 +103,9 @@ GLint ShaderProgram::location(const std::string& name) {
 
 void ShaderProgram::set(const std::string& name, float v) { glProgramUniform1f(id_, location(name), v); }
 void ShaderProgram::set(const std::string& name, int v) { glProgramUniform1i(id_, location(name), v); }
+void ShaderProgram::set(const std::string& name, const glm::vec2& v) {
+    glProgramUniform2fv(id_, location(name), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const std::string& name, const glm::vec3& v) {
     glProgramUniform3fv(id_, location(name), 1, glm::value_ptr(v));
 }
@@ -116,4 +119,10 @@ void ShaderProgram::set(const std::string& name, const glm::mat4& v) {
     glProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(v));
 }
 
+}  // namespace inkshade::gpu
+
+namespace inkshade::gpu {
+void ShaderProgram::set_array(const std::string& name, const std::vector<float>& v) {
+    glProgramUniform1fv(id_, location(name), GLsizei(v.size()), v.data());
+}
 }  // namespace inkshade::gpu

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -25,10 +26,12 @@ public:
     // Setters ignore uniforms the compiler optimised away (location -1).
     void set(const std::string& name, float v);
     void set(const std::string& name, int v);
+    void set(const std::string& name, const glm::vec2& v);
     void set(const std::string& name, const glm::vec3& v);
     void set(const std::string& name, const glm::vec4& v);
     void set(const std::string& name, const glm::mat3& v);
     void set(const std::string& name, const glm::mat4& v);
+    void set_array(const std::string& name, const std::vector<float>& v);
     GLint location(const std::string& name);
 
 private:

@@ -1,5 +1,6 @@
 #include "inkshade/renderer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <optional>
@@ -43,6 +44,29 @@ private:
     std::string name_;
     std::chrono::steady_clock::time_point start_;
 };
+
+// Sets u_NAME for every parameter of the model (the value given, else the default).
+void upload_params(gpu::ShaderProgram& program, const ShadingModel& model, const ParamValues& values) {
+    for (const ParamSpec& spec : model.params) {
+        auto it = values.find(spec.name);
+        const ParamValue& v = it != values.end() ? it->second : spec.default_value;
+        const std::string u = uniform_name(spec.name);
+        switch (spec.type) {
+            case ParamType::Float: program.set(u, v.at(0)); break;
+            case ParamType::Int:
+            case ParamType::Bool:
+            case ParamType::Choice: program.set(u, int(v.at(0))); break;
+            case ParamType::Color: program.set(u, glm::vec3(v.at(0), v.at(1), v.at(2))); break;
+            case ParamType::FloatList: {
+                std::vector<float> padded(size_t(spec.max_count), v.empty() ? 0.0f : v.back());
+                std::copy_n(v.begin(), std::min(v.size(), padded.size()), padded.begin());
+                program.set_array(u + "[0]", padded);
+                program.set(u + "_count", int(std::min(v.size(), padded.size())));
+                break;
+            }
+        }
+    }
+}
 
 }  // namespace
 
@@ -151,17 +175,10 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         program.set("u_ambient", light.ambient);
         program.set("u_base_color", shading.base_color);
         program.set("u_srgb_output", options.srgb_output ? 1 : 0);
-        for (const ParamSpec& spec : model.params) {
-            auto it = shading.params.find(spec.name);
-            glm::vec4 v = it != shading.params.end() ? it->second : spec.default_value;
-            const std::string u = uniform_name(spec.name);
-            switch (spec.type) {
-                case ParamType::Float: program.set(u, v.x); break;
-                case ParamType::Int:
-                case ParamType::Bool: program.set(u, int(v.x)); break;
-                case ParamType::Color: program.set(u, glm::vec3(v)); break;
-            }
-        }
+        program.set("u_bbox_min", impl_->bounds.min);
+        program.set("u_bbox_max", impl_->bounds.max);
+        program.set("u_viewport_size", glm::vec2(options.width, options.height));
+        upload_params(program, model, shading.params);
         impl_->mesh->draw();
     }
     {

@@ -92,8 +92,8 @@ TEST_F(ClassicShading, LambertMatchesFormulaAtSampledPixels) {
 
 TEST_F(ClassicShading, PhongMatchesFormulaAtSampledPixels) {
     Scene s = make_scene("phong");
-    s.shading.params["shininess"] = glm::vec4(20, 0, 0, 0);
-    s.shading.params["specular"] = glm::vec4(0.5f, 0.4f, 0.3f, 1);
+    s.shading.params["shininess"] = {20};
+    s.shading.params["specular"] = {0.5f, 0.4f, 0.3f};
     Image img = render(*fine_, s);
     EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
                   return lambert_formula(s, n) + specular_formula(s, n, false, 20, {0.5f, 0.4f, 0.3f});
@@ -103,7 +103,7 @@ TEST_F(ClassicShading, PhongMatchesFormulaAtSampledPixels) {
 
 TEST_F(ClassicShading, BlinnPhongMatchesFormulaAtSampledPixels) {
     Scene s = make_scene("blinn-phong");
-    s.shading.params["shininess"] = glm::vec4(60, 0, 0, 0);
+    s.shading.params["shininess"] = {60};
     Image img = render(*fine_, s);
     EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
                   return lambert_formula(s, n) + specular_formula(s, n, true, 60, glm::vec3(0.5f));
@@ -115,7 +115,7 @@ TEST_F(ClassicShading, BlinnPhongMatchesFormulaAtSampledPixels) {
 // rule says there is no highlight (specular only where n.l > 0).
 TEST_F(ClassicShading, PhongHasNoSpecularWhereUnlit) {
     Scene s = make_scene("phong", {1.0f, 0.3f, -0.8f});
-    s.shading.params["shininess"] = glm::vec4(4, 0, 0, 0);
+    s.shading.params["shininess"] = {4};
     Image img = render(*fine_, s);
     EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
                   return lambert_formula(s, n) + specular_formula(s, n, false, 4, glm::vec3(0.5f));
@@ -130,7 +130,7 @@ TEST_F(ClassicShading, PhongHighlightPeakAtMirrorPoint) {
         Scene s = make_scene(model, {-0.6f, 0.5f, 1.0f});
         s.shading.base_color = glm::vec3(0);  // specular only
         s.light.ambient = glm::vec3(0);
-        s.shading.params["shininess"] = glm::vec4(400, 0, 0, 0);
+        s.shading.params["shininess"] = {400};
         Image img = render(*fine_, s);
         int best = -1;
         glm::vec2 sum(0);

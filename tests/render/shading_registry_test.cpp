@@ -25,30 +25,46 @@ TEST(ShadingRegistry, UnknownNameListsChoices) {
 TEST(ShadingRegistry, DefaultsLieInTheirRanges) {
     for (const ShadingModel* m : shading_models())
         for (const ParamSpec& p : m->params) {
-            int n = p.type == ParamType::Color ? 3 : 1;
-            for (int i = 0; i < n; ++i) {
-                EXPECT_GE(p.default_value[i], p.min) << m->name << "." << p.name;
-                EXPECT_LE(p.default_value[i], p.max) << m->name << "." << p.name;
-            }
+            EXPECT_NO_THROW(check_param_value(p, p.default_value)) << m->name << "." << p.name;
             EXPECT_FALSE(p.doc.empty()) << m->name << "." << p.name;
         }
 }
 
 TEST(ParseParamValue, ChecksTypeAndRange) {
-    ParamSpec f{"shininess", ParamType::Float, glm::vec4(32, 0, 0, 0), 1, 100, "exp"};
-    EXPECT_EQ(parse_param_value(f, "64").x, 64.0f);
+    ParamSpec f = float_param("shininess", 32, 1, 100, "exp");
+    EXPECT_EQ(parse_param_value(f, "64"), ParamValue{64.0f});
     EXPECT_THROW(parse_param_value(f, "0.5"), InputError);
     EXPECT_THROW(parse_param_value(f, "abc"), InputError);
     EXPECT_THROW(parse_param_value(f, "inf"), InputError);
-    ParamSpec i{"bands", ParamType::Int, glm::vec4(3, 0, 0, 0), 1, 8, "n"};
-    EXPECT_EQ(parse_param_value(i, "5").x, 5.0f);
+    ParamSpec i = int_param("bands", 3, 1, 8, "n");
+    EXPECT_EQ(parse_param_value(i, "5"), ParamValue{5.0f});
     EXPECT_THROW(parse_param_value(i, "2.5"), InputError);
-    ParamSpec b{"rim", ParamType::Bool, glm::vec4(0), 0, 1, "b"};
-    EXPECT_EQ(parse_param_value(b, "true").x, 1.0f);
+    ParamSpec b = bool_param("rim", false, "b");
+    EXPECT_EQ(parse_param_value(b, "true"), ParamValue{1.0f});
     EXPECT_THROW(parse_param_value(b, "maybe"), InputError);
-    ParamSpec c{"specular", ParamType::Color, glm::vec4(1), 0, 1, "c"};
-    EXPECT_EQ(parse_param_value(c, "#ff0000"), glm::vec4(1, 0, 0, 1));
+    ParamSpec c = color_param("specular", glm::vec3(1), "c");
+    EXPECT_EQ(parse_param_value(c, "#ff0000"), (ParamValue{1, 0, 0}));
     EXPECT_THROW(parse_param_value(c, "2,0,0"), InputError);
+}
+
+TEST(ParseParamValue, ChoicesAndListsRoundTripThroughText) {
+    ParamSpec d = choice_param("driver", {"ndotl", "half-lambert"}, 1, "d");
+    EXPECT_EQ(parse_param_value(d, "ndotl"), ParamValue{0.0f});
+    EXPECT_EQ(format_param_value(d, {1.0f}), "half-lambert");
+    try {
+        parse_param_value(d, "nope");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("ndotl, half-lambert"), std::string::npos);
+    }
+    ParamSpec l = list_param("thresholds", {0.8f, 0.6f}, 4, 0, 1, "t");
+    ParamValue v = parse_param_value(l, "0.8,0.6,0.4,0.2");
+    EXPECT_EQ(v, (ParamValue{0.8f, 0.6f, 0.4f, 0.2f}));
+    EXPECT_EQ(parse_param_value(l, format_param_value(l, v)), v);
+    EXPECT_THROW(parse_param_value(l, "0.1,0.2,0.3,0.4,0.5"), InputError);  // more than 4
+    EXPECT_THROW(parse_param_value(l, "0.1,,0.3"), InputError);
+    EXPECT_THROW(parse_param_value(l, "0.1,1.5"), InputError);
+    EXPECT_THROW(check_param_value(l, {}), InputError);
 }
 
 }  // namespace
