@@ -1,5 +1,6 @@
-// `inkshade demo`: the built-in demo of `make run` — the Utah teapot in every shading model
-// and debug view, one PNG each plus a labelled contact sheet.
+// `inkshade demo`: the built-in demo of `make run` — the Utah teapot in every built-in style
+// (every shading model, the seed presets, the debug views), one PNG each plus a labelled
+// contact sheet.
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +9,7 @@
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/renderer.hpp"
+#include "inkshade/style.hpp"
 
 namespace inkshade::cli {
 
@@ -18,7 +20,7 @@ Command add_demo_command(CLI::App& app) {
         int size = 512;
     };
     auto args = std::make_shared<Args>();
-    CLI::App* cmd = app.add_subcommand("demo", "render the built-in demo (every shading model) into a folder");
+    CLI::App* cmd = app.add_subcommand("demo", "render the built-in demo (every built-in style) into a folder");
     cmd->add_option("--out", args->out, "output folder (created)")->capture_default_str();
     cmd->add_option("--model", args->model, "model to render")->capture_default_str();
     cmd->add_option("--size", args->size, "tile size in pixels")->check(CLI::Range(16, 4096))->capture_default_str();
@@ -31,20 +33,22 @@ Command add_demo_command(CLI::App& app) {
         RenderOptions options;
         options.width = options.height = args->size;
         const Camera camera = frame_camera(mesh.bounds(), {}, 1.0f);
-        const Light light = default_light(mesh.bounds(), camera);
         Renderer renderer;
         renderer.set_mesh(mesh);
-        std::vector<LabelledImage> tiles;
-        for (const ShadingModel* model : shading_models()) {
-            ShadingSelection shading;
-            shading.model = model->name;
-            shading.base_color = glm::vec3(0.95f, 0.75f, 0.55f);  // warm clay, shows the light well
-            Image image = renderer.render(camera, light, shading, options);
-            const std::string path = (std::filesystem::path(args->out) / (model->name + ".png")).string();
+        std::vector<LabelledImage> tiles, debug_tiles;
+        for (const std::string& name : builtin_style_names()) {
+            const Style style = load_style(name);
+            Light light = default_light(mesh.bounds(), camera);
+            apply_style_light(style, light);
+            options.background = style.background;
+            Image image = renderer.render(camera, light, style.shading, options);
+            const std::string path = (std::filesystem::path(args->out) / (name + ".png")).string();
             write_png(path, image);
             std::printf("  %s\n", path.c_str());
-            tiles.push_back({model->debug_view ? model->name + " (debug)" : model->name, std::move(image)});
+            const bool debug = shading_model(style.shading.model).debug_view;
+            (debug ? debug_tiles : tiles).push_back({debug ? name + " (debug)" : name, std::move(image)});
         }
+        for (auto& t : debug_tiles) tiles.push_back(std::move(t));
         const std::string sheet = (std::filesystem::path(args->out) / "contact_sheet.png").string();
         write_png(sheet, contact_sheet(tiles, 5));
         std::printf("demo: %zu images and the contact sheet %s (renderer: %s)\n", tiles.size(), sheet.c_str(),

@@ -37,19 +37,21 @@ struct RenderArgs {
     SceneOptions scene;
     std::string output;
     int timing = 0;
+    std::string save_style;
 };
 
 int run_render(const RenderArgs& args) {
     check_output_path(args.output);
-    const RenderOptions options = args.scene.render_options();
-    const ShadingSelection shading = args.scene.shading_selection();
+    const Style style = args.scene.resolved_style();
+    const RenderOptions options = args.scene.render_options(style);
+    const ShadingSelection& shading = style.shading;
     const auto load_start = std::chrono::steady_clock::now();
     const Mesh mesh = load_mesh(args.scene.model);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();
     const Camera camera = args.scene.camera(box, float(options.width) / float(options.height));
-    const Light light = args.scene.light(box, camera);
+    const Light light = args.scene.light(box, camera, style);
 
     Renderer renderer;
     renderer.set_mesh(mesh);
@@ -78,6 +80,7 @@ int run_render(const RenderArgs& args) {
         std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, double(usage.ru_maxrss) / 1024.0);
     }
     write_png(args.output, image);
+    if (!args.save_style.empty()) save_style(args.save_style, style);
     return 0;
 }
 
@@ -90,6 +93,8 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "output PNG file (written atomically)")->required();
     cmd->add_option("--timing", args->timing, "render N extra frames and print median ms per pass and total")
         ->check(CLI::Range(0, 100000));
+    cmd->add_option("--save-style", args->save_style,
+                    "also write the style used (with every --set applied) to a .toml file");
     return [args] { return run_render(*args); };
 }
 

@@ -28,7 +28,8 @@ glm::vec3 parse_vec3(const std::string& option, const std::string& text) {
 void SceneOptions::add_to(CLI::App& cmd) {
     cmd.add_option("MODEL", model, "mesh file (.obj .stl .ply .off) or builtin:sphere|torus|torus-knot|teapot")
         ->required();
-    cmd.add_option("--shading", shading, "shading model (see `inkshade styles`)");
+    cmd.add_option("--style", style, "built-in style name or style file (.toml); see `inkshade styles`");
+    cmd.add_option("--shading", shading, "shading model with default parameters (default lambert)");
     cmd.add_option("--set", sets, "parameter override [model.]param=value (repeatable)")
         ->allow_extra_args(false);  // one value per --set, so MODEL may follow
     cmd.add_option("--size", size, "image size WxH")->capture_default_str();
@@ -46,12 +47,12 @@ void SceneOptions::add_to(CLI::App& cmd) {
     cmd.add_option("--light-color", light_color, "light colour E (default 0.9 grey)");
     cmd.add_option("--ambient", ambient, "ambient colour A (default 0.1 grey)");
     cmd.add_option("--base-color", base_color, "base colour C, multiplies mesh colours (default white)");
-    cmd.add_option("--background", background, "background colour or 'transparent'")->capture_default_str();
+    cmd.add_option("--background", background, "background colour or 'transparent' (default: the style's, white)");
     cmd.add_option("--samples", samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd.add_flag("--srgb", srgb, "sRGB-encode the output (default: formula values as they are)");
 }
 
-RenderOptions SceneOptions::render_options() const {
+RenderOptions SceneOptions::render_options(const Style& style) const {
     RenderOptions o;
     int w = 0, h = 0;
     char x = 0;
@@ -62,19 +63,21 @@ RenderOptions SceneOptions::render_options() const {
     o.height = h;
     if (samples < 1 || samples > 16) throw InputError("--samples: expected 1..16, got " + std::to_string(samples));
     o.samples = samples;
-    try {
-        o.background = parse_color(background);
-    } catch (const InputError& e) {
-        throw InputError(std::string("--background: ") + e.what());
-    }
+    o.background = style.background;
     o.srgb_output = srgb;
     return o;
 }
 
-ShadingSelection SceneOptions::shading_selection() const {
-    ShadingSelection s;
-    const ShadingModel& model = shading_model(shading);  // validates the name
-    s.model = model.name;
+Style SceneOptions::resolved_style() const {
+    if (!style.empty() && !shading.empty())
+        throw InputError("--style and --shading are alternatives: use one (a style names its shading model)");
+    Style s;
+    if (!shading.empty()) {
+        s = load_style(shading_model(shading).name);  // validates the model name
+    } else {
+        s = load_style(style.empty() ? "lambert" : style);
+    }
+    const ShadingModel& model = shading_model(s.shading.model);
     for (const std::string& set : sets) {
         size_t eq = set.find('=');
         if (eq == std::string::npos) throw InputError("--set: expected [model.]param=value, got '" + set + "'");
@@ -86,18 +89,30 @@ ShadingSelection SceneOptions::shading_selection() const {
                                  "' but the shading model is '" + model.name + "'");
             key = key.substr(dot + 1);
         }
-        const ParamSpec* spec = nullptr;
-        for (const auto& p : model.params)
-            if (p.name == key) spec = &p;
+        const ParamSpec* spec = model.param(key);
         if (!spec) {
             std::string names;
             for (const auto& p : model.params) names += (names.empty() ? "" : ", ") + p.name;
             throw InputError("--set " + set + ": model '" + model.name + "' has no parameter '" + key + "'" +
                              (names.empty() ? " (it has none)" : " (it has " + names + ")"));
         }
-        s.params[spec->name] = parse_param_value(*spec, value);
+        try {
+            s.shading.params[spec->name] = parse_param_value(*spec, value);
+        } catch (const InputError& e) {
+            throw InputError("--set " + set + ": " + e.what());
+        }
     }
-    if (!base_color.empty()) s.base_color = glm::vec3(parse_color(base_color));
+    auto color = [](const std::string& opt, const std::string& text) {
+        try {
+            return parse_color(text);
+        } catch (const InputError& e) {
+            throw InputError(opt + ": " + e.what());
+        }
+    };
+    if (!base_color.empty()) s.shading.base_color = glm::vec3(color("--base-color", base_color));
+    if (!background.empty()) s.background = color("--background", background);
+    if (!light_color.empty()) s.light_color = glm::vec3(color("--light-color", light_color));
+    if (!ambient.empty()) s.ambient = glm::vec3(color("--ambient", ambient));
     return s;
 }
 
@@ -120,21 +135,13 @@ Camera SceneOptions::camera(const BoundingBox& box, float aspect) const {
     return frame_camera(box, o, aspect);
 }
 
-Light SceneOptions::light(const BoundingBox& box, const Camera& camera) const {
+Light SceneOptions::light(const BoundingBox& box, const Camera& camera, const Style& style) const {
     Light l = default_light(box, camera);
     if (light_type == "point") l.type = LightType::Point;
     else if (light_type != "directional")
         throw InputError("--light-type: expected directional or point, got '" + light_type + "'");
     if (!light_pos.empty()) l.position = parse_vec3("--light-pos", light_pos);
-    auto color = [](const std::string& opt, const std::string& text) {
-        try {
-            return glm::vec3(parse_color(text));
-        } catch (const InputError& e) {
-            throw InputError(opt + ": " + e.what());
-        }
-    };
-    if (!light_color.empty()) l.color = color("--light-color", light_color);
-    if (!ambient.empty()) l.ambient = color("--ambient", ambient);
+    apply_style_light(style, l);
     return l;
 }
 

@@ -8,12 +8,14 @@
 
 #include "inkshade/camera.hpp"
 #include "inkshade/renderer.hpp"
+#include "inkshade/style.hpp"
 
 namespace inkshade::cli {
 
 struct SceneOptions {
     std::string model;
-    std::string shading = "lambert";
+    std::string style;    // --style NAME|FILE
+    std::string shading;  // --shading NAME (the model's built-in style)
     std::vector<std::string> sets;  // --set [model.]param=value
     std::string size = "1024x1024";
     std::optional<float> azimuth, elevation, distance;
@@ -21,17 +23,19 @@ struct SceneOptions {
     float fov = 30.0f;
     bool ortho = false;
     std::string light_pos, light_type = "directional", light_color, ambient, base_color;
-    std::string background = "white";
+    std::string background;  // empty: the style's
     int samples = 4;
     bool srgb = false;
 
     void add_to(CLI::App& cmd);
 
     // Resolved values; each throws InputError naming the option on a bad value.
-    RenderOptions render_options() const;
-    ShadingSelection shading_selection() const;
+    // The style named by --style or --shading (default lambert) with --set, --base-color
+    // and --background applied.
+    Style resolved_style() const;
+    RenderOptions render_options(const Style& style) const;
     Camera camera(const BoundingBox& box, float aspect) const;
-    Light light(const BoundingBox& box, const Camera& camera) const;
+    Light light(const BoundingBox& box, const Camera& camera, const Style& style) const;
 };
 
 glm::vec3 parse_vec3(const std::string& option, const std::string& text);

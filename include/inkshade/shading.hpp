@@ -68,6 +68,9 @@ ParamValue check_param_value(const ParamSpec& spec, const ParamValue& value);
 // The text parse_param_value reads back ("0.5", "true", "half-lambert", "1,0.5,0").
 std::string format_param_value(const ParamSpec& spec, const ParamValue& value);
 
+// The shortest decimal text that reads back as exactly v ("0.33", "1e-05").
+std::string format_number(float v);
+
 // Registration helper: `static const ShadingModelRegistration reg{{...}};` in the model's file.
 struct ShadingModelRegistration {
     explicit ShadingModelRegistration(ShadingModel model);

@@ -1,16 +1,14 @@
-// GLSL sources embedded at build time by cmake/embed_shaders.cmake.
+// GLSL sources embedded at build time by cmake/embed_files.cmake.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "core/embedded_file.hpp"
+
 namespace inkshade::gpu {
 
-struct EmbeddedShader {
-    const char* path;    // relative to shaders/, e.g. "shading/lambert.frag"
-    const char* source;  // NUL-terminated
-};
-
-const std::vector<EmbeddedShader>& embedded_shaders();
+// Every file under shaders/, paths relative to it (e.g. "shading/lambert.frag").
+const std::vector<EmbeddedFile>& embedded_shaders();
 
 // Source of one embedded shader with `#include "file"` lines expanded (paths relative to
 // shaders/). Throws RuntimeError when a file is missing.

@@ -11,7 +11,7 @@ namespace inkshade::gpu {
 std::string shader_source(const std::string& path) {
     const char* found = nullptr;
     for (const auto& s : embedded_shaders())
-        if (path == s.path) found = s.source;
+        if (path == s.path) found = s.contents;
     if (!found) throw RuntimeError("shader " + path + " is not embedded in this build");
     // Expand `#include "file"` (one level is enough for our library files, but recurse anyway).
     std::istringstream in(found);

@@ -20,13 +20,7 @@ std::vector<ShadingModel>& registry() {
     return models;
 }
 
-std::string number_text(float v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", double(v));
-    return buf;
-}
-
-std::string range_text(const ParamSpec& s) { return "[" + number_text(s.min) + ", " + number_text(s.max) + "]"; }
+std::string range_text(const ParamSpec& s) { return "[" + format_number(s.min) + ", " + format_number(s.max) + "]"; }
 
 [[noreturn]] void fail(const ParamSpec& spec, const std::string& why) {
     throw InputError("parameter " + spec.name + ": " + why);
@@ -52,6 +46,12 @@ float parse_number(const ParamSpec& spec, std::string text) {
 }
 
 }  // namespace
+
+std::string format_number(float v) {
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);  // shortest text that reads back exactly
+    return ec == std::errc() ? std::string(buf, end) : "nan";
+}
 
 ParamSpec float_param(std::string name, float value, float min, float max, std::string doc) {
     return {std::move(name), ParamType::Float, {value}, min, max, std::move(doc)};
@@ -116,10 +116,10 @@ ParamValue check_param_value(const ParamSpec& spec, const ParamValue& value) {
     }
     for (float v : value) {
         if (!std::isfinite(v)) fail(spec, "value is not finite");
-        if (v < spec.min || v > spec.max) fail(spec, number_text(v) + " is outside " + range_text(spec));
+        if (v < spec.min || v > spec.max) fail(spec, format_number(v) + " is outside " + range_text(spec));
         if ((spec.type == ParamType::Int || spec.type == ParamType::Bool || spec.type == ParamType::Choice) &&
             v != std::floor(v))
-            fail(spec, number_text(v) + " is not an integer");
+            fail(spec, format_number(v) + " is not an integer");
     }
     return value;
 }
@@ -164,7 +164,7 @@ std::string format_param_value(const ParamSpec& spec, const ParamValue& value) {
         return i < spec.choices.size() ? spec.choices[i] : "?";
     }
     std::string out;
-    for (float v : value) out += (out.empty() ? "" : ",") + number_text(v);
+    for (float v : value) out += (out.empty() ? "" : ",") + format_number(v);
     return out;
 }
 

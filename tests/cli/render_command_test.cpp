@@ -121,6 +121,33 @@ TEST(RenderCommand, NoOpenGlIsExit1WithInstallHint) {
     EXPECT_EQ(line_count(r.err), 1) << r.err;
 }
 
+TEST(RenderCommand, StyleOptionErrorsAreExit2WithOneLine) {
+    TempDir dir;
+    const std::string out = " -o " + dir.file("a.png");
+    auto r = run_cli("render builtin:sphere --style nope" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("cel-000"), std::string::npos) << r.err;  // lists the built-in styles
+    r = run_cli("render builtin:sphere --style cel-000 --shading phong" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("alternatives"), std::string::npos) << r.err;
+    std::string bad = dir.write("bad.toml", "[shading]\nmodel = 'phong'\nshininess = -1\n");
+    r = run_cli("render builtin:sphere --style " + bad + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(bad + ": parameter shininess"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
+}
+
+TEST(RenderCommand, SavedStyleReproducesTheSamePixels) {
+    TempDir dir;
+    auto r = run_cli("render builtin:torus --style cel-000 --set levels=1,0.6,0.3 --set thresholds=0.7,0.4 --size 64x64 -o " +
+                     dir.file("a.png") + " --save-style " + dir.file("s.toml"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("render builtin:torus --style " + dir.file("s.toml") + " --size 64x64 -o " + dir.file("b.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read_png(dir.file("a.png")).rgba, read_png(dir.file("b.png")).rgba);
+}
+
 TEST(InfoCommand, PrintsCountsAndTopologyOfBuiltinSphere) {
     auto r = run_cli("info builtin:sphere");
     ASSERT_EQ(r.status, 0) << r.err;

@@ -1,0 +1,48 @@
+// Styles: a shading model with its parameters, light colours, background and (in later
+// versions) line types, read from human-editable TOML preset files. The built-in styles are
+// such files embedded in the binary (src/styles/presets/), plus one per shading model.
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "inkshade/renderer.hpp"
+
+namespace inkshade {
+
+struct LineSettings {
+    std::string type;    // line type name ([[lines]] tables of a style file)
+    ParamValues params;
+};
+
+struct Style {
+    std::string name;
+    std::string description;
+    ShadingSelection shading;              // model, parameters, base colour C
+    std::optional<glm::vec3> light_color;  // E; unset = the renderer's default
+    std::optional<glm::vec3> ambient;      // A; unset = the renderer's default
+    glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
+    std::vector<LineSettings> lines;       // empty until line types exist
+};
+
+// Sets the light colour and ambient the style asks for (others stay as they are).
+void apply_style_light(const Style& style, Light& light);
+
+// Parses a style file's text. `source` names it in errors: InputError("SOURCE: problem").
+// Every key is checked: unknown keys, models, parameters and out-of-range values are errors.
+Style parse_style(std::string_view toml_text, const std::string& source);
+
+// A built-in style name (see builtin_style_names) or a path to a .toml file.
+Style load_style(const std::string& name_or_path);
+
+// TOML text that parse_style reads back to the same style (all parameters written out).
+std::string format_style(const Style& style);
+
+// Writes format_style(style) atomically. Throws RuntimeError on failure.
+void save_style(const std::string& path, const Style& style);
+
+// Built-in style names: every preset file, and every shading model (default parameters).
+std::vector<std::string> builtin_style_names();
+
+}  // namespace inkshade

@@ -1,0 +1,78 @@
+#version 450 core
+// stipple: object-space stippling (seed 001's stipple shader; SPEC.md section 2).
+//   tone t = luminance(E * max(n.l, 0) + A), darkness k = (1 - t)^threshold-curve;
+//   dots = jittered feature points of a 3-D lattice in normalized model space (one per cell,
+//   pcg3d hash), so they stay on the surface while the camera moves; a point belongs to the
+//   surface's dot layer when it lies within half a cell of the tangent plane, and draws a
+//   disc in that plane;
+//   lattice spacing = a power of two chosen from the pixel footprint (smallest singular value
+//   of d(pos)/d(x, y)) so that a full-dark area holds `density` dots per dot-size^2 pixels;
+//   the two nearest levels are blended by letting the dots of each appear with a probability
+//   that keeps the dot count per pixel constant (no popping with zoom: the idea of
+//   Praun et al. 2001's tonal art maps across mip levels and Bénard et al. 2009's
+//   fractalized solid textures);
+//   a dot with rank u (hashed, uniform) is inked when u < w * k, its area growing from 0 to
+//   pi * (dot-size / 2)^2 pixels as w * k - u goes from 0 to 0.15 (radius grows with darkness);
+//   colour = mix(paper-color, ink-color * C, ink coverage).
+#include "common/surface.glsl"
+#include "common/cell_hash.glsl"
+uniform float u_dot_size;
+uniform float u_density;
+uniform vec3 u_ink_color;
+uniform vec3 u_paper_color;
+uniform float u_threshold_curve;
+
+const float kGrowRamp = 0.15;  // rank interval over which a dot grows to full size
+
+// Ink coverage of the dots of one lattice level (spacing h in normalized model units, `pix`
+// model units per pixel) at q with unit normal n; `presence` = w * darkness.
+float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
+    if (presence <= 0.0) return 0.0;
+    vec3 x = q / h;
+    ivec3 base = ivec3(floor(x));
+    float px_per_cell = h / pix;
+    float ink = 0.0;
+    for (int k = -1; k <= 1; ++k)
+        for (int j = -1; j <= 1; ++j)
+            for (int i = -1; i <= 1; ++i) {
+                ivec3 c = base + ivec3(i, j, k);
+                uvec3 hc = pcg3d(uvec3(c));
+                vec3 d = vec3(c) + hash_to_unit(hc) - x;
+                float dn = dot(d, n);
+                if (abs(dn) >= 0.5) continue;  // not in this surface's layer of dots
+                float rank = hash_to_unit(pcg3d(hc)).x;
+                float grow = clamp((presence - rank) / kGrowRamp, 0.0, 1.0);
+                if (grow <= 0.0) continue;
+                float r = 0.5 * u_dot_size * sqrt(grow);              // pixels
+                float dist = length(d - dn * n) * px_per_cell;        // pixels, in the tangent plane
+                ink = max(ink, 1.0 - smoothstep(r - 0.5, r + 0.5, dist));
+            }
+    return ink;
+}
+
+void main() {
+    Surface s = surface();
+    vec3 q = normalized_object_pos();
+    // Pixel footprint: smallest singular value of the 3x2 Jacobian [dq/dx dq/dy], i.e. the
+    // model-space length of one pixel along the surface direction that is not foreshortened.
+    vec3 a = dFdx(q), b = dFdy(q);
+    float aa = dot(a, a), bb = dot(b, b), ab = dot(a, b);
+    float lmin = 0.5 * (aa + bb - sqrt((aa - bb) * (aa - bb) + 4.0 * ab * ab));
+    float pix = sqrt(max(lmin, 1e-20));
+    // The model matrix is the identity (renderer.cpp), so the world normal is the model one.
+    vec3 n = normalize(v_world_normal);
+
+    float tone = dot(u_light_color * lambert(s.n, s.l) + u_ambient, vec3(0.2126, 0.7152, 0.0722));
+    float darkness = pow(clamp(1.0 - tone, 0.0, 1.0), u_threshold_curve);
+
+    // Lattice level: spacing h_d holds one dot per dot-size^2 / density pixels.
+    float h_d = pix * u_dot_size / sqrt(u_density);
+    float level = clamp(ceil(log2(h_d)), -16.0, 4.0);
+    float f = clamp(level - log2(h_d), 0.0, 1.0);  // 0: coarse level exact, 1: fine level exact
+    float h0 = exp2(level);
+    float w_coarse = 1.0 - f;
+    float w_fine = (exp2(2.0 * f) - (1.0 - f)) * 0.25;  // keeps w_c/h0^2 + w_f/(h0/2)^2 = 1/h_d^2
+    float ink = max(level_ink(q, n, h0, pix, w_coarse * darkness),
+                    level_ink(q, n, 0.5 * h0, pix, w_fine * darkness));
+    o_color = encode_output(mix(u_paper_color, u_ink_color * s.albedo, ink));
+}

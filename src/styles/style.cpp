@@ -1,0 +1,244 @@
+// Style files (TOML, parsed with toml++). TOML because presets are written and tuned by
+// hand: comments, no quoting of keys, arrays for band lists.
+#include "inkshade/style.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#define TOML_EXCEPTIONS 1
+#include <toml++/toml.h>
+
+#include "core/embedded_file.hpp"
+#include "inkshade/color.hpp"
+#include "inkshade/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace inkshade {
+
+namespace styles {
+const std::vector<EmbeddedFile>& embedded_style_presets();  // generated from src/styles/presets
+}
+
+namespace {
+
+constexpr size_t kMaxStyleFileBytes = 1 << 20;  // style files are small; refuse anything huge
+
+std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+const EmbeddedFile* embedded_preset(const std::string& name) {
+    for (const auto& f : styles::embedded_style_presets())
+        if (stem(f.path) == name) return &f;
+    return nullptr;
+}
+
+glm::vec4 color_value(const toml::node& node, const std::string& source, const std::string& key) {
+    try {
+        if (auto s = node.value<std::string>()) return parse_color(*s);
+        if (auto* arr = node.as_array()) {
+            std::string text;
+            for (const auto& e : *arr) {
+                auto v = e.value<double>();
+                if (!v) throw InputError("not a number");
+                text += (text.empty() ? "" : ",") + std::to_string(*v);
+            }
+            return parse_color(text);
+        }
+        if (auto v = node.value<double>()) return parse_color(std::to_string(*v));
+    } catch (const InputError& e) {
+        throw InputError(source, key + ": " + e.what());
+    }
+    throw InputError(source, key + ": expected a colour (\"#rrggbb\", \"r,g,b\" or [r, g, b])");
+}
+
+// A parameter value from a TOML node: numbers, booleans, strings (choices, colours, anything
+// parse_param_value reads) and arrays of numbers (lists, colours).
+ParamValue param_value(const ParamSpec& spec, const toml::node& node, const std::string& source) {
+    try {
+        if (auto b = node.value_exact<bool>()) return check_param_value(spec, {*b ? 1.0f : 0.0f});
+        if (auto s = node.value_exact<std::string>()) return parse_param_value(spec, *s);
+        if (auto d = node.value<double>()) return check_param_value(spec, {float(*d)});
+        if (auto* arr = node.as_array()) {
+            ParamValue v;
+            for (const auto& e : *arr) {
+                auto d = e.value<double>();
+                if (!d) throw InputError("parameter " + spec.name + ": arrays hold numbers only");
+                v.push_back(float(*d));
+            }
+            return check_param_value(spec, v);
+        }
+    } catch (const InputError& e) {
+        throw InputError(source, e.what());
+    }
+    throw InputError(source, "parameter " + spec.name + ": unsupported value type");
+}
+
+void reject_unknown_keys(const toml::table& table, const std::vector<std::string>& allowed,
+                         const std::string& source, const std::string& where) {
+    for (const auto& [key, node] : table) {
+        (void)node;
+        if (std::find(allowed.begin(), allowed.end(), std::string(key.str())) == allowed.end()) {
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            throw InputError(source, "unknown key '" + std::string(key.str()) + "'" + where + " (allowed: " + list + ")");
+        }
+    }
+}
+
+Style model_default_style(const ShadingModel& model) {
+    Style s;
+    s.name = model.name;
+    s.description = model.summary;
+    s.shading.model = model.name;
+    return s;
+}
+
+std::string toml_string(const std::string& s) {
+    std::ostringstream out;
+    out << toml::value<std::string>(s);
+    return out.str();
+}
+
+std::string color_text(glm::vec4 c, bool with_alpha = false) {
+    std::string s = "\"" + format_number(c.r) + "," + format_number(c.g) + "," + format_number(c.b);
+    if (with_alpha) s += "," + format_number(c.a);
+    return s + "\"";
+}
+
+}  // namespace
+
+void apply_style_light(const Style& style, Light& light) {
+    if (style.light_color) light.color = *style.light_color;
+    if (style.ambient) light.ambient = *style.ambient;
+}
+
+Style parse_style(std::string_view text, const std::string& source) {
+    if (text.size() > kMaxStyleFileBytes) throw InputError(source, "style file larger than 1 MiB");
+    toml::table root;
+    try {
+        root = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        std::string what(e.description());
+        std::replace(what.begin(), what.end(), '\n', ' ');
+        throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
+    }
+    reject_unknown_keys(root, {"description", "background", "base-color", "light", "shading", "lines"}, source, "");
+    Style style;
+    style.name = stem(source);
+    if (auto d = root["description"].value<std::string>()) style.description = *d;
+    if (auto* n = root.get("background")) style.background = color_value(*n, source, "background");
+    if (auto* n = root.get("base-color")) style.shading.base_color = glm::vec3(color_value(*n, source, "base-color"));
+
+    if (auto* light = root["light"].as_table()) {
+        reject_unknown_keys(*light, {"color", "ambient"}, source, " in [light]");
+        if (auto* n = light->get("color")) style.light_color = glm::vec3(color_value(*n, source, "light.color"));
+        if (auto* n = light->get("ambient")) style.ambient = glm::vec3(color_value(*n, source, "light.ambient"));
+    } else if (root.contains("light")) {
+        throw InputError(source, "[light] must be a table");
+    }
+
+    auto* shading = root["shading"].as_table();
+    if (!shading) throw InputError(source, "missing [shading] table with a model");
+    auto model_name = (*shading)["model"].value<std::string>();
+    if (!model_name) throw InputError(source, "[shading] needs model = \"NAME\"");
+    const ShadingModel* model = nullptr;
+    try {
+        model = &shading_model(*model_name);
+    } catch (const InputError& e) {
+        throw InputError(source, e.what());
+    }
+    style.shading.model = model->name;
+    for (const auto& [key, node] : *shading) {
+        const std::string k(key.str());
+        if (k == "model") continue;
+        const ParamSpec* spec = model->param(k);
+        if (!spec) {
+            std::string names;
+            for (const auto& p : model->params) names += (names.empty() ? "" : ", ") + p.name;
+            throw InputError(source, "model '" + model->name + "' has no parameter '" + k + "'" +
+                                         (names.empty() ? " (it has none)" : " (it has " + names + ")"));
+        }
+        style.shading.params[spec->name] = param_value(*spec, node, source);
+    }
+
+    if (auto* lines = root["lines"].as_array()) {
+        for (const auto& entry : *lines) {
+            auto type = entry.as_table() ? (*entry.as_table())["type"].value<std::string>() : std::nullopt;
+            throw InputError(source, "unknown line type '" + type.value_or("?") +
+                                         "' (this version has no line types yet)");
+        }
+    } else if (root.contains("lines")) {
+        throw InputError(source, "lines must be an array of tables ([[lines]])");
+    }
+    return style;
+}
+
+Style load_style(const std::string& name_or_path) {
+    if (const EmbeddedFile* f = embedded_preset(name_or_path)) {
+        Style s = parse_style(f->contents, std::string("builtin style ") + name_or_path);
+        s.name = name_or_path;
+        return s;
+    }
+    for (const ShadingModel* m : shading_models())
+        if (m->name == name_or_path) return model_default_style(*m);
+
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(name_or_path, ec)) {
+        std::string names;
+        for (const auto& n : builtin_style_names()) names += (names.empty() ? "" : ", ") + n;
+        throw InputError(name_or_path, "no such style file or built-in style (built-in: " + names + ")");
+    }
+    if (!fs::is_regular_file(name_or_path, ec)) throw InputError(name_or_path, "not a regular file");
+    if (fs::file_size(name_or_path, ec) > kMaxStyleFileBytes) throw InputError(name_or_path, "style file larger than 1 MiB");
+    std::ifstream in(name_or_path, std::ios::binary);
+    if (!in) throw InputError(name_or_path, "cannot open file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parse_style(ss.str(), name_or_path);
+}
+
+std::string format_style(const Style& style) {
+    const ShadingModel& model = shading_model(style.shading.model);
+    std::ostringstream out;
+    out << "# Inkshade style " << style.name << " (TOML; see docs/styles.md)\n";
+    out << "description = " << toml_string(style.description) << "\n";
+    out << "background = " << color_text(style.background, style.background.a < 1.0f) << "\n";
+    out << "base-color = " << color_text(glm::vec4(style.shading.base_color, 1.0f)) << "\n";
+    if (style.light_color || style.ambient) {
+        out << "\n[light]\n";
+        if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";
+        if (style.ambient) out << "ambient = " << color_text(glm::vec4(*style.ambient, 1.0f)) << "\n";
+    }
+    out << "\n[shading]\nmodel = " << toml_string(model.name) << "\n";
+    for (const ParamSpec& p : model.params) {
+        auto it = style.shading.params.find(p.name);
+        const ParamValue& v = it != style.shading.params.end() ? it->second : p.default_value;
+        out << p.name << " = ";
+        switch (p.type) {
+            case ParamType::Bool: out << (v.at(0) != 0.0f ? "true" : "false"); break;
+            case ParamType::Float:
+            case ParamType::Int: out << format_param_value(p, v); break;
+            case ParamType::FloatList: out << "[" << format_param_value(p, v) << "]"; break;
+            case ParamType::Choice:
+            case ParamType::Color: out << toml_string(format_param_value(p, v)); break;
+        }
+        out << "  # " << p.doc << "\n";
+    }
+    return out.str();
+}
+
+void save_style(const std::string& path, const Style& style) { io::write_file_atomic(path, format_style(style)); }
+
+std::vector<std::string> builtin_style_names() {
+    std::vector<std::string> names;
+    for (const auto& f : styles::embedded_style_presets()) names.push_back(stem(f.path));
+    for (const ShadingModel* m : shading_models())
+        if (std::find(names.begin(), names.end(), m->name) == names.end()) names.push_back(m->name);
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+}  // namespace inkshade
