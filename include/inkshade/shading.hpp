@@ -50,6 +50,9 @@ struct ShadingModel {
     std::string fragment;      // shader file under shaders/, e.g. "shading/phong.frag"
     std::string vertex = "mesh.vert";
     bool debug_view = false;   // debug views (normal, view, w, ndotv)
+    // Casts shadows from a shadow map when its bool parameter "shadows" is on: the renderer
+    // then runs a depth pass from the light and binds it (shaders/common/shadow.glsl).
+    bool shadow_map = false;
     std::vector<ParamSpec> params;
 
     const ParamSpec* param(const std::string& name) const;

@@ -2,7 +2,7 @@
 // cel: quantised light (SPEC.md section 2; seeds 000 eq. 4, 002 and 004; three.js
 // MeshToonMaterial's gradient map).
 //   d     = 0.5 n.l + 0.5 (half-lambert) or max(n.l, 0) (ndotl)
-//   level = levels[i] for the first i with d > thresholds[i], else levels[count(thresholds)]
+//   level = levels[i] for the first i with d > thresholds[i], else the last level
 //   lit   = mix(shade-color, 1, level)          (shade-color black: lit = level, the seeds)
 //   out   = C * (E * lit + A)
 //         + specular-color * E   where max(n.h, 0)^shininess > specular-threshold and n.l > 0
@@ -52,8 +52,9 @@ float band_level(float d) {
         level += remaining * a * u_levels[min(i, kMaxLevels - 1)];
         remaining *= 1.0 - a;
     }
-    // Missing levels repeat the last one given (the uniform array is padded with it).
-    return level + remaining * u_levels[min(count, kMaxLevels - 1)];
+    // Below every threshold: the last level. Missing levels repeat the last one given (the
+    // uniform array is padded with it); levels beyond count(thresholds) + 1 are unused.
+    return level + remaining * u_levels[clamp(u_levels_count - 1, 0, kMaxLevels - 1)];
 }
 
 void main() {

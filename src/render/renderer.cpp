@@ -11,6 +11,7 @@
 #include "gpu/shader_program.hpp"
 #include "inkshade/error.hpp"
 #include "render/gpu_mesh.hpp"
+#include "render/shadow_pass.hpp"
 
 namespace inkshade {
 
@@ -77,6 +78,7 @@ struct Renderer::Impl {
     bool closed = false;  // closed and outward: back faces invisible from outside
     std::map<std::string, std::unique_ptr<gpu::ShaderProgram>> programs;  // by model name
     std::unique_ptr<gpu::Framebuffer> framebuffer;
+    std::unique_ptr<render::ShadowPass> shadow;  // created on first use
 
     gpu::ShaderProgram& program_for(const ShadingModel& model) {
         auto& p = programs[model.name];
@@ -102,6 +104,7 @@ Renderer::~Renderer() {
     impl_->context->make_current();
     // GL objects go before the context that owns them.
     impl_->framebuffer.reset();
+    impl_->shadow.reset();
     impl_->programs.clear();
     impl_->mesh.reset();
 }
@@ -141,6 +144,20 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     gpu::Framebuffer& fb = impl_->framebuffer_for(options);
     const float aspect = float(options.width) / float(options.height);
 
+    // Shadow map for models that cast shadows, when their "shadows" parameter is on.
+    auto shadows_param = shading.params.find("shadows");
+    const ParamSpec* shadows_spec = model.param("shadows");
+    const bool shadows = model.shadow_map && shadows_spec &&
+                         (shadows_param != shading.params.end() ? shadows_param->second : shadows_spec->default_value)
+                                 .at(0) != 0.0f;
+    glm::mat4 light_view_proj(1.0f);
+    if (shadows) {
+        PassTimer t(timings, "shadow");
+        if (!impl_->shadow) impl_->shadow = std::make_unique<render::ShadowPass>();
+        light_view_proj = render::light_view_projection(light, impl_->bounds);
+        impl_->shadow->render(*impl_->mesh, light_view_proj);
+    }
+
     {
         PassTimer t(timings, "shading");
         fb.bind();
@@ -178,6 +195,14 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         program.set("u_bbox_min", impl_->bounds.min);
         program.set("u_bbox_max", impl_->bounds.max);
         program.set("u_viewport_size", glm::vec2(options.width, options.height));
+        program.set("u_shadow_enabled", shadows ? 1 : 0);
+        if (shadows) {
+            constexpr GLuint kShadowUnit = 1;
+            impl_->shadow->bind(kShadowUnit);
+            program.set("u_shadow_map", int(kShadowUnit));
+            program.set("u_light_view_proj", light_view_proj);
+            program.set("u_shadow_texel_world", impl_->bounds.diagonal() / float(impl_->shadow->size()));
+        }
         upload_params(program, model, shading.params);
         impl_->mesh->draw();
     }

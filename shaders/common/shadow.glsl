@@ -1,0 +1,27 @@
+// Shadow-map lookup with percentage-closer filtering (Reeves et al. 1987): the fraction of 3x3
+// taps, `softness` texels apart, whose stored depth lies behind the surface point, each tap
+// itself bilinear through the hardware depth comparison (sampler2DShadow, GL_LINEAR). Nine
+// taps keep the cost near one extra texture fetch per tap on llvmpipe.
+// Acne is avoided with a normal offset (the lookup point moves texel_world * normal-offset
+// along n, Holbein 2011) plus a slope-scaled depth bias of the depth pass (glPolygonOffset).
+uniform sampler2DShadow u_shadow_map;
+uniform mat4 u_light_view_proj;
+uniform int u_shadow_enabled;   // 0: everything lit (shadows off, or a model without them)
+uniform float u_shadow_texel_world;  // world size of one shadow-map texel
+
+// 1 = fully lit, 0 = fully in shadow.
+float shadow_visibility(vec3 p, vec3 n, vec3 l, float softness_texels) {
+    if (u_shadow_enabled != 1) return 1.0;
+    // Offset along the normal, more where the light grazes the surface.
+    float grazing = 1.0 - clamp(dot(n, l), 0.0, 1.0);
+    vec3 q = p + n * u_shadow_texel_world * (1.0 + 2.0 * grazing);
+    vec4 clip = u_light_view_proj * vec4(q, 1.0);
+    vec3 uvz = clip.xyz / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uvz, vec3(0.0))) || any(greaterThan(uvz, vec3(1.0)))) return 1.0;
+    vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
+    float sum = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            sum += texture(u_shadow_map, vec3(uvz.xy + vec2(x, y) * texel * softness_texels, uvz.z));
+    return sum / 9.0;
+}

@@ -1,0 +1,42 @@
+#version 450 core
+// mtoon: MToon 1.0, the VRM toon material (SPEC.md section 2, measured from three-vrm's MToon
+// 3.5.5 on three.js r187), per channel:
+//   t      = linearstep(-1 + toony, 1 - toony, clamp(n.l, -1, 1) + shift) * shadow
+//   direct = E * k * mix(S, C, t)          (no n.l factor: the shade colour is lit too)
+//   gi     = A * k * C
+//   rim    = rim-color * saturate(1 - n.v + lift)^power * mix(1, (E + A) * k, rim-lighting-mix)
+//   out    = clamp(direct + gi + rim)
+// convention "threejs": k = 1/pi and the output is sRGB-encoded (three-vrm on three.js);
+// convention "seeds": k = 1 and the value is written as it is (the seeds' shaders).
+// shadow = 1 (lit) .. 0 from the PCF-filtered shadow map when `shadows` is on; it scales t as
+// the shading term of three-vrm does, so shadowed parts take the shade colour.
+#include "common/surface.glsl"
+#include "common/shadow.glsl"
+
+uniform vec3 u_shade_color;
+uniform float u_shading_shift;
+uniform float u_shading_toony;
+uniform vec3 u_rim_color;
+uniform float u_rim_fresnel_power;
+uniform float u_rim_lift;
+uniform float u_rim_lighting_mix;
+uniform int u_convention;  // 0 seeds, 1 threejs
+uniform float u_shadow_softness;
+
+float linearstep(float a, float b, float x) { return clamp((x - a) / max(b - a, 1e-6), 0.0, 1.0); }
+
+void main() {
+    Surface s = surface();
+    const float kInvPi = 0.31830988618;
+    float k = (u_convention == 1) ? kInvPi : 1.0;
+    float ndotl = clamp(dot(s.n, s.l), -1.0, 1.0);
+    float t = linearstep(-1.0 + u_shading_toony, 1.0 - u_shading_toony, ndotl + u_shading_shift);
+    t *= shadow_visibility(s.p, s.n, s.l, u_shadow_softness);
+    vec3 E = u_light_color * k, A = u_ambient * k;
+    vec3 direct = E * mix(u_shade_color, s.albedo, t);
+    vec3 gi = A * s.albedo;
+    float fresnel = pow(max(clamp(1.0 - dot(s.n, s.v) + u_rim_lift, 0.0, 1.0), 1e-6), u_rim_fresnel_power);
+    vec3 rim = u_rim_color * fresnel * mix(vec3(1.0), E + A, u_rim_lighting_mix);
+    vec3 c = clamp(direct + gi + rim, 0.0, 1.0);
+    o_color = (u_convention == 1) ? vec4(srgb_encode(c), 1.0) : encode_output(c);
+}

@@ -1,0 +1,26 @@
+#include "inkshade/shading.hpp"
+
+namespace inkshade {
+// Defaults are MToon 1.0's (SPEC.md section 2): shade colour 0, shift 0, toony 0.9, rim colour
+// 0, fresnel power 5, lift 0, rim lighting mix 1. Shadows on: seed 000 enables shadow maps.
+static const ShadingModelRegistration mtoon_model{{
+    .name = "mtoon",
+    .summary = "MToon 1.0: E*mix(S, C, linearstep(-1+toony, 1-toony, n.l+shift)*shadow) + A*C + rim",
+    .fragment = "shading/mtoon.frag",
+    .shadow_map = true,
+    .params =
+        {
+            color_param("shade-color", glm::vec3(0.0f), "shade colour S (MToon shadeColorFactor)"),
+            float_param("shading-shift", 0.0f, -1.0f, 1.0f, "shift added to n.l before the toon step (MToon shadingShiftFactor)"),
+            float_param("shading-toony", 0.9f, 0.0f, 1.0f, "toony-ness: 1 = hard terminator, 0 = smooth (MToon shadingToonyFactor)"),
+            color_param("rim-color", glm::vec3(0.0f), "rim colour (MToon parametricRimColorFactor; black = no rim)"),
+            float_param("rim-fresnel-power", 5.0f, 0.0f, 100.0f, "rim exponent on 1 - n.v (MToon parametricRimFresnelPowerFactor)"),
+            float_param("rim-lift", 0.0f, 0.0f, 1.0f, "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
+            float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f, "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
+            choice_param("convention", {"seeds", "threejs"}, 0,
+                         "seeds: values as they are; threejs: 1/pi light units and sRGB output (three-vrm)"),
+            bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)"),
+            float_param("shadow-softness", 1.5f, 0.0f, 4.0f, "PCF filter radius in shadow-map texels"),
+        },
+}};
+}  // namespace inkshade
