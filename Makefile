@@ -4,7 +4,7 @@ ASAN_BUILD ?= build-asan
 JOBS       ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: setup configure build run test test-asan bench clean
+.PHONY: setup configure build run test test-asan bench gallery clean
 
 setup:
 	@scripts/setup
@@ -28,6 +28,9 @@ test-asan: setup
 
 bench: build
 	@scripts/bench $(BUILD)
+
+gallery: build
+	@scripts/gallery $(BUILD)/inkshade docs/gallery
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -30,7 +30,7 @@ void main() {
     else if (u_driver == 2) t = max(dot(s.n, s.v), 0.0);
     else if (u_driver == 3) t = box_fraction(1);
     else if (u_driver == 4) t = box_fraction(0);
-    else t = box_fraction(1);
+    else t = box_fraction(2);
     vec3 c3 = vec3(u_c[0], u_c[1], u_c[2]);
     vec3 d3 = vec3(u_d[0], u_d[1], u_d[2]);
     vec3 c = u_a + u_b * cos(kTwoPi * (c3 * t + d3));

@@ -24,13 +24,14 @@ uniform float u_threshold_curve;
 
 const float kGrowRamp = 0.15;  // rank interval over which a dot grows to full size
 
-// Ink coverage of the dots of one lattice level (spacing h in normalized model units, `pix`
-// model units per pixel) at q with unit normal n; `presence` = w * darkness.
-float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
+// Ink coverage of the dots of one lattice level (spacing h in normalized model units) at q with
+// unit normal n; `presence` = level weight * darkness * foreshortening. `to_pixels` maps a
+// model-space offset in the tangent plane to screen pixels (least-squares inverse of the
+// Jacobian [dq/dx dq/dy]), so dots are round discs of dot-size pixels on screen.
+float level_ink(vec3 q, vec3 n, float h, mat2x3 jac, mat2 gram_inv, float presence) {
     if (presence <= 0.0) return 0.0;
     vec3 x = q / h;
     ivec3 base = ivec3(floor(x));
-    float px_per_cell = h / pix;
     float ink = 0.0;
     for (int k = -1; k <= 1; ++k)
         for (int j = -1; j <= 1; ++j)
@@ -43,9 +44,9 @@ float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
                 float rank = hash_to_unit(pcg3d(hc)).x;
                 float grow = clamp((presence - rank) / kGrowRamp, 0.0, 1.0);
                 if (grow <= 0.0) continue;
-                float r = 0.5 * u_dot_size * sqrt(grow);              // pixels
-                float dist = length(d - dn * n) * px_per_cell;        // pixels, in the tangent plane
-                ink = max(ink, 1.0 - smoothstep(r - 0.5, r + 0.5, dist));
+                float r = 0.5 * u_dot_size * sqrt(grow);                      // pixels
+                vec2 offset = gram_inv * (h * (d - dn * n) * jac);            // pixels
+                ink = max(ink, 1.0 - smoothstep(r - 0.5, r + 0.5, length(offset)));
             }
     return ink;
 }
@@ -53,15 +54,19 @@ float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
 void main() {
     Surface s = surface();
     vec3 q = normalized_object_pos();
-    // Pixel footprint: smallest singular value of the 3x2 Jacobian [dq/dx dq/dy], i.e. the
-    // model-space length of one pixel along the surface direction that is not foreshortened.
+    // Pixel footprint: singular values of the 3x2 Jacobian J = [dq/dx dq/dy]; the smallest is
+    // the model-space length of one pixel along the surface direction that is not
+    // foreshortened, their ratio the foreshortening.
     vec3 a = dFdx(q), b = dFdy(q);
     float aa = dot(a, a), bb = dot(b, b), ab = dot(a, b);
-    float lmin = 0.5 * (aa + bb - sqrt((aa - bb) * (aa - bb) + 4.0 * ab * ab));
-    float pix = sqrt(max(lmin, 1e-20));
+    float root = sqrt((aa - bb) * (aa - bb) + 4.0 * ab * ab);
+    float lmin = max(0.5 * (aa + bb - root), 1e-24), lmax = max(0.5 * (aa + bb + root), 1e-24);
+    float pix = sqrt(lmin);
+    float foreshortening = sqrt(lmin / lmax);  // n.v for an orthographic view
+    float det = aa * bb - ab * ab;
+    mat2 gram_inv = det > 1e-36 ? mat2(bb, -ab, -ab, aa) / det : mat2(0.0);
     // The model matrix is the identity (renderer.cpp), so the world normal is the model one.
     vec3 n = normalize(v_world_normal);
-
     float tone = dot(u_light_color * lambert(s.n, s.l) + u_ambient, vec3(0.2126, 0.7152, 0.0722));
     float darkness = pow(clamp(1.0 - tone, 0.0, 1.0), u_threshold_curve);
 
@@ -72,7 +77,12 @@ void main() {
     float h0 = exp2(level);
     float w_coarse = 1.0 - f;
     float w_fine = (exp2(2.0 * f) - (1.0 - f)) * 0.25;  // keeps w_c/h0^2 + w_f/(h0/2)^2 = 1/h_d^2
-    float ink = max(level_ink(q, n, h0, pix, w_coarse * darkness),
-                    level_ink(q, n, 0.5 * h0, pix, w_fine * darkness));
+    // Surface dots per screen pixel grow as 1 / foreshortening: thin them out to keep the
+    // tone (ink per pixel) a function of the light only.
+    float k = darkness * foreshortening;
+    mat2x3 jac = mat2x3(a, b);
+    float ink = det > 1e-36 ? max(level_ink(q, n, h0, jac, gram_inv, w_coarse * k),
+                                  level_ink(q, n, 0.5 * h0, jac, gram_inv, w_fine * k))
+                            : 0.0;
     o_color = encode_output(mix(u_paper_color, u_ink_color * s.albedo, ink));
 }

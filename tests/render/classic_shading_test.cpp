@@ -302,3 +302,37 @@ TEST_F(ClassicShading, TransparentBackgroundHasZeroAlphaAndOpaqueModel) {
 
 }  // namespace
 }  // namespace inkshade::test
+
+namespace inkshade::test {
+namespace {
+
+// samples = 1 means no multisampling: a silhouette pixel is either model or background, with
+// MSAA (default 4) some edge pixels blend the two.
+TEST(Framebuffer, OneSampleMeansNoAntialiasing) {
+    Mesh sphere = builtin::sphere(32, 64);
+    Renderer& r = shared_renderer();
+    r.set_mesh(sphere);
+    ShadingSelection sel;
+    sel.model = "normal";
+    Light light;
+    auto blended = [&](int samples) {
+        RenderOptions o;
+        o.width = o.height = 96;
+        o.samples = samples;
+        o.background = glm::vec4(0, 0, 0, 1);
+        Image img = r.render(ortho_camera(), light, sel, o);
+        int count = 0;  // pixels that are neither background nor a full-coverage normal colour
+        for (int y = 0; y < 96; ++y)
+            for (int x = 0; x < 96; ++x) {
+                const uint8_t* p = img.pixel(x, y);
+                int sum = p[0] + p[1] + p[2];
+                if (sum > 0 && p[2] < 120) ++count;  // front normals have z >= 0: blue >= 127
+            }
+        return count;
+    };
+    EXPECT_EQ(blended(1), 0);
+    EXPECT_GT(blended(4), 10);
+}
+
+}  // namespace
+}  // namespace inkshade::test
