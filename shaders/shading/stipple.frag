@@ -5,8 +5,9 @@
 //   pcg3d hash), so they stay on the surface while the camera moves; a point belongs to the
 //   surface's dot layer when it lies within half a cell of the tangent plane, and draws a
 //   disc in that plane;
-//   lattice spacing = a power of two chosen from the pixel footprint (smallest singular value
-//   of d(pos)/d(x, y)) so that a full-dark area holds `density` dots per dot-size^2 pixels;
+//   lattice spacing = a power of two chosen from the pixel footprint on the surface (square
+//   root of a pixel's area there, from d(pos)/dx and d(pos)/dy) so that a full-dark area holds
+//   `density` dots per dot-size^2 pixels;
 //   the two nearest levels are blended by letting the dots of each appear with a probability
 //   that keeps the dot count per pixel constant (no popping with zoom: the idea of
 //   Praun et al. 2001's tonal art maps across mip levels and Bénard et al. 2009's
@@ -25,13 +26,14 @@ uniform float u_threshold_curve;
 const float kGrowRamp = 0.15;  // rank interval over which a dot grows to full size
 
 // Ink coverage of the dots of one lattice level (spacing h in normalized model units) at q with
-// unit normal n; `presence` = level weight * darkness * foreshortening. `to_pixels` maps a
-// model-space offset in the tangent plane to screen pixels (least-squares inverse of the
-// Jacobian [dq/dx dq/dy]), so dots are round discs of dot-size pixels on screen.
-float level_ink(vec3 q, vec3 n, float h, mat2x3 jac, mat2 gram_inv, float presence) {
+// unit normal n; `pix` = model units per pixel (see main),
+// `presence` = level weight * darkness. A dot is a disc in the tangent plane whose area is
+// pi * (dot-size / 2)^2 pixels on screen (an ellipse where the surface is foreshortened).
+float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
     if (presence <= 0.0) return 0.0;
     vec3 x = q / h;
     ivec3 base = ivec3(floor(x));
+    float px_per_cell = h / pix;
     float ink = 0.0;
     for (int k = -1; k <= 1; ++k)
         for (int j = -1; j <= 1; ++j)
@@ -44,9 +46,9 @@ float level_ink(vec3 q, vec3 n, float h, mat2x3 jac, mat2 gram_inv, float presen
                 float rank = hash_to_unit(pcg3d(hc)).x;
                 float grow = clamp((presence - rank) / kGrowRamp, 0.0, 1.0);
                 if (grow <= 0.0) continue;
-                float r = 0.5 * u_dot_size * sqrt(grow);                      // pixels
-                vec2 offset = gram_inv * (h * (d - dn * n) * jac);            // pixels
-                ink = max(ink, 1.0 - smoothstep(r - 0.5, r + 0.5, length(offset)));
+                float r = 0.5 * u_dot_size * sqrt(grow);               // pixels
+                float dist = length(d - dn * n) * px_per_cell;         // pixels, in the tangent plane
+                ink = max(ink, 1.0 - smoothstep(r - 0.5, r + 0.5, dist));
             }
     return ink;
 }
@@ -54,19 +56,20 @@ float level_ink(vec3 q, vec3 n, float h, mat2x3 jac, mat2 gram_inv, float presen
 void main() {
     Surface s = surface();
     vec3 q = normalized_object_pos();
-    // Pixel footprint: singular values of the 3x2 Jacobian J = [dq/dx dq/dy]; the smallest is
-    // the model-space length of one pixel along the surface direction that is not
-    // foreshortened, their ratio the foreshortening.
+    // Pixel footprint on the surface from the singular values s_min <= s_max of the Jacobian
+    // J = [dq/dx dq/dy] (model units per pixel along the least and most foreshortened
+    // directions): pix = sqrt(s_min * s_max), the square root of a pixel's area on the
+    // surface, keeps each dot's area in pixels and the dots per pixel constant where the
+    // surface is foreshortened; the ratio is capped at 4 so that dots at grazing angles
+    // stretch to at most twice their width along the surface instead of becoming streaks.
     vec3 a = dFdx(q), b = dFdy(q);
     float aa = dot(a, a), bb = dot(b, b), ab = dot(a, b);
     float root = sqrt((aa - bb) * (aa - bb) + 4.0 * ab * ab);
-    float lmin = max(0.5 * (aa + bb - root), 1e-24), lmax = max(0.5 * (aa + bb + root), 1e-24);
-    float pix = sqrt(lmin);
-    float foreshortening = sqrt(lmin / lmax);  // n.v for an orthographic view
-    float det = aa * bb - ab * ab;
-    mat2 gram_inv = det > 1e-36 ? mat2(bb, -ab, -ab, aa) / det : mat2(0.0);
+    float s_min = sqrt(max(0.5 * (aa + bb - root), 1e-30)), s_max = sqrt(max(0.5 * (aa + bb + root), 1e-30));
+    float pix = s_min * sqrt(min(s_max / s_min, 4.0));
     // The model matrix is the identity (renderer.cpp), so the world normal is the model one.
     vec3 n = normalize(v_world_normal);
+
     float tone = dot(u_light_color * lambert(s.n, s.l) + u_ambient, vec3(0.2126, 0.7152, 0.0722));
     float darkness = pow(clamp(1.0 - tone, 0.0, 1.0), u_threshold_curve);
 
@@ -77,12 +80,6 @@ void main() {
     float h0 = exp2(level);
     float w_coarse = 1.0 - f;
     float w_fine = (exp2(2.0 * f) - (1.0 - f)) * 0.25;  // keeps w_c/h0^2 + w_f/(h0/2)^2 = 1/h_d^2
-    // Surface dots per screen pixel grow as 1 / foreshortening: thin them out to keep the
-    // tone (ink per pixel) a function of the light only.
-    float k = darkness * foreshortening;
-    mat2x3 jac = mat2x3(a, b);
-    float ink = det > 1e-36 ? max(level_ink(q, n, h0, jac, gram_inv, w_coarse * k),
-                                  level_ink(q, n, 0.5 * h0, jac, gram_inv, w_fine * k))
-                            : 0.0;
+    float ink = max(level_ink(q, n, h0, pix, w_coarse * darkness), level_ink(q, n, 0.5 * h0, pix, w_fine * darkness));
     o_color = encode_output(mix(u_paper_color, u_ink_color * s.albedo, ink));
 }

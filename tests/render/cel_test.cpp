@@ -197,23 +197,19 @@ int compare_away_from_edges(const Image& img, const Scene& s, int step, int tole
 
 class Cel : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { sphere_ = new Mesh(builtin::sphere(128, 256)); }
-    static void TearDownTestSuite() { delete sphere_; }
     static Image render(Scene& s) {
         s.shading.params = s.cel.to_params();
         Renderer& r = shared_renderer();
-        r.set_mesh(*sphere_);
+        r.set_mesh(fine_sphere());
         return r.render(ortho_camera(), s.light, s.shading, s.options);
     }
-    static Mesh* sphere_;
 };
-Mesh* Cel::sphere_ = nullptr;
 
 TEST_F(Cel, DefaultsMatchFormulaAwayFromBandEdges) {
     Scene s = make_scene(CelParams{});
     // The model's registered defaults must be the ones mirrored here: render with none set.
     Renderer& r = shared_renderer();
-    r.set_mesh(*sphere_);
+    r.set_mesh(fine_sphere());
     Image img = r.render(ortho_camera(), s.light, s.shading, s.options);
     EXPECT_GE(compare_away_from_edges(img, s, 8, 2), 50);
 }

@@ -42,27 +42,6 @@ glm::vec3 specular_formula(const Scene& s, const glm::vec3& n, bool blinn, float
     return ks * s.light.color * std::pow(base, shininess);
 }
 
-// Compares at every pixel of a 24x24 grid that lies well inside the sphere (n.v > 0.2) the
-// rendered colour against expected(n) with n the analytic normal; returns the count compared.
-int compare_on_sphere(const Image& img, const std::function<glm::vec3(const glm::vec3&)>& expected) {
-    const Camera cam = ortho_camera();
-    int compared = 0;
-    for (int gy = 0; gy < 24; ++gy)
-        for (int gx = 0; gx < 24; ++gx) {
-            int px = 8 + gx * 10, py = 8 + gy * 10;
-            auto n = sphere_normal(ray_origin(cam, px + 0.5f, py + 0.5f));
-            if (!n || n->z < 0.2f) continue;
-            glm::vec3 want = expected(*n);
-            const uint8_t* got = img.pixel(px, py);
-            for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(int(got[c]), to_byte(want[c]), 2)
-                    << "pixel (" << px << "," << py << ") channel " << c << " n=(" << n->x << "," << n->y << ","
-                    << n->z << ")";
-            ++compared;
-        }
-    return compared;
-}
-
 class ClassicShading : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {

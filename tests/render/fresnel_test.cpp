@@ -54,20 +54,7 @@ Image render(const Mesh& mesh, const Scene& s) {
 // Compares a 24x24 grid of pixels inside the unit disc (n.v > 0.15, away from the outline)
 // with expected(n), n = the viewer-facing sphere normal under the pixel; returns the count.
 int compare_on_disc(const Image& img, const std::function<glm::vec3(const glm::vec3&)>& expected) {
-    const Camera cam = ortho_camera();
-    int compared = 0;
-    for (int gy = 0; gy < 24; ++gy)
-        for (int gx = 0; gx < 24; ++gx) {
-            int px = 8 + gx * 10, py = 8 + gy * 10;
-            auto n = sphere_normal(ray_origin(cam, px + 0.5f, py + 0.5f));
-            if (!n || n->z < 0.15f) continue;
-            glm::vec3 want = expected(*n);
-            const uint8_t* got = img.pixel(px, py);
-            for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(int(got[c]), to_byte(want[c]), 2) << "pixel (" << px << "," << py << ") channel " << c;
-            ++compared;
-        }
-    return compared;
+    return compare_on_sphere(img, expected, 0.15f);
 }
 
 // Mean green level of pixels whose viewer-facing n.v lies in [lo, hi).
@@ -125,23 +112,17 @@ Mesh back_hemisphere() {
     return bowl;
 }
 
-class Fresnel : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { sphere_ = new Mesh(builtin::sphere(128, 256)); }
-    static void TearDownTestSuite() { delete sphere_; }
-    static Mesh* sphere_;
-};
-Mesh* Fresnel::sphere_ = nullptr;
+class Fresnel : public ::testing::Test {};
 
 TEST_F(Fresnel, AddModeMatchesFormulaAtSampledPixels) {
     Scene s = fresnel_scene("add");
-    Image img = render(*sphere_, s);
+    Image img = render(fine_sphere(), s);
     EXPECT_GE(compare_on_disc(img, [&](const glm::vec3& n) { return fresnel_formula(s, n); }), 50);
 }
 
 TEST_F(Fresnel, ReplaceModeIsRimAloneAtSampledPixels) {
     Scene s = fresnel_scene("replace");
-    Image img = render(*sphere_, s);
+    Image img = render(fine_sphere(), s);
     EXPECT_GE(compare_on_disc(img, [&](const glm::vec3& n) { return fresnel_formula(s, n); }), 50);
     expect_rim_not_centre(img, "sphere");
 }
@@ -149,7 +130,7 @@ TEST_F(Fresnel, ReplaceModeIsRimAloneAtSampledPixels) {
 // Seed 004's artefact: normals facing away from the viewer light the centre and darken the
 // rim. Reversed windings with inward normals must look exactly like the outward sphere.
 TEST_F(Fresnel, InvertedSphereStillGlowsAtTheSilhouette) {
-    const Mesh inside_out = inverted(*sphere_, true, true);
+    const Mesh inside_out = inverted(fine_sphere(), true, true);
     for (const char* mode : {"add", "replace"}) {
         Scene s = fresnel_scene(mode);
         Image img = render(inside_out, s);
@@ -161,7 +142,7 @@ TEST_F(Fresnel, InvertedSphereStillGlowsAtTheSilhouette) {
 // Front faces whose normals point inwards (a broken file): the rim still sits at the silhouette.
 TEST_F(Fresnel, InwardNormalsOnFrontFacesStillGlowAtTheSilhouette) {
     Scene s = fresnel_scene("replace");
-    Image img = render(inverted(*sphere_, false, true), s);
+    Image img = render(inverted(fine_sphere(), false, true), s);
     EXPECT_GE(compare_on_disc(img, [&](const glm::vec3& n) { return fresnel_formula(s, n); }), 50);
     expect_rim_not_centre(img, "inward normals");
 }
@@ -186,9 +167,9 @@ TEST_F(Fresnel, OpenHemisphereSeenFromInsideHasRimAndDarkCentre) {
 TEST_F(Fresnel, LargerPowerNarrowsTheRim) {
     Scene s = fresnel_scene("replace");
     s.shading.params["power"] = {1.0f};
-    double wide = mean_green(render(*sphere_, s), 0.4f, 0.6f);
+    double wide = mean_green(render(fine_sphere(), s), 0.4f, 0.6f);
     s.shading.params["power"] = {8.0f};
-    double narrow = mean_green(render(*sphere_, s), 0.4f, 0.6f);
+    double narrow = mean_green(render(fine_sphere(), s), 0.4f, 0.6f);
     EXPECT_GT(wide, narrow + 50.0);
 }
 

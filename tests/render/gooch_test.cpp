@@ -55,34 +55,17 @@ glm::vec3 gooch_formula(const Scene& s, const glm::vec3& n) {
 }
 
 int compare_on_sphere(const Image& img, const Scene& s) {
-    const Camera cam = ortho_camera();
-    int compared = 0;
-    for (int gy = 0; gy < 24; ++gy)
-        for (int gx = 0; gx < 24; ++gx) {
-            int px = 8 + gx * 10, py = 8 + gy * 10;
-            auto n = sphere_normal(ray_origin(cam, px + 0.5f, py + 0.5f));
-            if (!n || n->z < 0.2f) continue;
-            glm::vec3 want = gooch_formula(s, *n);
-            const uint8_t* got = img.pixel(px, py);
-            for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(int(got[c]), to_byte(want[c]), 2) << "pixel (" << px << "," << py << ") channel " << c;
-            ++compared;
-        }
-    return compared;
+    return test::compare_on_sphere(img, [&](const glm::vec3& n) { return gooch_formula(s, n); });
 }
 
 class Gooch : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { sphere_ = new Mesh(builtin::sphere(128, 256)); }
-    static void TearDownTestSuite() { delete sphere_; }
     static Image render(const Scene& s) {
         Renderer& r = shared_renderer();
-        r.set_mesh(*sphere_);
+        r.set_mesh(fine_sphere());
         return r.render(ortho_camera(), s.light, s.shading, s.options);
     }
-    static Mesh* sphere_;
 };
-Mesh* Gooch::sphere_ = nullptr;
 
 TEST_F(Gooch, DefaultsMatchFormulaAtSampledPixels) {
     Scene s = make_scene(GoochParams{});

@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
 #include <memory>
 #include <optional>
 
 #include <glm/glm.hpp>
 
+#include "core/builtin_models.hpp"
 #include "inkshade/camera.hpp"
 #include "inkshade/renderer.hpp"
 
@@ -21,6 +24,13 @@ inline Renderer& shared_renderer() {
 }
 
 constexpr int kSize = 256;
+
+// The unit sphere most pixel tests render: fine enough (128 x 256) that interpolated normals
+// match the analytic ones within the 2/255 tolerance. Built once per test binary.
+inline const Mesh& fine_sphere() {
+    static const Mesh sphere = builtin::sphere(128, 256);
+    return sphere;
+}
 
 // Orthographic camera on +z looking at the origin; the view is 2.5 units high.
 inline Camera ortho_camera() {
@@ -90,5 +100,36 @@ inline std::optional<glm::vec3> sphere_normal(const glm::vec3& origin, float r =
 }
 
 inline int to_byte(float v) { return int(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f))); }
+
+// Renders `mesh` with the orthographic test camera.
+inline Image render_ortho(const Mesh& mesh, const Light& light, const ShadingSelection& shading,
+                          const RenderOptions& options) {
+    Renderer& r = shared_renderer();
+    r.set_mesh(mesh);
+    return r.render(ortho_camera(), light, shading, options);
+}
+
+// Compares, at every pixel of a 24x24 grid inside the unit sphere's disc with n.z > min_nz
+// (away from the outline), the rendered colour with expected(n) within 2/255, n the analytic
+// normal under the pixel centre; returns how many pixels were compared.
+inline int compare_on_sphere(const Image& img, const std::function<glm::vec3(const glm::vec3&)>& expected,
+                             float min_nz = 0.2f, const std::string& what = "") {
+    const Camera cam = ortho_camera();
+    int compared = 0;
+    for (int gy = 0; gy < 24; ++gy)
+        for (int gx = 0; gx < 24; ++gx) {
+            int px = 8 + gx * 10, py = 8 + gy * 10;
+            auto n = sphere_normal(ray_origin(cam, px + 0.5f, py + 0.5f));
+            if (!n || n->z < min_nz) continue;
+            glm::vec3 want = expected(*n);
+            const uint8_t* got = img.pixel(px, py);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(int(got[c]), to_byte(want[c]), 2)
+                    << what << " pixel (" << px << "," << py << ") channel " << c << " n=(" << n->x << ","
+                    << n->y << "," << n->z << ")";
+            ++compared;
+        }
+    return compared;
+}
 
 }  // namespace inkshade::test

@@ -137,13 +137,7 @@ double median_area(std::vector<Dot> dots) {
     return a[a.size() / 2];
 }
 
-class Stipple : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { sphere_ = new Mesh(builtin::sphere(128, 256)); }
-    static void TearDownTestSuite() { delete sphere_; }
-    static Mesh* sphere_;
-};
-Mesh* Stipple::sphere_ = nullptr;
+class Stipple : public ::testing::Test {};
 
 // Orbit the camera by 1 degree about +y: each dot seen in the first view, lifted to the
 // sphere and projected with the second camera, must have a dot within 1 px in the second
@@ -152,8 +146,8 @@ TEST_F(Stipple, DotsStayOnTheSurfaceWhenTheCameraOrbits) {
     const int size = 512;
     Scene s = stipple_scene(size);
     const OrthoView first(orbit(0.0f), size), second(orbit(1.0f), size);
-    const std::vector<Dot> before = find_dots(render(*sphere_, s, first.camera));
-    const std::vector<Dot> after = find_dots(render(*sphere_, s, second.camera));
+    const std::vector<Dot> before = find_dots(render(fine_sphere(), s, first.camera));
+    const std::vector<Dot> after = find_dots(render(fine_sphere(), s, second.camera));
     const std::vector<Dot> tracked = dots_in_tone_band(before, first, s, 0.5f, 0.2f, 0.8f, 40);
     ASSERT_GE(tracked.size(), 100u);
     int followed = 0;
@@ -177,7 +171,7 @@ TEST_F(Stipple, InkFractionFallsAsLightRises) {
     const int size = 256;
     Scene s = stipple_scene(size);
     const OrthoView view(orbit(0.0f), size);
-    Image img = render(*sphere_, s, view.camera);
+    Image img = render(fine_sphere(), s, view.camera);
     constexpr int kBands = 5;
     int ink[kBands + 1] = {}, total[kBands + 1] = {};  // last band: n.l < 0 (ambient only)
     for (int y = 0; y < size; ++y)
@@ -190,11 +184,11 @@ TEST_F(Stipple, InkFractionFallsAsLightRises) {
             ink[band] += is_ink(img, x, y);
         }
     double previous = double(ink[kBands]) / std::max(total[kBands], 1);
-    std::printf("unlit ink %.3f\n", previous); EXPECT_GT(previous, 0.15) << "unlit side";
+    EXPECT_GT(previous, 0.15) << "unlit side";
     for (int b = 0; b < kBands; ++b) {
         ASSERT_GT(total[b], 500) << "band " << b;
         double fraction = double(ink[b]) / total[b];
-        std::printf("band %d ink %.3f\n", b, fraction); EXPECT_LT(fraction, previous - 0.01) << "band n.l in [" << b * 0.2 << "," << (b + 1) * 0.2 << ")";
+        EXPECT_LT(fraction, previous - 0.01) << "band n.l in [" << b * 0.2 << "," << (b + 1) * 0.2 << ")";
         previous = fraction;
     }
     EXPECT_LT(previous, 0.05) << "brightest band";
@@ -206,9 +200,9 @@ TEST_F(Stipple, DotSizeInPixelsIsStableAcrossZoom) {
     const int size = 256;
     Scene s = stipple_scene(size);
     const OrthoView wide(orbit(0.0f, 2.5f), size), close(orbit(0.0f, 1.25f), size);
-    const auto dots_wide = dots_in_tone_band(find_dots(render(*sphere_, s, wide.camera)), wide, s, 0.6f, 0.3f, 0.7f, 60);
+    const auto dots_wide = dots_in_tone_band(find_dots(render(fine_sphere(), s, wide.camera)), wide, s, 0.6f, 0.3f, 0.7f, 60);
     const auto dots_close =
-        dots_in_tone_band(find_dots(render(*sphere_, s, close.camera)), close, s, 0.6f, 0.3f, 0.7f, 60);
+        dots_in_tone_band(find_dots(render(fine_sphere(), s, close.camera)), close, s, 0.6f, 0.3f, 0.7f, 60);
     ASSERT_GE(dots_wide.size(), 50u);
     ASSERT_GE(dots_close.size(), 50u);
     double a = median_area(dots_wide), b = median_area(dots_close);
@@ -224,9 +218,9 @@ TEST_F(Stipple, DotSizeParameterSetsDotArea) {
     Scene s = stipple_scene(size);
     const OrthoView view(orbit(0.0f), size);
     s.shading.params["dot-size"] = {3.0f};
-    double small = median_area(dots_in_tone_band(find_dots(render(*sphere_, s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
+    double small = median_area(dots_in_tone_band(find_dots(render(fine_sphere(), s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
     s.shading.params["dot-size"] = {6.0f};
-    double large = median_area(dots_in_tone_band(find_dots(render(*sphere_, s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
+    double large = median_area(dots_in_tone_band(find_dots(render(fine_sphere(), s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
     EXPECT_GT(large, 2.5 * small) << small << " px -> " << large << " px";
 }
 

@@ -175,18 +175,12 @@ Mesh placed_sphere(const Placement& where, int rings = 64, int segments = 128) {
     return m;
 }
 
-class Voronoi : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { sphere_ = new Mesh(builtin::sphere(128, 256)); }
-    static void TearDownTestSuite() { delete sphere_; }
-    static Mesh* sphere_;
-};
-Mesh* Voronoi::sphere_ = nullptr;
+class Voronoi : public ::testing::Test {};
 
 TEST_F(Voronoi, DistanceModeIsWorleyF1AtSampledPixels) {
     Scene s = voronoi_scene(1);
-    Image img = render(*sphere_, s);
-    int compared = for_sampled_pixels(*sphere_, {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
+    Image img = render(fine_sphere(), s);
+    int compared = for_sampled_pixels(fine_sphere(), {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
         return expect_pixel(img, x, y, glm::vec3(f.w.f1));
     });
     EXPECT_GE(compared, 50);
@@ -194,14 +188,14 @@ TEST_F(Voronoi, DistanceModeIsWorleyF1AtSampledPixels) {
 
 TEST_F(Voronoi, CellsModeShowsHashedCellColours) {
     Scene s = voronoi_scene(0);
-    EXPECT_GE(expect_cells_match_reference(render(*sphere_, s), *sphere_, {}, s, false), 50);
+    EXPECT_GE(expect_cells_match_reference(render(fine_sphere(), s), fine_sphere(), {}, s, false), 50);
     s.shading.params["lit"] = {1.0f};
-    EXPECT_GE(expect_cells_match_reference(render(*sphere_, s), *sphere_, {}, s, true), 50);
+    EXPECT_GE(expect_cells_match_reference(render(fine_sphere(), s), fine_sphere(), {}, s, true), 50);
     // color-mix 0 is the base colour C everywhere.
     s.shading.params["lit"] = {0.0f};
     s.shading.params["color-mix"] = {0.0f};
-    Image plain = render(*sphere_, s);
-    EXPECT_GE(for_sampled_pixels(*sphere_, {}, 8.0f,
+    Image plain = render(fine_sphere(), s);
+    EXPECT_GE(for_sampled_pixels(fine_sphere(), {}, 8.0f,
                                  [&](int x, int y, const PixelFeatures&) {
                                      return expect_pixel(plain, x, y, s.shading.base_color);
                                  }),
@@ -212,9 +206,9 @@ TEST_F(Voronoi, EdgesWhereF2MinusF1IsBelowTheWidth) {
     Scene s = voronoi_scene(0);
     s.shading.params["edge-width"] = {0.12f};
     s.shading.params["edge-color"] = {1.0f, 0.0f, 1.0f};
-    Image img = render(*sphere_, s);
+    Image img = render(fine_sphere(), s);
     int on_edge = 0, inside = 0;
-    for_sampled_pixels(*sphere_, {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
+    for_sampled_pixels(fine_sphere(), {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
         float e = f.w.f2 - f.w.f1;
         if (e < 0.06f) on_edge += expect_pixel(img, x, y, glm::vec3(1, 0, 1));
         if (e > 0.2f) inside += expect_pixel(img, x, y, voronoi_cell_color(f.w.id));
@@ -227,9 +221,9 @@ TEST_F(Voronoi, EdgesWhereF2MinusF1IsBelowTheWidth) {
 TEST_F(Voronoi, IsolinesAtMultiplesOfTheSpacing) {
     Scene s = voronoi_scene(2);
     s.shading.params["isoline-spacing"] = {0.25f};
-    Image img = render(*sphere_, s);
+    Image img = render(fine_sphere(), s);
     int on_line = 0, between = 0;
-    for_sampled_pixels(*sphere_, {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
+    for_sampled_pixels(fine_sphere(), {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
         float t = f.w.f1 / 0.25f, d = std::abs(t - std::round(t));
         if (d < 0.02f) {
             EXPECT_LT(img.pixel(x, y)[1], 100) << "isoline pixel (" << x << "," << y << ")";
@@ -298,9 +292,9 @@ TEST_F(Voronoi, WorksOnBinaryStlLoadedFromDisk) {
 TEST_F(Voronoi, ScaleSetsCellsPerLongestSide) {
     Scene s = voronoi_scene(0);
     s.shading.params["scale"] = {3.0f};
-    int few = distinct_colours(render(*sphere_, s), 20);
+    int few = distinct_colours(render(fine_sphere(), s), 20);
     s.shading.params["scale"] = {16.0f};
-    int many = distinct_colours(render(*sphere_, s), 20);
+    int many = distinct_colours(render(fine_sphere(), s), 20);
     EXPECT_GE(few, 3);
     EXPECT_GT(many, 3 * few);
 }

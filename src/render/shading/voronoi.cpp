@@ -16,7 +16,7 @@ static const ShadingModelRegistration voronoi_model{{
             float_param("edge-width", 0.05f, 0.0f, 1.0f,
                         "cell borders where F2 - F1 < width, in cell units (0 = none); anti-aliased"),
             color_param("edge-color", glm::vec3(0.0f), "colour of cell borders and isolines"),
-            float_param("isoline-spacing", 0.1f, 0.01f, 1.0f, "isolines mode: F1 between lines, in cell units"),
+            float_param("isoline-spacing", 0.2f, 0.01f, 1.0f, "isolines mode: F1 between lines, in cell units"),
             bool_param("lit", true, "multiply by E*max(n.l,0) + A"),
         },
 }};
