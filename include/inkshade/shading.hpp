@@ -33,7 +33,14 @@ struct ParamSpec {
     std::string doc;                    // one line: meaning and source of the default
     std::vector<std::string> choices;   // Choice: the names (value = index)
     int max_count = 1;                  // FloatList: uniform array size
+    // Bool/Choice that switches a code path: compiled into the shader as
+    // `#define INKSHADE_NAME value` (NAME upper-case, '-' -> '_') instead of a uniform, since
+    // llvmpipe runs a switched-off branch anyway. Each value used gets its own program.
+    bool compile_time = false;
 };
+
+// Marks a Bool or Choice parameter as compile-time (see ParamSpec::compile_time).
+ParamSpec compile_time(ParamSpec spec);
 
 // Concise constructors for model files.
 ParamSpec float_param(std::string name, float value, float min, float max, std::string doc);
@@ -50,8 +57,9 @@ struct ShadingModel {
     std::string fragment;      // shader file under shaders/, e.g. "shading/phong.frag"
     std::string vertex = "mesh.vert";
     bool debug_view = false;   // debug views (normal, view, w, ndotv)
-    // Casts shadows from a shadow map when its bool parameter "shadows" is on: the renderer
-    // then runs a depth pass from the light and binds it (shaders/common/shadow.glsl).
+    // Casts shadows from a shadow map when its compile-time bool parameter "shadows" is on:
+    // the renderer then runs a depth pass from the light and binds it
+    // (shaders/common/shadow.glsl).
     bool shadow_map = false;
     std::vector<ParamSpec> params;
 

@@ -4,14 +4,17 @@
 // taps keep the cost near one extra texture fetch per tap on llvmpipe.
 // Acne is avoided with a normal offset (the lookup point moves texel_world * normal-offset
 // along n, Holbein 2011) plus a slope-scaled depth bias of the depth pass (glPolygonOffset).
+// INKSHADE_SHADOWS is the model's compile-time `shadows` parameter: a uniform branch would
+// still cost the taps on llvmpipe, which runs masked-off code.
+#if !defined(INKSHADE_SHADOWS) || !INKSHADE_SHADOWS
+float shadow_visibility(vec3 p, vec3 n, vec3 l, float softness_texels) { return 1.0; }
+#else
 uniform sampler2DShadow u_shadow_map;
 uniform mat4 u_light_view_proj;
-uniform int u_shadow_enabled;   // 0: everything lit (shadows off, or a model without them)
 uniform float u_shadow_texel_world;  // world size of one shadow-map texel
 
 // 1 = fully lit, 0 = fully in shadow.
 float shadow_visibility(vec3 p, vec3 n, vec3 l, float softness_texels) {
-    if (u_shadow_enabled != 1) return 1.0;
     // Offset along the normal, more where the light grazes the surface.
     float grazing = 1.0 - clamp(dot(n, l), 0.0, 1.0);
     vec3 q = p + n * u_shadow_texel_world * (1.0 + 2.0 * grazing);
@@ -25,3 +28,4 @@ float shadow_visibility(vec3 p, vec3 n, vec3 l, float softness_texels) {
             sum += texture(u_shadow_map, vec3(uvz.xy + vec2(x, y) * texel * softness_texels, uvz.z));
     return sum / 9.0;
 }
+#endif

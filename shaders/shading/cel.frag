@@ -23,11 +23,9 @@ uniform float u_levels[kMaxLevels];
 uniform int u_levels_count;
 uniform vec3 u_shade_color;
 uniform float u_smoothing;
-uniform int u_specular;
 uniform float u_shininess;
 uniform float u_specular_threshold;
 uniform vec3 u_specular_color;
-uniform int u_rim;
 uniform vec3 u_rim_color;
 uniform float u_rim_threshold;
 uniform float u_rim_power;
@@ -63,14 +61,18 @@ void main() {
     float d = (u_driver == 0) ? 0.5 * ndotl + 0.5 : max(ndotl, 0.0);
     vec3 lit = mix(u_shade_color, vec3(1.0), band_level(d));
     vec3 c = s.albedo * (u_light_color * lit + u_ambient);
-    if (u_specular == 1) {
+#if INKSHADE_SPECULAR
+    {
         vec3 h = normalize(s.l + s.v);
         float spec = ndotl > 0.0 ? pow(max(dot(s.n, h), 0.0), u_shininess) : 0.0;
         c += u_specular_color * u_light_color * above(spec, u_specular_threshold);
     }
-    if (u_rim == 1) {
+#endif
+#if INKSHADE_RIM
+    {
         float rim = ndotl > 0.0 ? (1.0 - dot(s.n, s.v)) * pow(ndotl, u_rim_power) : 0.0;
         c += u_rim_color * u_light_color * above(rim, u_rim_threshold);
     }
+#endif
     o_color = encode_output(c);
 }

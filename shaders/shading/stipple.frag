@@ -30,25 +30,27 @@ const float kGrowRamp = 0.15;  // rank interval over which a dot grows to full s
 // `presence` = level weight * darkness. A dot is a disc in the tangent plane whose area is
 // pi * (dot-size / 2)^2 pixels on screen (an ellipse where the surface is foreshortened).
 float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
-    if (presence <= 0.0) return 0.0;
     vec3 x = q / h;
-    ivec3 base = ivec3(floor(x));
+    // Points lie within 0.25 of their cell centres, so every point within 0.75 of x (a dot's
+    // reach: half a cell off the tangent plane, <= 0.47 cell in it at the default settings)
+    // lies in the 2x2x2 cells whose centres surround x.
+    ivec3 base = ivec3(floor(x - 0.5));
+    uvec3 k0 = uvec3(base) * kCellHashMul, k1 = k0 + kCellHashMul;
     float px_per_cell = h / pix;
+    float half_dot = 0.5 * u_dot_size;
     float ink = 0.0;
-    for (int k = -1; k <= 1; ++k)
-        for (int j = -1; j <= 1; ++j)
-            for (int i = -1; i <= 1; ++i) {
-                ivec3 c = base + ivec3(i, j, k);
-                uvec3 hc = pcg3d(uvec3(c));
-                vec3 d = vec3(c) + hash_to_unit(hc) - x;
+    for (int k = 0; k <= 1; ++k)
+        for (int j = 0; j <= 1; ++j)
+            for (int i = 0; i <= 1; ++i) {
+                uint hc = cell_hash_mix((i == 0 ? k0.x : k1.x) ^ (j == 0 ? k0.y : k1.y) ^ (k == 0 ? k0.z : k1.z));
+                vec3 d = vec3(base + ivec3(i, j, k)) + 0.25 + 0.5 * bytes_to_unit(hc).xyz - x;
+                float rank = bytes_to_unit(hc).w;
                 float dn = dot(d, n);
-                if (abs(dn) >= 0.5) continue;  // not in this surface's layer of dots
-                float rank = hash_to_unit(pcg3d(hc)).x;
-                float grow = clamp((presence - rank) / kGrowRamp, 0.0, 1.0);
-                if (grow <= 0.0) continue;
-                float r = 0.5 * u_dot_size * sqrt(grow);               // pixels
-                float dist = length(d - dn * n) * px_per_cell;         // pixels, in the tangent plane
-                ink = max(ink, 1.0 - smoothstep(r - 0.5, r + 0.5, dist));
+                float grow = clamp((presence - rank) * (1.0 / kGrowRamp), 0.0, 1.0);
+                float r = half_dot * sqrt(grow);
+                float dist = length(d - dn * n) * px_per_cell;
+                float cov = clamp(r + 0.5 - dist, 0.0, 1.0);
+                ink = max(ink, (abs(dn) < 0.5 && grow > 0.0) ? cov : 0.0);
             }
     return ink;
 }

@@ -1,6 +1,7 @@
 #include "inkshade/renderer.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <map>
 #include <optional>
@@ -49,6 +50,7 @@ private:
 // Sets u_NAME for every parameter of the model (the value given, else the default).
 void upload_params(gpu::ShaderProgram& program, const ShadingModel& model, const ParamValues& values) {
     for (const ParamSpec& spec : model.params) {
+        if (spec.compile_time) continue;  // a #define of the program variant
         auto it = values.find(spec.name);
         const ParamValue& v = it != values.end() ? it->second : spec.default_value;
         const std::string u = uniform_name(spec.name);
@@ -80,9 +82,21 @@ struct Renderer::Impl {
     std::unique_ptr<gpu::Framebuffer> framebuffer;
     std::unique_ptr<render::ShadowPass> shadow;  // created on first use
 
-    gpu::ShaderProgram& program_for(const ShadingModel& model) {
-        auto& p = programs[model.name];
-        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment);
+    // One compiled variant per model and compile-time parameter values (#defines, not
+    // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
+    // model's `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl).
+    gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values) {
+        std::string defines;
+        for (const ParamSpec& spec : model.params) {
+            if (!spec.compile_time) continue;
+            auto it = values.find(spec.name);
+            const ParamValue& v = it != values.end() ? it->second : spec.default_value;
+            std::string macro = "INKSHADE_" + spec.name;
+            for (char& c : macro) c = c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
+            defines += "#define " + macro + " " + std::to_string(int(v.at(0))) + "\n";
+        }
+        auto& p = programs[model.name + "|" + defines];
+        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment, defines);
         return *p;
     }
 
@@ -140,7 +154,6 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     if (!impl_->mesh) throw RuntimeError("no mesh to render (set_mesh first)");
     impl_->context->make_current();
     const ShadingModel& model = shading_model(shading.model);
-    gpu::ShaderProgram& program = impl_->program_for(model);
     gpu::Framebuffer& fb = impl_->framebuffer_for(options);
     const float aspect = float(options.width) / float(options.height);
 
@@ -150,12 +163,13 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     const bool shadows = model.shadow_map && shadows_spec &&
                          (shadows_param != shading.params.end() ? shadows_param->second : shadows_spec->default_value)
                                  .at(0) != 0.0f;
+    gpu::ShaderProgram& program = impl_->program_for(model, shading.params);
     glm::mat4 light_view_proj(1.0f);
     if (shadows) {
         PassTimer t(timings, "shadow");
         if (!impl_->shadow) impl_->shadow = std::make_unique<render::ShadowPass>();
         light_view_proj = render::light_view_projection(light, impl_->bounds);
-        impl_->shadow->render(*impl_->mesh, light_view_proj);
+        impl_->shadow->render(*impl_->mesh, light_view_proj, impl_->closed);
     }
 
     {
@@ -195,7 +209,6 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         program.set("u_bbox_min", impl_->bounds.min);
         program.set("u_bbox_max", impl_->bounds.max);
         program.set("u_viewport_size", glm::vec2(options.width, options.height));
-        program.set("u_shadow_enabled", shadows ? 1 : 0);
         if (shadows) {
             constexpr GLuint kShadowUnit = 1;
             impl_->shadow->bind(kShadowUnit);

@@ -74,6 +74,11 @@ ParamSpec list_param(std::string name, std::vector<float> values, int max_count,
     return {std::move(name), ParamType::FloatList, std::move(values), min, max, std::move(doc), {}, max_count};
 }
 
+ParamSpec compile_time(ParamSpec spec) {
+    spec.compile_time = true;
+    return spec;
+}
+
 const ParamSpec* ShadingModel::param(const std::string& param_name) const {
     for (const ParamSpec& p : params)
         if (p.name == param_name) return &p;

@@ -53,14 +53,19 @@ ShadowPass::~ShadowPass() {
     glDeleteTextures(1, &depth_);
 }
 
-void ShadowPass::render(const GpuMesh& mesh, const glm::mat4& light_view_proj) {
+void ShadowPass::render(const GpuMesh& mesh, const glm::mat4& light_view_proj, bool closed) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, size_, size_);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
+    if (closed) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+    } else {
+        glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
+    }
     // Slope-scaled depth bias against self-shadowing acne (with the lookup's normal offset).
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(2.0f, 4.0f);
@@ -69,6 +74,7 @@ void ShadowPass::render(const GpuMesh& mesh, const glm::mat4& light_view_proj) {
     program_->set("u_light_view_proj", light_view_proj);
     mesh.draw();
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glCullFace(GL_BACK);
 }
 
 void ShadowPass::bind(GLuint unit) const { glBindTextureUnit(unit, depth_); }

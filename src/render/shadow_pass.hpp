@@ -22,7 +22,9 @@ public:
     ShadowPass& operator=(const ShadowPass&) = delete;
 
     // Renders the depth map; leaves the shadow framebuffer bound (caller rebinds its own).
-    void render(const GpuMesh& mesh, const glm::mat4& light_view_proj);
+    // For a closed, outward mesh only the faces turned away from the light are drawn: half
+    // the triangles, and the stored depth lies behind the lit surface, away from acne.
+    void render(const GpuMesh& mesh, const glm::mat4& light_view_proj, bool closed);
     // Binds the depth texture (comparison sampler) to texture `unit`.
     void bind(GLuint unit) const;
     int size() const { return size_; }

@@ -13,6 +13,15 @@ TEST(ShadingRegistry, HasClassicModelsAndDebugViews) {
     for (const char* name : {"normal", "view", "w", "ndotv"}) EXPECT_TRUE(shading_model(name).debug_view) << name;
 }
 
+TEST(ShadingRegistry, ShadowCastingModelsSwitchShadowsAtCompileTime) {
+    for (const ShadingModel* m : shading_models()) {
+        if (!m->shadow_map) continue;
+        const ParamSpec* p = m->param("shadows");
+        ASSERT_NE(p, nullptr) << m->name;
+        EXPECT_TRUE(p->compile_time && p->type == ParamType::Bool) << m->name;
+    }
+}
+
 TEST(ShadingRegistry, UnknownNameListsChoices) {
     try {
         shading_model("nope");
@@ -26,6 +35,8 @@ TEST(ShadingRegistry, DefaultsLieInTheirRanges) {
     for (const ShadingModel* m : shading_models())
         for (const ParamSpec& p : m->params) {
             EXPECT_NO_THROW(check_param_value(p, p.default_value)) << m->name << "." << p.name;
+            if (p.compile_time)  // becomes an integer #define
+                EXPECT_TRUE(p.type == ParamType::Bool || p.type == ParamType::Choice) << m->name << "." << p.name;
             EXPECT_FALSE(p.doc.empty()) << m->name << "." << p.name;
         }
 }

@@ -19,7 +19,7 @@ static const ShadingModelRegistration mtoon_model{{
             float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f, "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
             choice_param("convention", {"seeds", "threejs"}, 0,
                          "seeds: values as they are; threejs: 1/pi light units and sRGB output (three-vrm)"),
-            bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)"),
+            compile_time(bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)")),
             float_param("shadow-softness", 1.5f, 0.0f, 4.0f, "PCF filter radius in shadow-map texels"),
         },
 }};
