@@ -35,8 +35,9 @@ TEST(ShadingRegistry, DefaultsLieInTheirRanges) {
     for (const ShadingModel* m : shading_models())
         for (const ParamSpec& p : m->params) {
             EXPECT_NO_THROW(check_param_value(p, p.default_value)) << m->name << "." << p.name;
-            if (p.compile_time)  // becomes an integer #define
+            if (p.compile_time) {  // becomes an integer #define
                 EXPECT_TRUE(p.type == ParamType::Bool || p.type == ParamType::Choice) << m->name << "." << p.name;
+            }
             EXPECT_FALSE(p.doc.empty()) << m->name << "." << p.name;
         }
 }
