@@ -4,8 +4,9 @@
 //   x = normalized_object_pos() * scale: model space, longest bounding-box side = `scale` cells,
 //       so the pattern sticks to the surface and looks the same on any model size or file
 //       format (the seed's screen/size-dependent version broke on OBJ models);
-//   one feature point per unit cell (pcg3d hash of the cell id), F1/F2 = distances to the
-//   nearest / second-nearest point over the 3x3x3 neighbourhood;
+//   one feature point per unit cell (cell_hash of the cell id, within kCellJitter = 0.3 of the
+//   cell centre), F1/F2 = distances to the nearest / second-nearest point over the 2x2x2 cells
+//   whose centres surround x (Gustavson's 2x2x2 search; docs/shading.md for its accuracy);
 //   mode cells:    P = mix(C, palette(hash(id of the F1 cell)), color-mix)
 //   mode distance: P = F1 (grey)
 //   mode isolines: P = C with lines of edge-color at F1 = k * isoline-spacing
@@ -21,32 +22,41 @@ uniform vec3 u_edge_color;
 uniform float u_isoline_spacing;
 uniform int u_lit;
 
-// Colour of a cell: a cosine palette (Quilez) over a hashed hue, with hashed brightness.
+// Colour of a cell: a cosine palette (Quilez) over a hashed hue, with hashed brightness. The
+// three phase-shifted cosines come from one cos/sin pair (cos(a + 2pi/3) etc.).
 vec3 cell_color(ivec3 c) {
-    vec3 h = hash_to_unit(pcg3d(pcg3d(uvec3(c))));
-    vec3 hue = 0.5 + 0.5 * cos(6.2831853 * (h.x + vec3(0.0, 0.333333, 0.666667)));
+    vec2 h = bytes_to_unit(cell_hash_mix(cell_hash(c))).xy;
+    float a = 6.2831853 * h.x, ca = cos(a), sa = sin(a);
+    vec3 hue = 0.5 + 0.5 * vec3(ca, -0.5 * ca - 0.8660254 * sa, -0.5 * ca + 0.8660254 * sa);
     return mix(vec3(0.15), hue, 0.55 + 0.45 * h.y);
 }
 
 void main() {
     Surface s = surface();
     vec3 x = normalized_object_pos() * u_scale;
-    ivec3 base = ivec3(floor(x));
-    float f1 = 1e9, f2 = 1e9;
+    // Feature points lie within kCellJitter of their cell centres (cell_point), so the nearest
+    // one is (almost always: cell_hash.glsl) among the 2x2x2 cells whose centres surround x;
+    // F2 can come from a farther cell, but then it is far from F1 (no edge there).
+    ivec3 base = ivec3(floor(x - 0.5));
+    // Squared distances in the search (one sqrt per feature, not per cell); the cell hash's
+    // per-axis products of neighbouring cells differ by an add (cell_hash.glsl).
+    uvec3 k0 = uvec3(base) * kCellHashMul, k1 = k0 + kCellHashMul;
+    vec3 xf = x - vec3(base);
+    float d1 = 1e18, d2 = 1e18;
     ivec3 id = base;
-    for (int k = -1; k <= 1; ++k)
-        for (int j = -1; j <= 1; ++j)
-            for (int i = -1; i <= 1; ++i) {
-                ivec3 c = base + ivec3(i, j, k);
-                float d = distance(x, cell_point(c));
-                if (d < f1) {
-                    f2 = f1;
-                    f1 = d;
-                    id = c;
-                } else if (d < f2) {
-                    f2 = d;
-                }
+    for (int k = 0; k <= 1; ++k)
+        for (int j = 0; j <= 1; ++j)
+            for (int i = 0; i <= 1; ++i) {
+                ivec3 o = ivec3(i, j, k);
+                uint hc = cell_hash_mix((i == 0 ? k0.x : k1.x) ^ (j == 0 ? k0.y : k1.y) ^ (k == 0 ? k0.z : k1.z));
+                vec3 r = vec3(o) + cell_offset(hc) - xf;
+                float d = dot(r, r);
+                // Insert d into (d1, d2) without branches.
+                d2 = min(d2, max(d1, d));
+                id = d < d1 ? base + o : id;
+                d1 = min(d1, d);
             }
+    float f1 = sqrt(d1), f2 = sqrt(d2);
 
     vec3 p;
     if (u_mode == 0) {

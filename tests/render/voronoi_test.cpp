@@ -210,6 +210,9 @@ TEST_F(Voronoi, EdgesWhereF2MinusF1IsBelowTheWidth) {
     int on_edge = 0, inside = 0;
     for_sampled_pixels(fine_sphere(), {}, 8.0f, [&](int x, int y, const PixelFeatures& f) {
         float e = f.w.f2 - f.w.f1;
+        // Edges are anti-aliased over fwidth(F2 - F1), which grows towards the limb (a pixel
+        // at n.v = 0.25 spans ~0.3 cell units there): check pure colours away from it.
+        if (f.n.z < 0.5f) return false;
         if (e < 0.06f) on_edge += expect_pixel(img, x, y, glm::vec3(1, 0, 1));
         if (e > 0.2f) inside += expect_pixel(img, x, y, voronoi_cell_color(f.w.id));
         return true;
