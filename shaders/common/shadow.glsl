@@ -1,7 +1,7 @@
-// Shadow-map lookup with percentage-closer filtering (Reeves et al. 1987): the fraction of 3x3
-// taps, `softness` texels apart, whose stored depth lies behind the surface point, each tap
-// itself bilinear through the hardware depth comparison (sampler2DShadow, GL_LINEAR). Nine
-// taps keep the cost near one extra texture fetch per tap on llvmpipe.
+// Shadow-map lookup with percentage-closer filtering (Reeves et al. 1987): the mean of 2x2
+// taps, `softness` texels apart, each itself bilinear through the hardware depth comparison
+// (sampler2DShadow, GL_LINEAR), so 16 depth comparisons cover about 3x3 texels. Four taps
+// instead of nine cut mtoon's frame time by 15% on llvmpipe (docs/benchmarks.md).
 // Acne is avoided with a normal offset (the lookup point moves texel_world * normal-offset
 // along n, Holbein 2011) plus a slope-scaled depth bias of the depth pass (glPolygonOffset).
 // INKSHADE_SHADOWS is the model's compile-time `shadows` parameter: a uniform branch would
@@ -23,9 +23,9 @@ float shadow_visibility(vec3 p, vec3 n, vec3 l, float softness_texels) {
     if (any(lessThan(uvz, vec3(0.0))) || any(greaterThan(uvz, vec3(1.0)))) return 1.0;
     vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x)
-            sum += texture(u_shadow_map, vec3(uvz.xy + vec2(x, y) * texel * softness_texels, uvz.z));
-    return sum / 9.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+            sum += texture(u_shadow_map, vec3(uvz.xy + (vec2(x, y) - 0.5) * texel * softness_texels, uvz.z));
+    return 0.25 * sum;
 }
 #endif
