@@ -17,11 +17,7 @@ struct Scene {
 
 Scene make_scene(const std::string& model, glm::vec3 light_dir = {1.0f, 1.0f, 2.0f}) {
     Scene s;
-    s.light.type = LightType::Directional;
-    s.light.target = glm::vec3(0);
-    s.light.position = glm::normalize(light_dir) * 10.0f;
-    s.light.color = glm::vec3(1.0f, 0.95f, 0.9f);
-    s.light.ambient = glm::vec3(0.1f, 0.12f, 0.15f);
+    s.light = directional_light(light_dir, glm::vec3(1.0f, 0.95f, 0.9f), glm::vec3(0.1f, 0.12f, 0.15f));
     s.shading.model = model;
     s.shading.base_color = glm::vec3(0.8f, 0.6f, 0.4f);
     s.options.width = s.options.height = kSize;

@@ -18,11 +18,7 @@ struct Scene {
 
 Scene fresnel_scene(const std::string& mode) {
     Scene s;
-    s.light.type = LightType::Directional;
-    s.light.target = glm::vec3(0);
-    s.light.position = glm::normalize(glm::vec3(1.0f, 1.0f, 2.0f)) * 10.0f;
-    s.light.color = glm::vec3(0.9f);
-    s.light.ambient = glm::vec3(0.1f);
+    s.light = directional_light(glm::vec3(1.0f, 1.0f, 2.0f), glm::vec3(0.9f), glm::vec3(0.1f));
     s.shading.model = "fresnel";
     s.shading.base_color = glm::vec3(0.5f, 0.35f, 0.25f);
     s.shading.params["mode"] = {mode == "add" ? 0.0f : 1.0f};

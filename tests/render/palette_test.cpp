@@ -38,11 +38,7 @@ struct Scene {
 
 Scene make_scene(const PaletteParams& p, glm::vec3 light_dir = {1.0f, 1.0f, 2.0f}) {
     Scene s;
-    s.light.type = LightType::Directional;
-    s.light.target = glm::vec3(0);
-    s.light.position = glm::normalize(light_dir) * 10.0f;
-    s.light.color = glm::vec3(1.0f, 0.9f, 0.8f);
-    s.light.ambient = glm::vec3(0.1f, 0.12f, 0.15f);
+    s.light = directional_light(light_dir, glm::vec3(1.0f, 0.9f, 0.8f), glm::vec3(0.1f, 0.12f, 0.15f));
     s.shading.model = "palette";
     s.shading.base_color = glm::vec3(0.3f);  // unused by palette
     s.shading.params = p.to_params();

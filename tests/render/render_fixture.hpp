@@ -45,6 +45,17 @@ inline Camera ortho_camera() {
     return c;
 }
 
+// A directional light shining from `direction` (towards the light) onto the origin.
+inline Light directional_light(const glm::vec3& direction, const glm::vec3& color, const glm::vec3& ambient) {
+    Light l;
+    l.type = LightType::Directional;
+    l.target = glm::vec3(0);
+    l.position = glm::normalize(direction) * 10.0f;
+    l.color = color;
+    l.ambient = ambient;
+    return l;
+}
+
 // World-space ray through image point (x, y) in pixels (top-left origin, y down) for the
 // orthographic camera above: origin on the near plane, direction -z.
 inline glm::vec3 ray_origin(const Camera& c, float x, float y, int w = kSize, int h = kSize) {

@@ -20,11 +20,7 @@ struct Scene {
 
 Scene stipple_scene(int size) {
     Scene s;
-    s.light.type = LightType::Directional;
-    s.light.target = glm::vec3(0);
-    s.light.position = glm::normalize(glm::vec3(1.0f, 1.0f, 2.0f)) * 10.0f;
-    s.light.color = glm::vec3(0.9f);
-    s.light.ambient = glm::vec3(0.1f);
+    s.light = directional_light(glm::vec3(1.0f, 1.0f, 2.0f), glm::vec3(0.9f), glm::vec3(0.1f));
     s.shading.model = "stipple";
     s.options.width = s.options.height = size;
     s.options.background = glm::vec4(1, 1, 1, 1);

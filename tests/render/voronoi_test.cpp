@@ -28,11 +28,7 @@ struct Scene {
 // Defaults of the test: cells mode, pure cell colours, no edges, unlit.
 Scene voronoi_scene(int mode = 0) {
     Scene s;
-    s.light.type = LightType::Directional;
-    s.light.target = glm::vec3(0);
-    s.light.position = glm::normalize(glm::vec3(1.0f, 1.0f, 2.0f)) * 10.0f;
-    s.light.color = glm::vec3(0.9f);
-    s.light.ambient = glm::vec3(0.1f);
+    s.light = directional_light(glm::vec3(1.0f, 1.0f, 2.0f), glm::vec3(0.9f), glm::vec3(0.1f));
     s.shading.model = "voronoi";
     s.shading.base_color = glm::vec3(0.9f, 0.8f, 0.6f);
     s.shading.params["mode"] = {float(mode)};
