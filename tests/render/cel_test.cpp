@@ -78,13 +78,8 @@ CelParams seed004() {
     return p;
 }
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
+struct Scene : PixelScene {
     CelParams cel;
-
-    glm::vec3 l() const { return glm::normalize(light.position - light.target); }
 };
 
 Scene make_scene(const CelParams& cel, glm::vec3 light_dir = {1.0f, 1.0f, 0.5f}) {

@@ -9,11 +9,7 @@
 namespace inkshade::test {
 namespace {
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
-};
+using Scene = PixelScene;
 
 Scene make_scene(const std::string& model, glm::vec3 light_dir = {1.0f, 1.0f, 2.0f}) {
     Scene s;

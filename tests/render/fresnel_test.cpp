@@ -10,11 +10,7 @@
 namespace inkshade::test {
 namespace {
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
-};
+using Scene = PixelScene;
 
 Scene fresnel_scene(const std::string& mode) {
     Scene s;

@@ -20,12 +20,8 @@ struct GoochParams {
     }
 };
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
+struct Scene : PixelScene {
     GoochParams gooch;
-    glm::vec3 l() const { return glm::normalize(light.position - light.target); }
 };
 
 Scene make_scene(const GoochParams& g, glm::vec3 light_dir = {1.0f, 1.0f, 2.0f}) {

@@ -28,12 +28,8 @@ struct PaletteParams {
     }
 };
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
+struct Scene : PixelScene {
     PaletteParams palette;
-    glm::vec3 l() const { return glm::normalize(light.position - light.target); }
 };
 
 Scene make_scene(const PaletteParams& p, glm::vec3 light_dir = {1.0f, 1.0f, 2.0f}) {

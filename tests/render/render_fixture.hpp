@@ -45,6 +45,14 @@ inline Camera ortho_camera() {
     return c;
 }
 
+// What a pixel test renders: the light, the shading model with its parameters, the image.
+struct PixelScene {
+    Light light;
+    ShadingSelection shading;
+    RenderOptions options;
+    glm::vec3 l() const { return glm::normalize(light.position - light.target); }  // towards the light
+};
+
 // A directional light shining from `direction` (towards the light) onto the origin.
 inline Light directional_light(const glm::vec3& direction, const glm::vec3& color, const glm::vec3& ambient) {
     Light l;

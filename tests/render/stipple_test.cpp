@@ -12,11 +12,7 @@
 namespace inkshade::test {
 namespace {
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
-};
+using Scene = PixelScene;
 
 Scene stipple_scene(int size) {
     Scene s;

@@ -18,10 +18,7 @@
 namespace inkshade::test {
 namespace {
 
-struct Scene {
-    Light light;
-    ShadingSelection shading;
-    RenderOptions options;
+struct Scene : PixelScene {
     Camera camera = ortho_camera();
 };
 
