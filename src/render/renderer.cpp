@@ -81,6 +81,10 @@ struct Renderer::Impl {
     std::map<std::string, std::unique_ptr<gpu::ShaderProgram>> programs;  // by model name
     std::unique_ptr<gpu::Framebuffer> framebuffer;
     std::unique_ptr<render::ShadowPass> shadow;  // created on first use
+    // The shadow map depends only on the mesh and the light: it is kept while both are
+    // unchanged (new views of one model under one light, as batch and the viewer render).
+    bool shadow_valid = false;
+    glm::mat4 shadow_light_view_proj{0.0f};
 
     // One compiled variant per model and compile-time parameter values (#defines, not
     // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
@@ -131,6 +135,7 @@ void Renderer::set_mesh(const Mesh& mesh) {
     impl_->mesh = std::make_unique<render::GpuMesh>(mesh);
     impl_->bounds = mesh.bounds();
     impl_->closed = geometry::is_closed_outward(mesh);
+    impl_->shadow_valid = false;
 }
 
 namespace {
@@ -166,10 +171,14 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     gpu::ShaderProgram& program = impl_->program_for(model, shading.params);
     glm::mat4 light_view_proj(1.0f);
     if (shadows) {
-        PassTimer t(timings, "shadow");
-        if (!impl_->shadow) impl_->shadow = std::make_unique<render::ShadowPass>();
         light_view_proj = render::light_view_projection(light, impl_->bounds);
-        impl_->shadow->render(*impl_->mesh, light_view_proj, impl_->closed);
+        if (!impl_->shadow_valid || light_view_proj != impl_->shadow_light_view_proj) {
+            PassTimer t(timings, "shadow");
+            if (!impl_->shadow) impl_->shadow = std::make_unique<render::ShadowPass>();
+            impl_->shadow->render(*impl_->mesh, light_view_proj, impl_->closed);
+            impl_->shadow_valid = true;
+            impl_->shadow_light_view_proj = light_view_proj;
+        }
     }
 
     {

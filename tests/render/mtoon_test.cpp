@@ -105,7 +105,7 @@ TEST(Mtoon, ShadowMapCausesNoAcneOnConvexLitSide) { EXPECT_GE(compare_sphere(Mto
 // Sphere of radius 0.5 centred 1 above the plane y = 0, light straight down: the shadow on the
 // plane is the disc x^2 + z^2 < 0.25. Pixels of the plane inside it show the shade colour,
 // outside it the lit colour.
-TEST(Mtoon, SphereCastsShadowOnPlaneWhereAnalyticShadowIs) {
+Mesh sphere_over_plane() {
     Mesh scene = builtin::sphere(48, 96, 0.5f);
     for (auto& p : scene.positions) p.y += 1.0f;
     const uint32_t base = uint32_t(scene.positions.size());
@@ -115,7 +115,11 @@ TEST(Mtoon, SphereCastsShadowOnPlaneWhereAnalyticShadowIs) {
     }
     scene.triangles.push_back({base + 0, base + 2, base + 1});  // counter-clockwise seen from +y
     scene.triangles.push_back({base + 0, base + 3, base + 2});
+    return scene;
+}
 
+TEST(Mtoon, SphereCastsShadowOnPlaneWhereAnalyticShadowIs) {
+    const Mesh scene = sphere_over_plane();
     Camera cam;
     cam.eye = glm::vec3(0, 3, 3);
     cam.target = glm::vec3(0, 0, 0);
@@ -163,6 +167,42 @@ TEST(Mtoon, SphereCastsShadowOnPlaneWhereAnalyticShadowIs) {
         }
     EXPECT_GE(inside, 50);
     EXPECT_GE(outside, 50);
+}
+
+// The shadow map is reused while mesh and light stay the same, and rebuilt when either
+// changes: the plane point below the sphere is shadowed under a vertical light, lit under a
+// light from the side, and the first picture comes back byte for byte.
+TEST(Mtoon, ShadowMapFollowsLightAndMeshChanges) {
+    const Mesh scene = sphere_over_plane();
+    Renderer& r = shared_renderer();
+    r.set_mesh(scene);
+    Camera cam = ortho_camera();  // looking down -z: the plane is seen edge-on, so look from above
+    cam.eye = glm::vec3(0, 5, 0.01f);
+    cam.target = glm::vec3(0);
+    cam.up = glm::vec3(0, 0, -1);
+    ShadingSelection sel;
+    sel.model = "mtoon";
+    sel.params = {{"shade-color", {0.0f, 0.0f, 1.0f}}};
+    RenderOptions o;
+    o.width = o.height = 64;
+    auto render_with = [&](glm::vec3 dir) {
+        return r.render(cam, directional_light(dir, glm::vec3(0.8f), glm::vec3(0.1f)), sel, o);
+    };
+    // Reference pictures, each from a freshly set mesh (no map to reuse).
+    Image vertical = render_with({0, 1, 0});
+    r.set_mesh(scene);
+    Image side = render_with({-1, 1, 0});  // shadow of the sphere falls towards +x
+    // Alternating lights on the same mesh must give the same pictures as fresh renders.
+    EXPECT_EQ(render_with({0, 1, 0}).rgba, vertical.rgba) << "stale shadow map after a light change";
+    EXPECT_EQ(render_with({-1, 1, 0}).rgba, side.rgba) << "stale shadow map after a light change";
+    EXPECT_EQ(render_with({-1, 1, 0}).rgba, side.rgba) << "reused shadow map differs";
+    // Pixel over the plane point (1, 0, 0): 2.5 units span 64 px around the origin.
+    const int x = 32 + int(std::lround(1.0f / 2.5f * 64.0f)), y = 32;
+    EXPECT_LT(int(vertical.pixel(x, y)[2]), int(vertical.pixel(x, y)[0]) + 5) << "lit (grey) under vertical light";
+    EXPECT_GT(int(side.pixel(x, y)[2]), int(side.pixel(x, y)[0]) + 100) << "shaded (blue) under side light";
+    r.set_mesh(builtin::sphere(16, 32, 0.5f));  // a new mesh invalidates the map: no stale shadow
+    Image alone = render_with({-1, 1, 0});
+    EXPECT_EQ(int(alone.pixel(x, y)[0]), 255);  // background: nothing there, and no crash
 }
 
 }  // namespace
