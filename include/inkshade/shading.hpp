@@ -66,6 +66,9 @@ struct ShadingModel {
     const ParamSpec* param(const std::string& name) const;
 };
 
+// The value given for `spec` in `values`, else its default.
+const ParamValue& value_or_default(const ParamSpec& spec, const ParamValues& values);
+
 // All registered models: shading models alphabetically, then debug views.
 std::vector<const ShadingModel*> shading_models();
 // Throws InputError("unknown shading model 'x' (choose ...)") when absent.

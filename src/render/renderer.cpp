@@ -51,8 +51,7 @@ private:
 void upload_params(gpu::ShaderProgram& program, const ShadingModel& model, const ParamValues& values) {
     for (const ParamSpec& spec : model.params) {
         if (spec.compile_time) continue;  // a #define of the program variant
-        auto it = values.find(spec.name);
-        const ParamValue& v = it != values.end() ? it->second : spec.default_value;
+        const ParamValue& v = value_or_default(spec, values);
         const std::string u = uniform_name(spec.name);
         switch (spec.type) {
             case ParamType::Float: program.set(u, v.at(0)); break;
@@ -93,8 +92,7 @@ struct Renderer::Impl {
         std::string defines;
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
-            auto it = values.find(spec.name);
-            const ParamValue& v = it != values.end() ? it->second : spec.default_value;
+            const ParamValue& v = value_or_default(spec, values);
             std::string macro = "INKSHADE_" + spec.name;
             for (char& c : macro) c = c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
             defines += "#define " + macro + " " + std::to_string(int(v.at(0))) + "\n";
@@ -163,11 +161,9 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     const float aspect = float(options.width) / float(options.height);
 
     // Shadow map for models that cast shadows, when their "shadows" parameter is on.
-    auto shadows_param = shading.params.find("shadows");
     const ParamSpec* shadows_spec = model.param("shadows");
-    const bool shadows = model.shadow_map && shadows_spec &&
-                         (shadows_param != shading.params.end() ? shadows_param->second : shadows_spec->default_value)
-                                 .at(0) != 0.0f;
+    const bool shadows =
+        model.shadow_map && shadows_spec && value_or_default(*shadows_spec, shading.params).at(0) != 0.0f;
     gpu::ShaderProgram& program = impl_->program_for(model, shading.params);
     glm::mat4 light_view_proj(1.0f);
     if (shadows) {

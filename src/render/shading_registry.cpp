@@ -74,6 +74,11 @@ ParamSpec list_param(std::string name, std::vector<float> values, int max_count,
     return {std::move(name), ParamType::FloatList, std::move(values), min, max, std::move(doc), {}, max_count};
 }
 
+const ParamValue& value_or_default(const ParamSpec& spec, const ParamValues& values) {
+    auto it = values.find(spec.name);
+    return it != values.end() ? it->second : spec.default_value;
+}
+
 ParamSpec compile_time(ParamSpec spec) {
     spec.compile_time = true;
     return spec;

@@ -214,8 +214,7 @@ std::string format_style(const Style& style) {
     }
     out << "\n[shading]\nmodel = " << toml_string(model.name) << "\n";
     for (const ParamSpec& p : model.params) {
-        auto it = style.shading.params.find(p.name);
-        const ParamValue& v = it != style.shading.params.end() ? it->second : p.default_value;
+        const ParamValue& v = value_or_default(p, style.shading.params);
         out << p.name << " = ";
         switch (p.type) {
             case ParamType::Bool: out << (v.at(0) != 0.0f ? "true" : "false"); break;
