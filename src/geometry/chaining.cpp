@@ -1,0 +1,86 @@
+// Chaining: nodes are edge keys, segments are graph edges. A hash map numbers the nodes, a
+// counting pass builds compressed adjacency (CSR) in segment order, then each segment is
+// walked once — O(n) overall, and the order depends only on the input order.
+#include "geometry/chaining.hpp"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+
+namespace inkshade::geometry {
+
+std::vector<Polyline> chain_segments(const std::vector<ContourSegment>& segments) {
+    const size_t n = segments.size();
+    std::unordered_map<uint64_t, uint32_t> node_of;
+    node_of.reserve(2 * n);
+    std::vector<std::array<uint32_t, 2>> seg_node(n);
+    std::vector<char> used(n, 0);
+    std::vector<uint32_t> degree;
+    auto node = [&](uint64_t key) {
+        const auto [it, inserted] = node_of.try_emplace(key, uint32_t(degree.size()));
+        if (inserted) degree.push_back(0);
+        return it->second;
+    };
+    for (size_t s = 0; s < n; ++s) {
+        if (segments[s].edge_a == segments[s].edge_b) {
+            used[s] = 1;  // no direction: dropped
+            continue;
+        }
+        seg_node[s] = {node(segments[s].edge_a), node(segments[s].edge_b)};
+        ++degree[seg_node[s][0]];
+        ++degree[seg_node[s][1]];
+    }
+
+    // Incidences (segment, end) per node, in segment order.
+    std::vector<size_t> first(degree.size() + 1, 0);
+    for (size_t v = 0; v < degree.size(); ++v) first[v + 1] = first[v] + degree[v];
+    std::vector<std::pair<uint32_t, uint8_t>> incidence(first.back());
+    std::vector<size_t> fill(first.begin(), first.end() - 1);
+    for (size_t s = 0; s < n; ++s) {
+        if (used[s]) continue;
+        for (uint8_t e = 0; e < 2; ++e) incidence[fill[seg_node[s][e]]++] = {uint32_t(s), e};
+    }
+
+    auto point = [&](uint32_t s, uint8_t e) { return e == 0 ? segments[s].a : segments[s].b; };
+
+    // Walks from segment s's end e through nodes of degree two until a chain end or a used
+    // segment (back at the start of a loop).
+    auto walk = [&](uint32_t s, uint8_t e) {
+        Polyline line;
+        const uint32_t start = seg_node[s][e];
+        line.points.push_back(point(s, e));
+        for (;;) {
+            used[s] = 1;
+            const uint8_t other = uint8_t(1 - e);
+            const uint32_t v = seg_node[s][other];
+            line.points.push_back(point(s, other));
+            if (degree[v] != 2) break;
+            auto next = incidence[first[v]];
+            if (next.first == s && next.second == other) next = incidence[first[v] + 1];
+            if (used[next.first]) {
+                if (v == start) {
+                    line.closed = true;
+                    line.points.pop_back();  // the start point is not repeated
+                }
+                break;
+            }
+            s = next.first;
+            e = next.second;
+        }
+        return line;
+    };
+
+    std::vector<Polyline> out;
+    for (uint32_t s = 0; s < n; ++s)
+        for (uint8_t e = 0; e < 2; ++e)
+            if (!used[s] && degree[seg_node[s][e]] != 2) {
+                Polyline line = walk(s, e);
+                if (e == 1) std::reverse(line.points.begin(), line.points.end());
+                out.push_back(std::move(line));
+            }
+    for (uint32_t s = 0; s < n; ++s)
+        if (!used[s]) out.push_back(walk(s, 0));
+    return out;
+}
+
+}  // namespace inkshade::geometry
