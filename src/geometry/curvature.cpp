@@ -323,6 +323,7 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
         },
         [&](size_t i, const CornerValues& cv) {
             const glm::uvec3 f = tris[i];
+            if (!usable_indices(f)) return;  // out-of-range indices: nothing to add, nowhere to add it
             for (int j = 0; j < 3; ++j)
                 out.dcurv[f[j]] += glm::vec4(cv[4 * j], cv[4 * j + 1], cv[4 * j + 2], cv[4 * j + 3]);
         });
