@@ -148,18 +148,21 @@ struct Rotation {
 using CornerValues = std::array<float, 12>;
 
 // Runs `face(i, values)` for the faces in chunks, in parallel, and then `scatter(i, values)` for
-// each face of the chunk in face order. The chunk buffer stays in cache and is reused, so the
-// per-face results never make a round trip through main memory.
+// each face of the chunk, in face order, for which `face` returned true (it contributed). The
+// chunk buffer stays in cache and is reused, so the per-face results never make a round trip
+// through main memory.
 template <class Face, class Scatter>
 void for_each_face_chunk(size_t nf, const Face& face, const Scatter& scatter) {
     constexpr size_t kChunk = size_t(1) << 15;
     std::vector<CornerValues> buffer(std::min(nf, kChunk));
+    std::vector<uint8_t> contributed(buffer.size());
     for (size_t begin = 0; begin < nf; begin += kChunk) {
         const size_t end = std::min(nf, begin + kChunk);
         tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, kGrain / 4), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i != r.end(); ++i) face(i, buffer[i - begin]);
+            for (size_t i = r.begin(); i != r.end(); ++i) contributed[i - begin] = face(i, buffer[i - begin]);
         });
-        for (size_t i = begin; i != end; ++i) scatter(i, buffer[i - begin]);
+        for (size_t i = begin; i != end; ++i)
+            if (contributed[i - begin]) scatter(i, buffer[i - begin]);
     }
 }
 
@@ -203,18 +206,24 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
         return f.x < nv && f.y < nv && f.z < nv && f.x != f.y && f.y != f.z && f.z != f.x &&
                normal[f.x] != glm::vec3(0.0f) && normal[f.y] != glm::vec3(0.0f) && normal[f.z] != glm::vec3(0.0f);
     };
+    // Face i's frame and corner areas, or false for a face both passes skip (bad indices, zero
+    // normals, zero area, non-finite frame).
+    const auto usable_face = [&](size_t i, FaceFrame& fr, glm::vec3& ca) {
+        if (!usable_indices(tris[i])) return false;
+        fr = face_frame(p, tris[i]);
+        ca = usable_corner_areas(fr);
+        return ca != glm::vec3(0.0f);
+    };
 
     // Pass 1: second fundamental form per face, rotated into each corner's vertex frame.
     // values = (3 corner areas, then area-weighted (ku, kuv, kv) per corner).
     for_each_face_chunk(
         nf,
         [&](size_t i, CornerValues& cv) {
-            cv.fill(0.0f);
+            FaceFrame fr;
+            glm::vec3 ca;
+            if (!usable_face(i, fr, ca)) return false;
             const glm::uvec3 f = tris[i];
-            if (!usable_indices(f)) return;
-            const FaceFrame fr = face_frame(p, f);
-            const glm::vec3 ca = usable_corner_areas(fr);
-            if (ca == glm::vec3(0.0f)) return;
 
             // Least squares for II = [[ku, kuv], [kuv, kv]] from II·(u, v) = (dnu, dnv) on each edge.
             float uu = 0, uv = 0, vv = 0;
@@ -228,9 +237,9 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
                 m[1] += dnu * v + dnv * u;
                 m[2] += dnv * v;
             }
-            if (!solve_tridiagonal<3>({uu, uu + vv, vv}, {uv, uv}, m)) return;
+            if (!solve_tridiagonal<3>({uu, uu + vv, vv}, {uv, uv}, m)) return false;
             const glm::vec3 ii{m[0], m[1], m[2]};
-            if (!finite(ii)) return;
+            if (!finite(ii)) return false;
 
             for (int j = 0; j < 3; ++j) {
                 const uint32_t v = f[j];
@@ -239,10 +248,10 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
                 cv[j] = ca[j];
                 cv[3 + 3 * j] = k[0], cv[4 + 3 * j] = k[1], cv[5 + 3 * j] = k[2];
             }
+            return true;
         },
         [&](size_t i, const CornerValues& cv) {
             const glm::uvec3 f = tris[i];
-            if (cv[0] == 0.0f) return;  // unusable (a usable face has three positive corner areas)
             for (int j = 0; j < 3; ++j) {
                 out.point_area[f[j]] += cv[j];
                 out.dcurv[f[j]] += glm::vec4(cv[3 + 3 * j], cv[4 + 3 * j], cv[5 + 3 * j], 0.0f);
@@ -282,12 +291,10 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
     for_each_face_chunk(
         nf,
         [&](size_t i, CornerValues& cv) {
-            cv.fill(0.0f);
+            FaceFrame fr;
+            glm::vec3 ca;
+            if (!usable_face(i, fr, ca)) return false;
             const glm::uvec3 f = tris[i];
-            if (!usable_indices(f)) return;
-            const FaceFrame fr = face_frame(p, f);
-            const glm::vec3 ca = usable_corner_areas(fr);
-            if (ca == glm::vec3(0.0f)) return;
 
             // r[j]: the face frame rotated into vertex j's tangent plane, in its principal frame.
             // The inverse rotation (vertex frame into the face plane, in the face frame) is its
@@ -312,18 +319,18 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
                 m[2] += 2.0f * v * d[1] + u * d[2];
                 m[3] += v * d[2];
             }
-            if (!solve_tridiagonal<4>({uu, 2.0f * uu + vv, uu + 2.0f * vv, vv}, {uv, 2.0f * uv, uv}, m)) return;
+            if (!solve_tridiagonal<4>({uu, 2.0f * uu + vv, uu + 2.0f * vv, vv}, {uv, 2.0f * uv, uv}, m)) return false;
             const glm::vec4 dc{m[0], m[1], m[2], m[3]};
-            if (!finite(dc)) return;
+            if (!finite(dc)) return false;
             for (int j = 0; j < 3; ++j) {
                 const Rotation back{r[j].u1, r[j].u2, r[j].v1, r[j].v2};
                 const glm::vec4 d = ca[j] * rotate_derivative(dc, back);
                 for (int k = 0; k < 4; ++k) cv[4 * j + k] = d[k];
             }
+            return true;
         },
         [&](size_t i, const CornerValues& cv) {
             const glm::uvec3 f = tris[i];
-            if (!usable_indices(f)) return;  // out-of-range indices: nothing to add, nowhere to add it
             for (int j = 0; j < 3; ++j)
                 out.dcurv[f[j]] += glm::vec4(cv[4 * j], cv[4 * j + 1], cv[4 * j + 2], cv[4 * j + 3]);
         });
