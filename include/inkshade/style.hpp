@@ -1,5 +1,5 @@
-// Styles: a shading model with its parameters, light colours, background and (in later
-// versions) line types, read from human-editable TOML preset files. The built-in styles are
+// Styles: a shading model with its parameters, light colours, background and line types
+// (inkshade/lines.hpp), read from human-editable TOML preset files. The built-in styles are
 // such files embedded in the binary (src/styles/presets/), plus one per shading model.
 #pragma once
 #include <optional>
@@ -7,14 +7,10 @@
 #include <string_view>
 #include <vector>
 
+#include "inkshade/lines.hpp"
 #include "inkshade/renderer.hpp"
 
 namespace inkshade {
-
-struct LineSettings {
-    std::string type;    // line type name ([[lines]] tables of a style file)
-    ParamValues params;
-};
 
 struct Style {
     std::string name;
@@ -23,7 +19,7 @@ struct Style {
     std::optional<glm::vec3> light_color;  // E; unset = the renderer's default
     std::optional<glm::vec3> ambient;      // A; unset = the renderer's default
     glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
-    std::vector<LineSettings> lines;       // empty until line types exist
+    std::vector<LineSettings> lines;       // drawn in this order, each type at most once
 };
 
 // Sets the light colour and ambient the style asks for (others stay as they are).

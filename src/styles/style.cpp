@@ -107,6 +107,48 @@ std::string color_text(glm::vec4 c, bool with_alpha = false) {
     return s + "\"";
 }
 
+// One [[lines]] table: type = "NAME" and that type's parameters.
+LineSettings parse_line_settings(const toml::table& table, const std::string& source) {
+    auto type_name = table["type"].value<std::string>();
+    if (!type_name) throw InputError(source, "every [[lines]] table needs type = \"NAME\"");
+    const LineType* type = nullptr;
+    try {
+        type = &line_type(*type_name);
+    } catch (const InputError& e) {
+        throw InputError(source, e.what());
+    }
+    LineSettings settings{type->name, {}};
+    for (const auto& [key, node] : table) {
+        const std::string k(key.str());
+        if (k == "type") continue;
+        const ParamSpec* spec = type->param(k);
+        if (!spec) {
+            std::string names;
+            for (const auto& p : type->params) names += (names.empty() ? "" : ", ") + p.name;
+            throw InputError(source, "line type '" + type->name + "' has no parameter '" + k + "' (it has " + names + ")");
+        }
+        settings.params[spec->name] = param_value(*spec, node, source);
+    }
+    return settings;
+}
+
+// `name = value  # doc` for every parameter, values written as parse_style reads them.
+void write_params(std::ostream& out, const std::vector<ParamSpec>& params, const ParamValues& values) {
+    for (const ParamSpec& p : params) {
+        const ParamValue& v = value_or_default(p, values);
+        out << p.name << " = ";
+        switch (p.type) {
+            case ParamType::Bool: out << (v.at(0) != 0.0f ? "true" : "false"); break;
+            case ParamType::Float:
+            case ParamType::Int: out << format_param_value(p, v); break;
+            case ParamType::FloatList: out << "[" << format_param_value(p, v) << "]"; break;
+            case ParamType::Choice:
+            case ParamType::Color: out << toml_string(format_param_value(p, v)); break;
+        }
+        out << "  # " << p.doc << "\n";
+    }
+}
+
 }  // namespace
 
 void apply_style_light(const Style& style, Light& light) {
@@ -165,9 +207,12 @@ Style parse_style(std::string_view text, const std::string& source) {
 
     if (auto* lines = root["lines"].as_array()) {
         for (const auto& entry : *lines) {
-            auto type = entry.as_table() ? (*entry.as_table())["type"].value<std::string>() : std::nullopt;
-            throw InputError(source, "unknown line type '" + type.value_or("?") +
-                                         "' (this version has no line types yet)");
+            const toml::table* table = entry.as_table();
+            if (!table) throw InputError(source, "lines must be an array of tables ([[lines]])");
+            style.lines.push_back(parse_line_settings(*table, source));
+            for (size_t i = 0; i + 1 < style.lines.size(); ++i)
+                if (style.lines[i].type == style.lines.back().type)
+                    throw InputError(source, "line type '" + style.lines.back().type + "' is listed twice");
         }
     } else if (root.contains("lines")) {
         throw InputError(source, "lines must be an array of tables ([[lines]])");
@@ -213,18 +258,10 @@ std::string format_style(const Style& style) {
         if (style.ambient) out << "ambient = " << color_text(glm::vec4(*style.ambient, 1.0f)) << "\n";
     }
     out << "\n[shading]\nmodel = " << toml_string(model.name) << "\n";
-    for (const ParamSpec& p : model.params) {
-        const ParamValue& v = value_or_default(p, style.shading.params);
-        out << p.name << " = ";
-        switch (p.type) {
-            case ParamType::Bool: out << (v.at(0) != 0.0f ? "true" : "false"); break;
-            case ParamType::Float:
-            case ParamType::Int: out << format_param_value(p, v); break;
-            case ParamType::FloatList: out << "[" << format_param_value(p, v) << "]"; break;
-            case ParamType::Choice:
-            case ParamType::Color: out << toml_string(format_param_value(p, v)); break;
-        }
-        out << "  # " << p.doc << "\n";
+    write_params(out, model.params, style.shading.params);
+    for (const LineSettings& l : style.lines) {
+        out << "\n[[lines]]\ntype = " << toml_string(l.type) << "\n";
+        write_params(out, line_type(l.type).params, l.params);
     }
     return out.str();
 }

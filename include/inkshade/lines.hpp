@@ -1,0 +1,57 @@
+// Line types: a registry of named line types, each with a parameter table (inkshade/params.hpp)
+// like the shading models. A style lists the line types it draws ([[lines]] tables); each type
+// registers itself from the file that implements it, so adding one touches nothing else.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "inkshade/params.hpp"
+
+namespace inkshade {
+
+enum class LineSpace {
+    Image,   // raster lines found per pixel on the GPU (hull, rim-contour, edges, ...)
+    Object,  // vector polylines from the mesh (contour, suggestive, crease, ...): SVG and strokes
+};
+
+struct LineType {
+    std::string name;     // as written in [[lines]] type = "..." and --lines
+    std::string summary;  // one line: what it draws and where the definition comes from
+    LineSpace space = LineSpace::Image;
+    std::vector<ParamSpec> params;  // stroke_params(...) first, then the type's own
+
+    const ParamSpec* param(const std::string& name) const;
+};
+
+// The stroke parameters every line type has: "color", "opacity" and "width" (pixels).
+std::vector<ParamSpec> stroke_params(glm::vec3 color, float width_px);
+
+// One line type of a style with its parameter values (missing names take the defaults).
+struct LineSettings {
+    std::string type;
+    ParamValues params;
+};
+
+// The stroke every line type has, resolved from its settings (defaults filled in).
+struct Stroke {
+    glm::vec3 color{0.0f};
+    float opacity = 1.0f;
+    float width = 1.0f;  // pixels
+};
+Stroke stroke_of(const LineSettings& settings);
+
+// All registered line types, alphabetically.
+std::vector<const LineType*> line_types();
+// Throws InputError("unknown line type 'x' (choose ...)") when absent.
+const LineType& line_type(const std::string& name);
+
+// The value of parameter `name` of `settings` (given or default); throws std::logic_error when
+// the type has no such parameter (a programming error, not bad input).
+const ParamValue& line_param(const LineSettings& settings, const std::string& name);
+
+// Registration helper: `static const LineTypeRegistration reg{{...}};` in the type's file.
+struct LineTypeRegistration {
+    explicit LineTypeRegistration(LineType type);
+};
+
+}  // namespace inkshade
