@@ -9,7 +9,7 @@
 
 namespace inkshade::geometry {
 
-std::vector<Polyline> chain_segments(const std::vector<ContourSegment>& segments) {
+std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
     const size_t n = segments.size();
     std::unordered_map<uint64_t, uint32_t> node_of;
     node_of.reserve(2 * n);
@@ -41,19 +41,22 @@ std::vector<Polyline> chain_segments(const std::vector<ContourSegment>& segments
         for (uint8_t e = 0; e < 2; ++e) incidence[fill[seg_node[s][e]]++] = {uint32_t(s), e};
     }
 
-    auto point = [&](uint32_t s, uint8_t e) { return e == 0 ? segments[s].a : segments[s].b; };
+    auto add = [&](Polyline& line, uint32_t s, uint8_t e) {
+        line.points.push_back(e == 0 ? segments[s].a : segments[s].b);
+        line.strength.push_back(e == 0 ? segments[s].strength_a : segments[s].strength_b);
+    };
 
     // Walks from segment s's end e through nodes of degree two until a chain end or a used
     // segment (back at the start of a loop).
     auto walk = [&](uint32_t s, uint8_t e) {
         Polyline line;
         const uint32_t start = seg_node[s][e];
-        line.points.push_back(point(s, e));
+        add(line, s, e);
         for (;;) {
             used[s] = 1;
             const uint8_t other = uint8_t(1 - e);
             const uint32_t v = seg_node[s][other];
-            line.points.push_back(point(s, other));
+            add(line, s, other);
             if (degree[v] != 2) break;
             auto next = incidence[first[v]];
             if (next.first == s && next.second == other) next = incidence[first[v] + 1];
@@ -61,6 +64,7 @@ std::vector<Polyline> chain_segments(const std::vector<ContourSegment>& segments
                 if (v == start) {
                     line.closed = true;
                     line.points.pop_back();  // the start point is not repeated
+                    line.strength.pop_back();
                 }
                 break;
             }
@@ -75,12 +79,47 @@ std::vector<Polyline> chain_segments(const std::vector<ContourSegment>& segments
         for (uint8_t e = 0; e < 2; ++e)
             if (!used[s] && degree[seg_node[s][e]] != 2) {
                 Polyline line = walk(s, e);
-                if (e == 1) std::reverse(line.points.begin(), line.points.end());
+                if (e == 1) {
+                    std::reverse(line.points.begin(), line.points.end());
+                    std::reverse(line.strength.begin(), line.strength.end());
+                }
                 out.push_back(std::move(line));
             }
     for (uint32_t s = 0; s < n; ++s)
         if (!used[s]) out.push_back(walk(s, 0));
     return out;
+}
+
+float polyline_length(const Polyline& line) {
+    const auto& p = line.points;
+    double length = 0.0;
+    for (size_t i = 1; i < p.size(); ++i) length += glm::distance(glm::dvec3(p[i - 1]), glm::dvec3(p[i]));
+    if (line.closed && p.size() > 2) length += glm::distance(glm::dvec3(p.back()), glm::dvec3(p.front()));
+    return float(length);
+}
+
+std::vector<Polyline> drop_short(std::vector<Polyline> polylines, float min_length) {
+    std::erase_if(polylines, [&](const Polyline& l) { return !(polyline_length(l) >= min_length); });
+    return polylines;
+}
+
+void smooth_polylines(std::vector<Polyline>& polylines, int iterations, float weight) {
+    std::vector<glm::vec3> next;
+    for (Polyline& line : polylines) {
+        auto& p = line.points;
+        const size_t n = p.size();
+        if (n < 3) continue;  // nothing between fixed ends (or too short a loop to smooth)
+        for (int it = 0; it < iterations; ++it) {
+            next = p;  // Jacobi update: every point moves from the same old neighbours
+            const size_t first = line.closed ? 0 : 1, last = line.closed ? n : n - 1;
+            for (size_t i = first; i < last; ++i) {
+                const glm::vec3& prev = p[(i + n - 1) % n];
+                const glm::vec3& succ = p[(i + 1) % n];
+                next[i] = p[i] + weight * (0.5f * (prev + succ) - p[i]);
+            }
+            p.swap(next);
+        }
+    }
 }
 
 }  // namespace inkshade::geometry

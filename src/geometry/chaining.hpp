@@ -1,4 +1,6 @@
-// Chaining line segments into polylines by the mesh edge each endpoint lies on.
+// Chaining line segments into polylines by the node key each endpoint carries (a mesh edge for
+// isolines, a vertex for crease and border edges), then the clean-ups a drawing wants: dropping
+// tiny chains and smoothing.
 #pragma once
 #include <vector>
 
@@ -8,17 +10,36 @@ namespace inkshade::geometry {
 
 struct Polyline {
     std::vector<glm::vec3> points;  // a closed polyline does not repeat its first point
+    std::vector<float> strength;    // per point, parallel to points (segment end strengths)
     bool closed = false;
 };
 
-// Joins segments that share an edge key into polylines, in O(n) (hash map from edge key to
-// segment ends). A node (edge key) with one segment end, or more than two (non-manifold), ends
-// a chain; chains through nodes of degree two only are closed loops. Output order is
+// Joins segments that share a node key into polylines, in O(n) (hash map from key to segment
+// ends). A node with one segment end, or more than two (non-manifold, crease junction), ends a
+// chain; chains through nodes of degree two only are closed loops. Output order is
 // deterministic: first the open chains, in the order of the first segment end (by segment
 // index, a before b) at a chain-ending node; then the loops, by their lowest segment index.
 // Each polyline runs along its first segment's a → b direction (an open chain walked from that
 // segment's b end is reversed), so on a consistently oriented mesh a contour keeps the
-// front-facing side on its left. Segments whose two ends share a key are dropped.
-std::vector<Polyline> chain_segments(const std::vector<ContourSegment>& segments);
+// front-facing side on its left. A point takes the strength of the segment end it came from.
+// Segments whose two ends share a key are dropped.
+std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments);
+
+// Polyline length in the units of its points, the closing step of a loop included.
+float polyline_length(const Polyline& line);
+
+// Removes polylines shorter than min_length (world units, or whatever the points are in — a
+// caller may pass projected points to drop by pixels): the specks that noise in curvature
+// leaves behind (DeCarlo et al. 2003 §4 discard short suggestive-contour pieces likewise).
+// Order of the kept polylines is unchanged.
+std::vector<Polyline> drop_short(std::vector<Polyline> polylines, float min_length);
+
+// Laplacian smoothing of each polyline's points, `iterations` times, moving each point by
+// `weight` (0..1) towards the midpoint of its neighbours; the two ends of an open polyline stay
+// fixed so chains still meet at junctions. Removes the small zig-zag that per-face linear
+// interpolation of noisy values leaves; a loop shrinks by about weight·(1 − cos(2π/n)) of its
+// radius per iteration, negligible for the hundreds of points a contour has. Strengths are
+// not changed.
+void smooth_polylines(std::vector<Polyline>& polylines, int iterations, float weight = 0.5f);
 
 }  // namespace inkshade::geometry

@@ -21,38 +21,31 @@ constexpr size_t kGrain = 16384;  // faces (or vertices) per TBB task: small mes
 
 bool valid(const glm::uvec3& t, size_t n) { return t.x < n && t.y < n && t.z < n; }
 
-// Unit vector towards the viewer at p; zero where it has no direction (p at the eye).
-struct ViewVector {
-    glm::dvec3 eye;
-    glm::dvec3 ortho_dir;  // −view direction, used when orthographic
-    bool orthographic;
+}  // namespace
 
-    explicit ViewVector(const Camera& camera)
-        : eye(camera.eye), orthographic(camera.orthographic) {
-        const glm::dvec3 d = glm::dvec3(camera.eye) - glm::dvec3(camera.target);
-        const double len = glm::length(d);
-        ortho_dir = len > 0.0 && std::isfinite(len) ? d / len : glm::dvec3(0.0, 0.0, 1.0);
-    }
-
-    glm::dvec3 at(const glm::vec3& p) const {
-        if (orthographic) return ortho_dir;
-        const glm::dvec3 d = eye - glm::dvec3(p);
-        const double len = glm::length(d);
-        return len > 0.0 && std::isfinite(len) ? d / len : glm::dvec3(0.0);
-    }
-};
-
-// The crossing of g = 0 on the edge (i, j), computed from the ordered pair (min, max) so that
-// every face sharing the edge gets the same bits.
-glm::vec3 crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i, uint32_t j) {
-    if (j < i) std::swap(i, j);
-    const double gi = g[i], gj = g[j];
-    const double t = gi / (gi - gj);  // signs differ, so gi − gj ≠ 0 and t ∈ [0, 1]
-    const glm::dvec3 pi(mesh.positions[i]), pj(mesh.positions[j]);
-    return glm::vec3(pi + t * (pj - pi));
+ViewVector::ViewVector(const Camera& camera) : eye_(camera.eye), orthographic_(camera.orthographic) {
+    const glm::dvec3 d = glm::dvec3(camera.eye) - glm::dvec3(camera.target);
+    const double len = glm::length(d);
+    ortho_dir_ = len > 0.0 && std::isfinite(len) ? d / len : glm::dvec3(0.0, 0.0, 1.0);
 }
 
-}  // namespace
+glm::dvec3 ViewVector::at(const glm::vec3& p) const {
+    if (orthographic_) return ortho_dir_;
+    const glm::dvec3 d = eye_ - glm::dvec3(p);
+    const double len = glm::length(d);
+    return len > 0.0 && std::isfinite(len) ? d / len : glm::dvec3(0.0);
+}
+
+EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i,
+                                uint32_t j) {
+    if (j < i) std::swap(i, j);
+    const double gi = g[i], gj = g[j];
+    EdgeCrossing c;
+    c.t = gi / (gi - gj);  // signs differ, so gi − gj ≠ 0 and t ∈ [0, 1]
+    const glm::dvec3 pi(mesh.positions[i]), pj(mesh.positions[j]);
+    c.p = glm::vec3(pi + c.t * (pj - pi));
+    return c;
+}
 
 std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                                    const Camera& camera) {
@@ -69,14 +62,13 @@ std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3
     return g;
 }
 
-std::vector<ContourSegment> extract_contours(const Mesh& mesh,
-                                             const std::vector<glm::vec3>& normals,
-                                             const Camera& camera) {
+std::vector<LineSegment> extract_contours(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                          const Camera& camera) {
     const std::vector<float> g = view_dot_normal(mesh, normals, camera);
     const auto& tris = mesh.triangles;
     const size_t n = mesh.positions.size();
     const size_t blocks = (tris.size() + kGrain - 1) / kGrain;
-    std::vector<std::vector<ContourSegment>> found(blocks);
+    std::vector<std::vector<LineSegment>> found(blocks);
 
     tbb::parallel_for(size_t(0), blocks, [&](size_t block) {
         const size_t end = std::min(tris.size(), (block + 1) * kGrain);
@@ -88,13 +80,13 @@ std::vector<ContourSegment> extract_contours(const Mesh& mesh,
             // k: the vertex whose sign differs from the other two.
             const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);
             const uint32_t vk = t[k], vnext = t[(k + 1) % 3], vprev = t[(k + 2) % 3];
-            ContourSegment s;
+            LineSegment s;
             s.face = uint32_t(f);
             s.edge_a = edge_key(vk, vnext);
             s.edge_b = edge_key(vprev, vk);
             if (s.edge_a == s.edge_b) continue;  // repeated index: no segment
-            s.a = crossing(mesh, g, vk, vnext);
-            s.b = crossing(mesh, g, vprev, vk);
+            s.a = edge_zero_crossing(mesh, g, vk, vnext).p;
+            s.b = edge_zero_crossing(mesh, g, vprev, vk).p;
             // Triangle (k, a, b) is counter-clockwise, so k lies left of a → b: keep g ≥ 0 left.
             if (!pos[k]) {
                 std::swap(s.a, s.b);
@@ -106,7 +98,7 @@ std::vector<ContourSegment> extract_contours(const Mesh& mesh,
 
     size_t total = 0;
     for (const auto& list : found) total += list.size();
-    std::vector<ContourSegment> out;
+    std::vector<LineSegment> out;
     out.reserve(total);
     for (const auto& list : found) out.insert(out.end(), list.begin(), list.end());
     return out;

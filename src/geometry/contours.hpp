@@ -16,30 +16,70 @@ constexpr uint64_t edge_key(uint32_t i, uint32_t j) {
     return i < j ? (uint64_t(i) << 32) | j : (uint64_t(j) << 32) | i;
 }
 
-// One piece of the zero set of g inside a face: from the crossing on mesh edge `edge_a` to the
-// crossing on `edge_b` (edge_a != edge_b). A crossing is computed from its edge alone, so the
-// segments of two faces sharing an edge have bit-identical endpoints there. On a consistently
-// oriented mesh, walking a → b keeps the front-facing side (g ≥ 0) on the left seen from the
-// outside (the face's counter-clockwise side).
-struct ContourSegment {
+// Key of the chain node at mesh vertex v, for lines made of whole mesh edges (creases,
+// borders): edge_key(v, v), which no proper edge (i ≠ j) has.
+constexpr uint64_t vertex_key(uint32_t v) { return edge_key(v, v); }
+
+// Key of a segment end strictly inside face f (a line trimmed by a threshold there); `end`
+// (0 or 1) tells the two ends of one face apart. The high word exceeds the low word, which
+// edge and vertex keys never do, so such an end meets no other segment and ends its chain.
+constexpr uint64_t face_interior_key(uint32_t f, uint32_t end) {
+    return (uint64_t(0xffffffffu - end) << 32) | f;
+}
+
+// One straight piece of a line, shared by every line type (contour, suggestive, crease,
+// border, ridge) so one chainer and one visibility test serve them all. The ends carry node
+// keys: for isolines (contour, suggestive, ridge) the mesh edge the end lies on, computed from
+// that edge alone so that the segments of two faces sharing the edge have bit-identical
+// endpoints and strengths there; for edge lines (crease, border) vertex_key of the end vertex;
+// face_interior_key for an end where a threshold cut the line inside a face. For contours, on
+// a consistently oriented mesh, walking a → b keeps the front-facing side (g ≥ 0) on the left
+// seen from the outside (the face's counter-clockwise side).
+struct LineSegment {
     glm::vec3 a{0.0f}, b{0.0f};
-    uint64_t edge_a = 0, edge_b = 0;
-    uint32_t face = 0;
+    uint64_t edge_a = 0, edge_b = 0;  // node keys of a and b (edge_a != edge_b)
+    uint32_t face = 0;                // the face the segment crosses (edge lines: lowest incident face)
+    float strength_a = 1.0f, strength_b = 1.0f;  // in [0, 1], for fading; contours and creases 1
 };
+
+// The contour's name for the shared segment type.
+using ContourSegment = LineSegment;
+
+// Unit vector from a point towards the viewer: to the eye (perspective) or −view direction
+// (orthographic); zero at the eye itself. The v of every view-dependent line.
+class ViewVector {
+public:
+    explicit ViewVector(const Camera& camera);
+    glm::dvec3 at(const glm::vec3& p) const;
+
+private:
+    glm::dvec3 eye_;
+    glm::dvec3 ortho_dir_;
+    bool orthographic_;
+};
+
+// Where the linear interpolant of per-vertex values `g` vanishes on the edge (i, j), whose
+// values must differ in sign (g ≥ 0 counting as positive). Computed from the ordered pair
+// (min, max) so every face sharing the edge gets the same bits; t runs from min to max index.
+struct EdgeCrossing {
+    double t = 0.0;
+    glm::vec3 p{0.0f};
+};
+EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i,
+                                uint32_t j);
 
 // g per vertex: n·v with v the unit vector from the vertex to the eye (perspective) or
 // −view direction (orthographic). Non-finite values become 0.
 std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                                    const Camera& camera);
 
-// Contour segments in face order (deterministic, parallel over faces). `normals` holds one
-// normal per vertex (throws std::invalid_argument otherwise). A vertex with g = 0 counts as
+// Contour segments (strength 1) in face order (deterministic, parallel over faces). `normals`
+// holds one normal per vertex (throws std::invalid_argument otherwise). A vertex with g = 0 counts as
 // positive (symbolic perturbation), so every face has zero or exactly one segment. Faces with
 // out-of-range indices, and crossings that would join an edge to itself (repeated index), give
 // no segment.
-std::vector<ContourSegment> extract_contours(const Mesh& mesh,
-                                             const std::vector<glm::vec3>& normals,
-                                             const Camera& camera);
+std::vector<LineSegment> extract_contours(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                          const Camera& camera);
 
 // A mesh edge between a front-facing and a back-facing face (by face normal against the
 // vector to the eye at the face centroid): seed 002's silhouette, without interpolation.

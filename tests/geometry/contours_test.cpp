@@ -219,6 +219,8 @@ TEST(Chaining, SphereContourIsOneClosedLoop) {
         ASSERT_EQ(lines.size(), 1u);
         EXPECT_TRUE(lines[0].closed);
         EXPECT_EQ(lines[0].points.size(), segs.size());
+        // Contours are full strength; the strengths run parallel to the points.
+        EXPECT_EQ(lines[0].strength, std::vector<float>(segs.size(), 1.0f));
         // Consecutive points are close (one face apart), including the closing step.
         const auto& pts = lines[0].points;
         for (size_t i = 0; i < pts.size(); ++i)

@@ -1,0 +1,110 @@
+// Per-view object-space line extraction on a torus knot of 1,048,576 triangles: contours,
+// suggestive contours (DeCarlo et al. 2004 / rtsc) and chaining, curvature computed once
+// beforehand (it does not depend on the view). Issue 6's budget for extraction + visibility +
+// chaining is 30 ms on 2 cores; the extraction here should be well under it.
+//   inkshade_bench --benchmark_filter=Lines --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+
+#include "core/builtin_models.hpp"
+#include "geometry/chaining.hpp"
+#include "geometry/contours.hpp"
+#include "geometry/creases.hpp"
+#include "geometry/curvature.hpp"
+#include "geometry/suggestive_contours.hpp"
+
+namespace {
+
+using namespace inkshade;
+
+struct Scene {
+    Mesh mesh;
+    geometry::Curvature curvature;
+    Camera camera;
+};
+
+// builtin:torus-knot:segments=4096,tube-segments=128 (2 × 4096 × 128 triangles), seen in a
+// three-quarter view from about three bounding radii.
+const Scene& scene() {
+    static const Scene s = [] {
+        Scene sc;
+        sc.mesh = builtin::torus_knot(2, 3, 0.15f, 4096, 128);
+        sc.curvature = geometry::compute_curvature(sc.mesh, sc.mesh.normals);
+        sc.camera.eye = {3.0f, 2.0f, 4.0f};
+        sc.camera.fov_degrees = 40.0f;
+        return sc;
+    }();
+    return s;
+}
+
+void set_counters(benchmark::State& state, size_t segments) {
+    state.counters["triangles"] = double(scene().mesh.triangle_count());
+    state.counters["threads"] = double(state.range(0));
+    state.counters["segments"] = double(segments);
+}
+
+void BM_LinesContours(benchmark::State& state) {
+    const Scene& s = scene();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    size_t n = 0;
+    for (auto _ : state) {
+        const auto segs = geometry::extract_contours(s.mesh, s.mesh.normals, s.camera);
+        n = segs.size();
+        benchmark::DoNotOptimize(segs.data());
+    }
+    set_counters(state, n);
+}
+
+void BM_LinesSuggestive(benchmark::State& state) {
+    const Scene& s = scene();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    size_t n = 0;
+    for (auto _ : state) {
+        const auto segs =
+            geometry::extract_suggestive_contours(s.mesh, s.mesh.normals, s.curvature, s.camera);
+        n = segs.size();
+        benchmark::DoNotOptimize(segs.data());
+    }
+    set_counters(state, n);
+}
+
+// What a frame of vector output costs before visibility: both line types, chained.
+void BM_LinesPerView(benchmark::State& state) {
+    const Scene& s = scene();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    size_t n = 0;
+    for (auto _ : state) {
+        const auto contours = geometry::chain_segments(
+            geometry::extract_contours(s.mesh, s.mesh.normals, s.camera));
+        const auto suggestive = geometry::chain_segments(geometry::extract_suggestive_contours(
+            s.mesh, s.mesh.normals, s.curvature, s.camera));
+        n = contours.size() + suggestive.size();
+        benchmark::DoNotOptimize(contours.data());
+        benchmark::DoNotOptimize(suggestive.data());
+    }
+    set_counters(state, n);
+    state.counters.erase("segments");
+    state.counters["polylines"] = double(n);
+}
+
+// View-independent, once per mesh: edge adjacency and crease classification.
+void BM_LinesCreases(benchmark::State& state) {
+    const Scene& s = scene();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    size_t n = 0;
+    for (auto _ : state) {
+        const auto adjacency = geometry::build_edge_adjacency(s.mesh);
+        const auto creases = geometry::extract_creases(s.mesh, adjacency);
+        n = creases.ridges.size() + creases.valleys.size() + creases.borders.size();
+        benchmark::DoNotOptimize(adjacency.edges.data());
+    }
+    set_counters(state, n);
+}
+
+}  // namespace
+
+BENCHMARK(BM_LinesContours)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinesSuggestive)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinesPerView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinesCreases)->Arg(1)->Unit(benchmark::kMillisecond);

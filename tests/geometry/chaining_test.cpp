@@ -1,0 +1,126 @@
+#include "geometry/chaining.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace inkshade::geometry {
+namespace {
+
+LineSegment seg(glm::vec3 a, glm::vec3 b, uint64_t ka, uint64_t kb, float sa = 1.0f, float sb = 1.0f) {
+    LineSegment s;
+    s.a = a;
+    s.b = b;
+    s.edge_a = ka;
+    s.edge_b = kb;
+    s.strength_a = sa;
+    s.strength_b = sb;
+    return s;
+}
+
+TEST(Chaining, StrengthTravelsWithItsPointThroughReversal) {
+    // As in ChainsFollowSegmentDirection: the walk starts at segment 1's b end and is reversed.
+    std::vector<LineSegment> segs = {seg({1, 0, 0}, {2, 0, 0}, 11, 12, 0.1f, 0.2f),
+                                     seg({2, 0, 0}, {3, 0, 0}, 12, 13, 0.2f, 0.3f),
+                                     seg({0, 0, 0}, {1, 0, 0}, 10, 11, 0.0f, 0.1f)};
+    const auto lines = chain_segments(segs);
+    ASSERT_EQ(lines.size(), 1u);
+    ASSERT_EQ(lines[0].points.size(), 4u);
+    ASSERT_EQ(lines[0].strength.size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(lines[0].points[i], glm::vec3(float(i), 0, 0));
+        EXPECT_FLOAT_EQ(lines[0].strength[i], 0.1f * float(i));
+    }
+}
+
+TEST(Chaining, VertexKeysChainEdgeLinesAndJunctionsSplitThem) {
+    // A unit square of four mesh edges (vertex nodes 0..3) is one closed loop.
+    const glm::vec3 p[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    std::vector<LineSegment> square;
+    for (uint32_t i = 0; i < 4; ++i)
+        square.push_back(seg(p[i], p[(i + 1) % 4], vertex_key(i), vertex_key((i + 1) % 4), 0.5f, 0.5f));
+    const auto loop = chain_segments(square);
+    ASSERT_EQ(loop.size(), 1u);
+    EXPECT_TRUE(loop[0].closed);
+    EXPECT_EQ(loop[0].points.size(), 4u);
+    EXPECT_EQ(loop[0].strength, std::vector<float>(4, 0.5f));
+    EXPECT_FLOAT_EQ(polyline_length(loop[0]), 4.0f);
+    // A spur at vertex 1 makes it a junction of degree three: three open chains.
+    square.push_back(seg(p[1], {2, 0, 0}, vertex_key(1), vertex_key(4)));
+    const auto split = chain_segments(square);
+    ASSERT_EQ(split.size(), 2u);  // 1→2→3→0→1 runs from the junction back to it, plus the spur
+    for (const auto& l : split) EXPECT_FALSE(l.closed);
+    // Vertex keys never collide with edge keys or face-interior keys.
+    EXPECT_NE(vertex_key(3), edge_key(3, 4));
+    EXPECT_NE(face_interior_key(3, 0), edge_key(3, 3));
+    EXPECT_NE(face_interior_key(3, 0), face_interior_key(3, 1));
+}
+
+TEST(Chaining, FaceInteriorKeysEndChains) {
+    // Two segments meeting on edge key 5; the outer ends are cut inside faces 0 and 1.
+    const std::vector<LineSegment> segs = {
+        seg({0, 0, 0}, {1, 0, 0}, face_interior_key(0, 0), 5, 0.0f, 1.0f),
+        seg({1, 0, 0}, {2, 0, 0}, 5, face_interior_key(1, 1), 1.0f, 0.0f)};
+    const auto lines = chain_segments(segs);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_FALSE(lines[0].closed);
+    EXPECT_EQ(lines[0].points.size(), 3u);
+    EXPECT_EQ(lines[0].strength, (std::vector<float>{0.0f, 1.0f, 0.0f}));
+}
+
+TEST(Chaining, DropShortRemovesOnlyShortChainsAndKeepsOrder) {
+    Polyline a, b, c, loop;
+    a.points = {{0, 0, 0}, {0.3f, 0, 0}};                 // 0.3
+    b.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};         // 2
+    c.points = {{0, 0, 0}};                               // 0
+    loop.points = {{0, 0, 0}, {0.4f, 0, 0}, {0.4f, 0.4f, 0}};  // 0.4 + 0.4 + 0.566 closed
+    loop.closed = true;
+    EXPECT_FLOAT_EQ(polyline_length(a), 0.3f);
+    EXPECT_NEAR(polyline_length(loop), 0.8f + 0.4f * std::sqrt(2.0f), 1e-6f);
+    const auto kept = drop_short({a, b, c, loop}, 1.0f);
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_EQ(kept[0].points, b.points);
+    EXPECT_EQ(kept[1].points, loop.points);  // long only with its closing step
+    EXPECT_EQ(drop_short({a, b, c, loop}, 0.0f).size(), 4u);
+    EXPECT_TRUE(drop_short({}, 1.0f).empty());
+}
+
+TEST(Chaining, SmoothingKeepsOpenEndsAndFlattensZigzag) {
+    Polyline zig;
+    for (int i = 0; i <= 20; ++i) {
+        zig.points.emplace_back(float(i), i % 2 ? 0.1f : -0.1f, 0.0f);
+        zig.strength.push_back(float(i));
+    }
+    std::vector<Polyline> lines = {zig};
+    smooth_polylines(lines, 10);
+    const auto& p = lines[0].points;
+    ASSERT_EQ(p.size(), zig.points.size());
+    EXPECT_EQ(p.front(), zig.points.front());  // ends fixed, bit for bit
+    EXPECT_EQ(p.back(), zig.points.back());
+    for (size_t i = 5; i + 5 < p.size(); ++i) EXPECT_LT(std::abs(p[i].y), 0.01f) << i;  // was ±0.1
+    EXPECT_EQ(lines[0].strength, zig.strength);
+    // A closed loop has no fixed point: every point moves, the centroid stays.
+    Polyline square;
+    square.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    square.closed = true;
+    std::vector<Polyline> loops = {square};
+    smooth_polylines(loops, 1);
+    glm::vec3 centroid(0.0f);
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_NE(loops[0].points[i], square.points[i]);
+        centroid += 0.25f * loops[0].points[i];
+    }
+    EXPECT_NEAR(glm::distance(centroid, glm::vec3(0.5f, 0.5f, 0.0f)), 0.0f, 1e-6f);
+    // Zero iterations and two-point chains are left alone.
+    std::vector<Polyline> same = {zig};
+    smooth_polylines(same, 0);
+    EXPECT_EQ(same[0].points, zig.points);
+    Polyline two;
+    two.points = {{0, 0, 0}, {1, 1, 1}};
+    std::vector<Polyline> twos = {two};
+    smooth_polylines(twos, 5);
+    EXPECT_EQ(twos[0].points, two.points);
+}
+
+}  // namespace
+}  // namespace inkshade::geometry
