@@ -55,7 +55,7 @@ int run_render(const RenderArgs& args) {
 
     Renderer renderer;
     renderer.set_mesh(mesh);
-    Image image = renderer.render(camera, light, shading, options);
+    Image image = renderer.render(camera, light, shading, style.lines, options);
     if (args.timing > 0) {
         std::map<std::string, std::vector<double>> per_pass;
         std::vector<std::string> order;
@@ -63,7 +63,7 @@ int run_render(const RenderArgs& args) {
         for (int i = 0; i < args.timing; ++i) {
             std::vector<PassTiming> timings;
             auto start = std::chrono::steady_clock::now();
-            image = renderer.render(camera, light, shading, options, &timings);
+            image = renderer.render(camera, light, shading, style.lines, options, &timings);
             totals.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             for (const auto& t : timings) {
                 if (!per_pass.count(t.pass)) order.push_back(t.pass);

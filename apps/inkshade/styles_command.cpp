@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "inkshade/lines.hpp"
 #include "inkshade/shading.hpp"
 #include "inkshade/style.hpp"
 
@@ -33,10 +34,16 @@ const char* type_text(ParamType t) {
     return "?";
 }
 
+void print_params(const std::vector<ParamSpec>& params) {
+    for (const ParamSpec& p : params)
+        std::printf("      %-18s %-6s default %-14s %s  %s\n", p.name.c_str(), type_text(p.type),
+                    format_param_value(p, p.default_value).c_str(), range_text(p).c_str(), p.doc.c_str());
+}
+
 }  // namespace
 
 Command add_styles_command(CLI::App& app) {
-    CLI::App* cmd = app.add_subcommand("styles", "list shading models, debug views and their parameters");
+    CLI::App* cmd = app.add_subcommand("styles", "list styles, shading models, debug views, line types and their parameters");
     return [cmd] {
         (void)cmd;
         std::printf("Styles (--style NAME, or --style FILE.toml; docs/styles.md):\n");
@@ -52,9 +59,13 @@ Command add_styles_command(CLI::App& app) {
                 debug_header = true;
             }
             std::printf("  %-12s %s\n", m->name.c_str(), m->summary.c_str());
-            for (const ParamSpec& p : m->params)
-                std::printf("      %-18s %-6s default %-14s %s  %s\n", p.name.c_str(), type_text(p.type),
-                            format_param_value(p, p.default_value).c_str(), range_text(p).c_str(), p.doc.c_str());
+            print_params(m->params);
+        }
+        std::printf("\nLine types ([[lines]] in a style, --set TYPE.param=value; `lines --lines` for vector ones):\n");
+        for (const LineType* t : line_types()) {
+            std::printf("  %-12s %s  [%s]\n", t->name.c_str(), t->summary.c_str(),
+                        t->space == LineSpace::Image ? "raster" : "vector");
+            print_params(t->params);
         }
         return 0;
     };

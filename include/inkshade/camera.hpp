@@ -40,6 +40,10 @@ constexpr float kDefaultElevation = 20.0f;
 // (both dimensions, any aspect), unless eye/distance are given; near/far enclose the model.
 Camera frame_camera(const BoundingBox& box, const CameraOptions& options, float aspect);
 
+// Near and far planes that enclose the bounding sphere of `box` from the current eye, as
+// frame_camera sets them (used again after the camera moved).
+void fit_clip_planes(Camera& camera, const BoundingBox& box);
+
 enum class LightType { Directional, Point };
 
 struct Light {

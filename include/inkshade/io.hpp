@@ -1,4 +1,5 @@
-// Loading meshes from files (OBJ, STL, PLY, OFF) and built-in models ("builtin:NAME").
+// Loading meshes from files (OBJ, STL, PLY, OFF, glTF 2.0 / GLB / VRM) and built-in models
+// ("builtin:NAME"). docs/inputs.md says what each format contributes.
 #pragma once
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@ struct LoadOptions {
 
 // Loads a mesh by path or "builtin:NAME". Throws InputError("FILE: problem") on bad input.
 // The result is indexed, validated (indices in range, finite coordinates) and has normals.
+// Problems that do not stop the load (a texture that cannot be read) are in Mesh::warnings.
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 
 // Names accepted after "builtin:" (sphere, torus, torus-knot, teapot).

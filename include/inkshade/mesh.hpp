@@ -1,6 +1,8 @@
 // The indexed triangle mesh every part of Inkshade works on.
 #pragma once
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -8,9 +10,34 @@
 
 namespace inkshade {
 
+// A decoded base-colour texture (glTF baseColorTexture, MTL map_Kd, PLY `comment TextureFile`).
+// Colour space: the RGB bytes are sRGB-encoded, as glTF 2.0 section 3.9.2 requires of base
+// colour textures and as every image editor writes them; decode to linear (GL_SRGB8_ALPHA8 or
+// the sRGB EOTF) before multiplying by a linear base colour. Alpha is linear.
+// Orientation: rows are stored top row of the image first (as in the file and inkshade::Image),
+// while Mesh::uvs follow the OBJ/OpenGL convention (v = 0 at the BOTTOM of the image), so
+// texel row = (1 - v) * height. Uploaded as is with glTexImage2D (row 0 at t = 0), sample at
+// vec2(u, 1 - v). Wrapping: repeat (the glTF sampler default and OBJ's).
+struct Texture {
+    std::string source;         // file path, or "FILE#image N" for an image embedded in a glTF/GLB
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;  // width * height * 4 bytes, row-major, top row first
+};
+
 struct Material {
     std::string name;
-    glm::vec3 diffuse{0.8f, 0.8f, 0.8f};  // MTL Kd / base colour, linear as written in the file
+    glm::vec3 diffuse{0.8f, 0.8f, 0.8f};  // MTL Kd / glTF baseColorFactor.rgb, linear (glTF 2.0 §3.9.2)
+    // Base-colour texture multiplying `diffuse` (or the vertex colour); null = none. Shared:
+    // copies of a Material (and materials using the same image) cost no pixel copies.
+    std::shared_ptr<const Texture> texture;
+    // MToon parameters of a VRM material (VRM 0.x extensions.VRM.materialProperties, converted as
+    // three-vrm does, or VRM 1.0 VRMC_materials_mtoon), keyed by the `mtoon` shading model's
+    // parameter names: shade-color (3), shading-shift, shading-toony, rim-color (3),
+    // rim-fresnel-power, rim-lift, rim-lighting-mix, plus outline-width-mode (0 none, 1 world,
+    // 2 screen), outline-width, outline-color (3), outline-lighting-mix, gi-equalization.
+    // Colours linear. Empty = not an MToon material.
+    std::map<std::string, std::vector<float>> mtoon;
 };
 
 struct BoundingBox {
@@ -24,11 +51,13 @@ struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::uvec3> triangles;     // indices into positions, counter-clockwise = front
     std::vector<glm::vec3> normals;        // per vertex; empty = compute (angle-weighted)
-    std::vector<glm::vec3> colors;         // per vertex RGB in [0,1]; empty = material colour
-    std::vector<glm::vec2> uvs;            // per vertex; may be empty
+    std::vector<glm::vec3> colors;         // per vertex RGB in [0,1] replacing the material's diffuse
+                                           // (glTF: COLOR_0 x baseColorFactor, linear); empty = material colour
+    std::vector<glm::vec2> uvs;            // per vertex, v = 0 at the image bottom (OBJ); may be empty
     std::vector<Material> materials;       // may be empty (default material)
     std::vector<uint32_t> face_materials;  // per triangle index into materials; may be empty
     bool welded = false;                   // true when duplicate positions were merged
+    std::vector<std::string> warnings;     // "FILE: problem" lines for the user (e.g. a texture not loaded)
 
     size_t vertex_count() const { return positions.size(); }
     size_t triangle_count() const { return triangles.size(); }

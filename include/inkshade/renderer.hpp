@@ -1,11 +1,13 @@
 // Rendering a mesh with a shading model into an image, headless (EGL) or in a window.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "inkshade/camera.hpp"
 #include "inkshade/image.hpp"
+#include "inkshade/lines.hpp"
 #include "inkshade/mesh.hpp"
 #include "inkshade/shading.hpp"
 
@@ -34,6 +36,10 @@ class Renderer {
 public:
     // Creates a headless OpenGL 4.5 context. Throws RuntimeError when none is available.
     Renderer();
+    // Renders with the caller's OpenGL 4.5 core context (a window's, e.g. GLFW), which
+    // `make_current` makes current; the renderer draws into its own framebuffers and leaves the
+    // default framebuffer alone. The context must outlive the renderer.
+    explicit Renderer(std::function<void()> make_current);
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -44,6 +50,15 @@ public:
     // Renders the current mesh. With `timings`, each pass is finished (glFinish) and timed.
     Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                  const RenderOptions& options, std::vector<PassTiming>* timings = nullptr);
+
+    // Renders the current mesh with the image-space line types among `lines` (LineSpace::Image:
+    // hull, rim-contour, edges, suggestive-image; docs/lines-raster.md); object-space types are
+    // skipped here. Passes: shading (with the rim-contour test), hull, then when edges or
+    // suggestive-image are on a G-buffer pass and one full-screen image-lines pass; resolve,
+    // readback.
+    Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                 const std::vector<LineSettings>& lines, const RenderOptions& options,
+                 std::vector<PassTiming>* timings = nullptr);
 
     // "llvmpipe (LLVM ...)", "NVIDIA H100 ..." — what GL runs on.
     std::string gl_renderer() const;

@@ -25,6 +25,11 @@ struct Style {
 // Sets the light colour and ambient the style asks for (others stay as they are).
 void apply_style_light(const Style& style, Light& light);
 
+// Applies one override "param=value" or "MODEL.param=value" (a parameter of the style's shading
+// model) or "LINETYPE.param=value" (a parameter of a line type, which is added to the style when
+// absent), as --set and the viewer's scripts give them. Throws InputError naming the problem.
+void apply_override(Style& style, const std::string& text);
+
 // Parses a style file's text. `source` names it in errors: InputError("SOURCE: problem").
 // Every key is checked: unknown keys, models, parameters and out-of-range values are errors.
 Style parse_style(std::string_view toml_text, const std::string& source);

@@ -69,14 +69,19 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect
         half_y = std::max(half_y, y);
     }
     if (!o.eye && !o.distance && !o.target) cam.eye = cam.target + dir * std::min(fit, 1.08f * need);
-    const float dist = glm::length(cam.eye - cam.target);
     // Orthographic: the box's projected extent with a 5% margin.
     cam.ortho_height = 2.1f * std::max({half_y, half_x / aspect, 1e-6f});
+    fit_clip_planes(cam, box);
+    return cam;
+}
+
+void fit_clip_planes(Camera& cam, const BoundingBox& box) {
+    const float radius = std::max(0.5f * box.diagonal(), 1e-6f);
+    const float dist = glm::length(cam.eye - cam.target);
     const float to_center = glm::length(cam.eye - box.center());
     cam.far_plane = to_center + 2.0f * radius;
     cam.near_plane = std::max(to_center - 2.0f * radius, 1e-3f * std::max(dist, radius));
     if (cam.orthographic) cam.near_plane = to_center - 2.0f * radius;  // may be negative: fine
-    return cam;
 }
 
 glm::vec3 Light::direction_to_light(const glm::vec3& p) const {

@@ -22,16 +22,16 @@ Framebuffer::Framebuffer(int width, int height, int samples)
     glCreateRenderbuffers(1, &msaa_depth_);
     if (samples_ > 1) {
         glNamedRenderbufferStorageMultisample(msaa_color_, samples_, GL_RGBA8, width, height);
-        glNamedRenderbufferStorageMultisample(msaa_depth_, samples_, GL_DEPTH_COMPONENT32F, width, height);
+        glNamedRenderbufferStorageMultisample(msaa_depth_, samples_, GL_DEPTH32F_STENCIL8, width, height);
     } else {
         // Multisample storage with 1 sample may still be multisampled (llvmpipe rounds 1 up
         // to 4): samples = 1 must mean no MSAA, so use plain storage.
         glNamedRenderbufferStorage(msaa_color_, GL_RGBA8, width, height);
-        glNamedRenderbufferStorage(msaa_depth_, GL_DEPTH_COMPONENT32F, width, height);
+        glNamedRenderbufferStorage(msaa_depth_, GL_DEPTH32F_STENCIL8, width, height);
     }
     glCreateFramebuffers(1, &msaa_fbo_);
     glNamedFramebufferRenderbuffer(msaa_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
-    glNamedFramebufferRenderbuffer(msaa_fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
+    glNamedFramebufferRenderbuffer(msaa_fbo_, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
 
     glCreateRenderbuffers(1, &resolve_color_);
     glNamedRenderbufferStorage(resolve_color_, GL_RGBA8, width, height);

@@ -1,5 +1,6 @@
-// Off-screen render target: multisampled colour + depth, resolved into a single-sample
-// colour buffer for readback.
+// Off-screen render target: multisampled colour + depth/stencil, resolved into a single-sample
+// colour buffer for readback. The stencil bits let stroke layers cover each sample once
+// (render/stroke_pass.hpp).
 #pragma once
 #include <epoxy/gl.h>
 

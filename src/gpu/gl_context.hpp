@@ -1,5 +1,6 @@
-// An OpenGL 4.5 core context: headless through EGL (this file) or a window (later, GLFW).
+// An OpenGL 4.5 core context: headless through EGL, or a window's (GLFW) made current by its owner.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -18,5 +19,8 @@ public:
 // GPU needed), then the EGL device platform (vendor drivers, e.g. NVIDIA). Throws
 // RuntimeError with one line saying what is missing and which package provides it.
 std::unique_ptr<GlContext> create_headless_context();
+
+// A context owned by someone else (a window), made current by `make_current`.
+std::unique_ptr<GlContext> wrap_external_context(std::function<void()> make_current);
 
 }  // namespace inkshade::gpu

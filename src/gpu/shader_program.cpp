@@ -35,8 +35,9 @@ std::string first_line(const std::string& log) {
     return line.empty() ? "unknown error" : line;
 }
 
-GLuint compile(GLenum type, const std::string& path, const std::string& defines) {
-    std::string src = shader_source(path);
+GLuint compile(GLenum type, const std::string& path, const std::string& defines,
+               const std::string& epilogue = "") {
+    std::string src = shader_source(path) + epilogue;
     // Put defines right after the #version line so they precede everything else.
     size_t eol = src.find('\n');
     if (src.rfind("#version", 0) == 0 && eol != std::string::npos)
@@ -61,11 +62,12 @@ GLuint compile(GLenum type, const std::string& path, const std::string& defines)
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                             const std::string& defines) {
+                             const std::string& defines, const std::string& fragment_defines,
+                             const std::string& fragment_epilogue) {
     GLuint vs = compile(GL_VERTEX_SHADER, vertex_path, defines);
     GLuint fs = 0;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, fragment_path, defines);
+        fs = compile(GL_FRAGMENT_SHADER, fragment_path, defines + fragment_defines, fragment_epilogue);
     } catch (...) {
         glDeleteShader(vs);
         throw;
@@ -105,6 +107,9 @@ void ShaderProgram::set(const std::string& name, float v) { glProgramUniform1f(i
 void ShaderProgram::set(const std::string& name, int v) { glProgramUniform1i(id_, location(name), v); }
 void ShaderProgram::set(const std::string& name, const glm::vec2& v) {
     glProgramUniform2fv(id_, location(name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& name, const glm::ivec2& v) {
+    glProgramUniform2i(id_, location(name), v.x, v.y);
 }
 void ShaderProgram::set(const std::string& name, const glm::vec3& v) {
     glProgramUniform3fv(id_, location(name), 1, glm::value_ptr(v));

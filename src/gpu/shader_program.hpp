@@ -13,9 +13,14 @@ namespace inkshade::gpu {
 class ShaderProgram {
 public:
     // Paths are relative to shaders/ (embedded). `defines` is inserted after #version.
+    // `fragment_defines` go after `defines` in the fragment shader only, and
+    // `fragment_epilogue` (GLSL text) is appended to it: with `#define main NAME` there, the
+    // epilogue wraps the shader's main (how the line passes add render targets and rim lines
+    // to every shading model, src/render/surface_lines.hpp).
     // Throws RuntimeError naming the file and the compiler's first error line.
     ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                  const std::string& defines = "");
+                  const std::string& defines = "", const std::string& fragment_defines = "",
+                  const std::string& fragment_epilogue = "");
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;
@@ -33,6 +38,8 @@ public:
     void set(const std::string& name, const glm::mat4& v);
     void set_array(const std::string& name, const std::vector<float>& v);
     GLint location(const std::string& name);
+
+    void set(const std::string& name, const glm::ivec2& v);
 
 private:
     GLuint id_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -57,6 +58,64 @@ void validate(Mesh& mesh, const std::string& path) {
         }
 }
 
+// geometry::weld keeps the attributes of each cluster's first vertex, which would glue texture
+// seams and colour boundaries (a textured soup would show the wrong texels). With uvs or
+// colours, positions are welded alone to find the clusters, and each cluster is then split by
+// its exact (uv, colour) values: vertices merge only where nothing but the index differs.
+void weld_keeping_attributes(Mesh& mesh, float epsilon) {
+    if (mesh.uvs.empty() && mesh.colors.empty()) {
+        geometry::weld(mesh, geometry::WeldOptions{epsilon});
+        return;
+    }
+    const size_t n = mesh.positions.size();
+    Mesh probe;  // one degenerate "triangle" per vertex: after welding, probe.triangles[i].x is i's cluster
+    probe.positions = mesh.positions;
+    probe.triangles.resize(n);
+    for (size_t i = 0; i < n; ++i) probe.triangles[i] = glm::uvec3(uint32_t(i));
+    geometry::weld(probe, geometry::WeldOptions{epsilon});
+    if (!probe.welded) return;
+
+    constexpr uint32_t kNone = UINT32_MAX;
+    const bool uvs = !mesh.uvs.empty(), colors = !mesh.colors.empty(), normals = mesh.normals.size() == n;
+    std::vector<uint32_t> first(probe.positions.size(), kNone), next, source, remap(n);
+    for (size_t v = 0; v < n; ++v) {
+        const uint32_t cluster = probe.triangles[v].x;
+        uint32_t prev = kNone, found = kNone;
+        for (uint32_t r = first[cluster]; r != kNone; prev = r, r = next[r]) {
+            const uint32_t s = source[r];
+            if ((!uvs || mesh.uvs[s] == mesh.uvs[v]) && (!colors || mesh.colors[s] == mesh.colors[v])) {
+                found = r;
+                break;
+            }
+        }
+        if (found == kNone) {
+            found = uint32_t(source.size());
+            source.push_back(uint32_t(v));
+            next.push_back(kNone);
+            (prev == kNone ? first[cluster] : next[prev]) = found;
+        }
+        remap[v] = found;
+    }
+    if (source.size() == n) return;  // every merge would have crossed a seam
+
+    std::vector<glm::vec3> positions(source.size()), vnormals, vcolors;
+    std::vector<glm::vec2> vuvs;
+    for (size_t r = 0; r < source.size(); ++r) positions[r] = probe.positions[probe.triangles[source[r]].x];
+    auto gather = [&](auto& out, const auto& in) {
+        out.resize(source.size());
+        for (size_t r = 0; r < source.size(); ++r) out[r] = in[source[r]];
+    };
+    if (uvs) gather(vuvs, mesh.uvs);
+    if (colors) gather(vcolors, mesh.colors);
+    if (normals) gather(vnormals, mesh.normals);
+    for (glm::uvec3& t : mesh.triangles) t = glm::uvec3(remap[t.x], remap[t.y], remap[t.z]);
+    mesh.positions.swap(positions);
+    mesh.uvs.swap(vuvs);
+    mesh.colors.swap(vcolors);
+    mesh.normals.swap(vnormals);
+    mesh.welded = true;
+}
+
 // A mesh in which no vertex is used twice is a soup whatever its format (PLY and OFF
 // exporters write those too): weld it so adjacency and smooth normals exist.
 bool shares_no_vertex(const Mesh& mesh) {
@@ -91,19 +150,23 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         mesh = io::read_ply(path);
     } else if (ext == ".off") {
         mesh = io::read_off(path);
+    } else if (ext == ".gltf" || ext == ".glb" || ext == ".vrm") {
+        mesh = io::read_gltf(path);
     } else {
         throw InputError(path, (ext.empty() ? std::string("no file extension") : "unknown file extension " + io::quote_token(ext)) +
                                    " (supported: .obj .stl .ply .off)");
     }
 
     validate(mesh, path);
-    // Not for OBJ with per-corner normals or uvs: those vertices are split on purpose.
-    bool split_on_purpose = ext == ".obj" && (!mesh.normals.empty() || !mesh.uvs.empty());
+    // Not for OBJ or glTF with per-corner normals or uvs: those vertices are split on purpose
+    // (hard edges, texture seams; the renderer welds positions itself where lines need it).
+    bool split_on_purpose = (ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".vrm") &&
+                            (!mesh.normals.empty() || !mesh.uvs.empty());
     if (soup || (!split_on_purpose && shares_no_vertex(mesh))) {
         // Per-corner normals of a soup are facet normals; after merging, the first one of each
         // cluster would win, so recompute smooth ones instead.
         mesh.normals.clear();
-        geometry::weld(mesh, geometry::WeldOptions{options.weld_epsilon});
+        weld_keeping_attributes(mesh, options.weld_epsilon);
     }
     if (options.compute_normals)
         geometry::ensure_vertex_normals(mesh);

@@ -1,4 +1,5 @@
-// Wavefront OBJ through tinyobjloader (MTL Kd colours, relative indices, triangulation).
+// Wavefront OBJ through tinyobjloader (MTL Kd colours and map_Kd textures, relative indices,
+// triangulation).
 // tinyobj is lenient by design: it reads garbage as zeros, skips faces with bad indices and
 // can be made to allocate per `t` line, so a strict pre-scan of our own runs first. It
 // rejects binary data, non-numeric and non-finite values and out-of-range indices with a line
@@ -10,6 +11,8 @@
 #include <filesystem>
 #include <istream>
 #include <limits>
+#include <map>
+#include <memory>
 #include <streambuf>
 #include <string>
 #include <vector>
@@ -20,6 +23,7 @@
 #include "io/file_bytes.hpp"
 #include "io/readers.hpp"
 #include "io/text_scanner.hpp"
+#include "io/texture_image.hpp"
 
 namespace inkshade::io {
 namespace {
@@ -33,6 +37,7 @@ struct Prescan {
     std::vector<uint32_t> corners;  // per face with >= 3 corners, in file order
     uint32_t max_corners = 0;
     bool has_tags = false;          // `t` lines: tinyobj allocates per tag count, drop them
+    std::vector<std::string> mtllibs;  // as named on `mtllib` lines, for finding their textures
 };
 
 // Checks one "v/vt/vn" corner. Negative indices count back from the elements read so far;
@@ -111,6 +116,7 @@ Prescan prescan(std::string_view text, const std::string& path) {
                 auto lib = std::filesystem::path(path).parent_path() / std::string(name);
                 if (std::filesystem::exists(lib, ec) && !std::filesystem::is_regular_file(lib, ec))
                     in.fail("material library " + quote_token(name) + " is not a regular file");
+                s.mtllibs.emplace_back(name);
             }
         }
         in.skip_line();
@@ -258,11 +264,29 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
         for (int id : shape.mesh.material_ids) any_material |= id >= 0 && size_t(id) < materials.size();
     uint32_t default_material = kNone;
     if (any_material) {
+        // map_Kd names are relative to the .mtl that holds them (tinyobj does not say which one
+        // when there are several, so each library's directory is tried, then the OBJ's).
+        std::vector<std::filesystem::path> texture_dirs;
+        const std::filesystem::path obj_dir = dir.empty() ? std::filesystem::path(".") : std::filesystem::path(dir);
+        for (const std::string& lib : scan.mtllibs) texture_dirs.push_back((obj_dir / lib).parent_path());
+        texture_dirs.push_back(obj_dir);
+        texture_dirs.erase(std::unique(texture_dirs.begin(), texture_dirs.end()), texture_dirs.end());
+        std::map<std::string, std::shared_ptr<const Texture>> textures;  // each file decoded (or warned about) once
         for (const tinyobj::material_t& m : materials) {
             Material mat;
             mat.name = m.name;
             for (int k = 0; k < 3; ++k)
                 if (std::isfinite(m.diffuse[k])) mat.diffuse[k] = std::clamp(float(m.diffuse[k]), 0.0f, 1.0f);
+            if (!m.diffuse_texname.empty()) {
+                auto [it, fresh] = textures.try_emplace(m.diffuse_texname);
+                if (fresh) it->second = load_texture_or_warn(path, m.diffuse_texname, texture_dirs, mesh.warnings);
+                mat.texture = it->second;
+                // The texture is multiplied by Kd. MTL files that give only map_Kd mean the
+                // texture as is (three.js and Blender read them so), but tinyobj fills the missing
+                // Kd with 0.6 (its marker for this case); Kd 0 would hide the texture entirely.
+                if (mat.texture && (mat.diffuse == glm::vec3(0.6f) || mat.diffuse == glm::vec3(0.0f)))
+                    mat.diffuse = glm::vec3(1.0f);
+            }
             mesh.materials.push_back(mat);
         }
     }

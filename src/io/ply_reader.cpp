@@ -5,6 +5,7 @@
 // is allocated.
 #include <bit>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "io/file_bytes.hpp"
 #include "io/readers.hpp"
 #include "io/text_scanner.hpp"
+#include "io/texture_image.hpp"
 
 namespace inkshade::io {
 namespace {
@@ -80,7 +82,19 @@ struct Header {
     std::vector<Element> elements;
     size_t data_offset = 0;  // first byte after "end_header\n"
     size_t data_line = 0;    // line number of that byte (ascii)
+    std::string texture_file;  // `comment TextureFile NAME` (MeshLab, Blender), relative to the file
 };
+
+// The NAME of a `comment TextureFile NAME` line (the rest of the line, trimmed; may hold spaces).
+std::string texture_file_of(std::string_view line) {
+    constexpr std::string_view kKey = "TextureFile";
+    size_t at = line.find(kKey);
+    if (at == std::string_view::npos) return {};
+    std::string_view rest = line.substr(at + kKey.size());
+    if (rest.empty() || (rest[0] != ' ' && rest[0] != '\t')) return {};
+    size_t b = rest.find_first_not_of(" \t"), e = rest.find_last_not_of(" \t\r");
+    return b == std::string_view::npos ? std::string() : std::string(rest.substr(b, e - b + 1));
+}
 
 Header parse_header(std::string_view text, const std::string& path) {
     if (!(text.starts_with("ply\n") || text.starts_with("ply\r\n")))
@@ -92,9 +106,11 @@ Header parse_header(std::string_view text, const std::string& path) {
         if (pos >= text.size()) throw InputError(path, "truncated PLY header (no end_header)");
         size_t nl = text.find('\n', pos);
         if (nl == std::string_view::npos) nl = text.size();
-        TextScanner in(text.substr(pos, nl - pos), path, ++line);
+        const std::string_view raw = text.substr(pos, nl - pos);
+        TextScanner in(raw, path, ++line);
         pos = nl + 1;
         std::string_view key = in.token();
+        if (key == "comment" && in.token() == "TextureFile" && h.texture_file.empty()) h.texture_file = texture_file_of(raw);
         if (line == 1 || key.empty() || key == "comment" || key == "obj_info") continue;
         if (key == "end_header") break;
         if (key == "format") {
@@ -342,6 +358,20 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
     }
 }
 
+// One white material carrying the TextureFile texture, for every face. Without vertex texture
+// coordinates the texture could not be placed: warn instead.
+void attach_texture(Mesh& mesh, const std::string& name, const std::string& path) {
+    if (mesh.uvs.empty()) {
+        mesh.warnings.push_back(texture_warning(path, name, "the vertices have no texture coordinates"));
+        return;
+    }
+    std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    auto texture = load_texture_or_warn(path, name, {dir.empty() ? std::filesystem::path(".") : dir}, mesh.warnings);
+    if (!texture) return;
+    mesh.materials.push_back(Material{"texture", glm::vec3(1.0f), std::move(texture)});
+    mesh.face_materials.assign(mesh.triangles.size(), 0);
+}
+
 }  // namespace
 
 Mesh read_ply(const std::string& path) {
@@ -365,6 +395,7 @@ Mesh read_ply(const std::string& path) {
             break;
         }
     }
+    if (!h.texture_file.empty() && !mesh.triangles.empty()) attach_texture(mesh, h.texture_file, path);
     return mesh;
 }
 

@@ -7,10 +7,11 @@
 
 namespace inkshade::io {
 
-Mesh read_obj(const std::string& path);  // + MTL Kd, polygons fan-triangulated, negative indices
+Mesh read_obj(const std::string& path);  // + MTL Kd and map_Kd, polygons fan-triangulated, negative indices
 Mesh read_stl(const std::string& path);  // ASCII and binary; a triangle soup (3 vertices per face)
 Mesh read_ply(const std::string& path);  // ascii, binary_little_endian, binary_big_endian
 Mesh read_off(const std::string& path);  // OFF, with optional vertex colours (COFF)
+Mesh read_gltf(const std::string& path);  // glTF 2.0 .gltf, GLB .glb and VRM .vrm (default scene, flattened)
 
 // read_obj that also reports whether the file is a soup anyway: exporters that write each
 // face's corners as fresh `v` lines repeat most positions exactly, and need welding too.

@@ -3,10 +3,12 @@
 #include <cstddef>
 #include <unordered_map>
 
+#include "render/welded_attributes.hpp"
+
 namespace inkshade::render {
 
 void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
-                         std::vector<glm::uvec3>& triangles) {
+                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>* source) {
     const size_t n = mesh.positions.size();
     auto normal_of = [&](size_t i) { return i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1); };
     const bool per_face = mesh.colors.empty() && !mesh.materials.empty() &&
@@ -17,11 +19,16 @@ void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
             vertices[i] = {mesh.positions[i], normal_of(i),
                            mesh.colors.size() == n ? mesh.colors[i] : glm::vec3(1.0f)};
         triangles = mesh.triangles;
+        if (source) {
+            source->resize(n);
+            for (size_t i = 0; i < n; ++i) (*source)[i] = uint32_t(i);
+        }
         return;
     }
     // Split vertices by (vertex, material) so each face gets its material's colour.
     vertices.clear();
     vertices.reserve(n);
+    if (source) source->clear();
     triangles.resize(mesh.triangles.size());
     std::unordered_map<uint64_t, uint32_t> remap;
     remap.reserve(n * 2);
@@ -32,7 +39,10 @@ void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
             uint32_t v = mesh.triangles[f][k];
             uint64_t key = (uint64_t(mat) << 32) | v;
             auto [it, inserted] = remap.try_emplace(key, uint32_t(vertices.size()));
-            if (inserted) vertices.push_back({mesh.positions[v], normal_of(v), color});
+            if (inserted) {
+                vertices.push_back({mesh.positions[v], normal_of(v), color});
+                if (source) source->push_back(v);
+            }
             triangles[f][k] = it->second;
         }
     }
@@ -41,8 +51,21 @@ void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
 GpuMesh::GpuMesh(const Mesh& mesh) {
     std::vector<GpuVertex> vertices;
     std::vector<glm::uvec3> triangles;
-    build_vertex_stream(mesh, vertices, triangles);
+    std::vector<uint32_t> source;
+    build_vertex_stream(mesh, vertices, triangles, &source);
     index_count_ = GLsizei(triangles.size() * 3);
+    const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
+    std::vector<glm::vec3> hull_normals(vertices.size());
+    for (size_t i = 0; i < vertices.size(); ++i) hull_normals[i] = welded[source[i]];
+    // Object id per stream vertex: every face using a vertex has the same id (components are
+    // unions over shared positions; the stream splits vertices by material when faces have
+    // materials), except for meshes with both vertex colours and several materials, where
+    // the last face wins.
+    const std::vector<uint32_t> face_ids = face_object_ids(mesh);
+    std::vector<uint32_t> vertex_ids(vertices.size(), 0);
+    for (size_t f = 0; f < triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k)
+            if (triangles[f][k] < vertex_ids.size()) vertex_ids[triangles[f][k]] = face_ids[f];
 
     glCreateBuffers(1, &vbo_);
     glNamedBufferStorage(vbo_, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), 0);
@@ -59,12 +82,27 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
         glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao_, a, 0);
     }
+    glCreateBuffers(1, &hull_normal_vbo_);
+    glNamedBufferStorage(hull_normal_vbo_, GLsizeiptr(hull_normals.size() * sizeof(glm::vec3)), hull_normals.data(), 0);
+    glVertexArrayVertexBuffer(vao_, 1, hull_normal_vbo_, 0, sizeof(glm::vec3));
+    glEnableVertexArrayAttrib(vao_, 3);
+    glVertexArrayAttribFormat(vao_, 3, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao_, 3, 1);
+
+    glCreateBuffers(1, &object_id_vbo_);
+    glNamedBufferStorage(object_id_vbo_, GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data(), 0);
+    glVertexArrayVertexBuffer(vao_, 2, object_id_vbo_, 0, sizeof(uint32_t));
+    glEnableVertexArrayAttrib(vao_, 4);
+    glVertexArrayAttribIFormat(vao_, 4, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao_, 4, 2);
 }
 
 GpuMesh::~GpuMesh() {
     glDeleteVertexArrays(1, &vao_);
     glDeleteBuffers(1, &vbo_);
     glDeleteBuffers(1, &ibo_);
+    glDeleteBuffers(1, &hull_normal_vbo_);
+    glDeleteBuffers(1, &object_id_vbo_);
 }
 
 void GpuMesh::draw() const {

@@ -11,8 +11,12 @@
 #include "gpu/gl_context.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/error.hpp"
+#include "render/gbuffer.hpp"
 #include "render/gpu_mesh.hpp"
+#include "render/lines/hull.hpp"
+#include "render/lines/image_lines_pass.hpp"
 #include "render/shadow_pass.hpp"
+#include "render/surface_lines.hpp"
 
 namespace inkshade {
 
@@ -84,11 +88,16 @@ struct Renderer::Impl {
     // unchanged (new views of one model under one light, as batch and the viewer render).
     bool shadow_valid = false;
     glm::mat4 shadow_light_view_proj{0.0f};
+    // Line passes, created on first use.
+    std::unique_ptr<render::GBuffer> gbuffer;  // the image's size
+    std::unique_ptr<render::HullPass> hull;
+    std::unique_ptr<render::ImageLinesPass> image_lines;
 
     // One compiled variant per model and compile-time parameter values (#defines, not
     // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
     // model's `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl).
-    gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values) {
+    gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values,
+                                    const render::SurfaceLines& lines) {
         std::string defines;
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
@@ -97,15 +106,19 @@ struct Renderer::Impl {
             for (char& c : macro) c = c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
             defines += "#define " + macro + " " + std::to_string(int(v.at(0))) + "\n";
         }
-        auto& p = programs[model.name + "|" + defines];
-        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment, defines);
+        const std::string fragment_defines = lines.defines();
+        auto& p = programs[model.name + "|" + defines + fragment_defines];
+        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment, defines, fragment_defines,
+                                                         lines.epilogue(model.fragment));
         return *p;
     }
 
     gpu::Framebuffer& framebuffer_for(const RenderOptions& o) {
         if (!framebuffer || framebuffer->width() != o.width || framebuffer->height() != o.height ||
-            framebuffer->samples() != std::max(1, o.samples))
+            framebuffer->samples() != std::max(1, o.samples)) {
+            framebuffer.reset();
             framebuffer = std::make_unique<gpu::Framebuffer>(o.width, o.height, o.samples);
+        }
         return *framebuffer;
     }
 };
@@ -115,10 +128,18 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     impl_->context->make_current();
 }
 
+Renderer::Renderer(std::function<void()> make_current) : impl_(std::make_unique<Impl>()) {
+    impl_->context = gpu::wrap_external_context(std::move(make_current));
+    impl_->context->make_current();
+}
+
 Renderer::~Renderer() {
     if (!impl_ || !impl_->context) return;
     impl_->context->make_current();
     // GL objects go before the context that owns them.
+    impl_->gbuffer.reset();
+    impl_->hull.reset();
+    impl_->image_lines.reset();
     impl_->framebuffer.reset();
     impl_->shadow.reset();
     impl_->programs.clear();
@@ -154,7 +175,25 @@ bool can_cull_back_faces(bool closed, const BoundingBox& b, const Camera& camera
 
 Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                        const RenderOptions& options, std::vector<PassTiming>* timings) {
+    return render(camera, light, shading, {}, options, timings);
+}
+
+Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                       const std::vector<LineSettings>& lines, const RenderOptions& options,
+                       std::vector<PassTiming>* timings) {
     if (!impl_->mesh) throw RuntimeError("no mesh to render (set_mesh first)");
+    // The image-space line types of the style; object-space ones are drawn elsewhere.
+    const LineSettings *hull = nullptr, *rim = nullptr, *edges = nullptr, *suggestive = nullptr;
+    for (const LineSettings& l : lines) {
+        if (line_type(l.type).space != LineSpace::Image) continue;
+        if (l.type == "hull") hull = &l;
+        else if (l.type == "rim-contour") rim = &l;
+        else if (l.type == "edges") edges = &l;
+        else if (l.type == "suggestive-image") suggestive = &l;
+    }
+    render::SurfaceLines surface_lines;
+    surface_lines.rim = rim;
+
     impl_->context->make_current();
     const ShadingModel& model = shading_model(shading.model);
     gpu::Framebuffer& fb = impl_->framebuffer_for(options);
@@ -164,7 +203,8 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     const ParamSpec* shadows_spec = model.param("shadows");
     const bool shadows =
         model.shadow_map && shadows_spec && value_or_default(*shadows_spec, shading.params).at(0) != 0.0f;
-    gpu::ShaderProgram& program = impl_->program_for(model, shading.params);
+    gpu::ShaderProgram& program = impl_->program_for(model, shading.params, surface_lines);
+    const bool cull = can_cull_back_faces(impl_->closed, impl_->bounds, camera);
     glm::mat4 light_view_proj(1.0f);
     if (shadows) {
         light_view_proj = render::light_view_projection(light, impl_->bounds);
@@ -184,11 +224,12 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
         glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
         glClearDepth(1.0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glClearStencil(0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         // Two-sided by default (open meshes show their lit inside); culling is only a speed-up.
-        if (can_cull_back_faces(impl_->closed, impl_->bounds, camera)) {
+        if (cull) {
             glEnable(GL_CULL_FACE);
             glCullFace(GL_BACK);
         } else {
@@ -222,7 +263,27 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
             program.set("u_shadow_texel_world", impl_->bounds.diagonal() / float(impl_->shadow->size()));
         }
         upload_params(program, model, shading.params);
+        surface_lines.upload(program);
         impl_->mesh->draw();
+    }
+    if (hull) {
+        PassTimer t(timings, "hull");
+        fb.bind();
+        if (!impl_->hull) impl_->hull = std::make_unique<render::HullPass>();
+        impl_->hull->draw(*impl_->mesh, camera, options.width, options.height, *hull);
+    }
+    if (edges || suggestive) {
+        {
+            PassTimer t(timings, "gbuffer");
+            if (!impl_->gbuffer || impl_->gbuffer->width() != options.width ||
+                impl_->gbuffer->height() != options.height)
+                impl_->gbuffer = std::make_unique<render::GBuffer>(options.width, options.height);
+            impl_->gbuffer->draw(*impl_->mesh, camera, render::ImageLinesPass::needs_face_normals(edges), cull);
+        }
+        PassTimer t(timings, "image-lines");
+        fb.bind();
+        if (!impl_->image_lines) impl_->image_lines = std::make_unique<render::ImageLinesPass>();
+        impl_->image_lines->draw(*impl_->gbuffer, camera, options.width, options.height, edges, suggestive);
     }
     {
         PassTimer t(timings, "resolve");

@@ -156,6 +156,46 @@ void apply_style_light(const Style& style, Light& light) {
     if (style.ambient) light.ambient = *style.ambient;
 }
 
+void apply_override(Style& style, const std::string& text) {
+    const size_t eq = text.find('=');
+    if (eq == std::string::npos) throw InputError("expected [model.]param=value or linetype.param=value");
+    std::string key = text.substr(0, eq);
+    const std::string value = text.substr(eq + 1);
+    const ShadingModel& model = shading_model(style.shading.model);
+    const std::vector<ParamSpec>* params = &model.params;
+    std::string owner = "model '" + model.name + "'";
+    const LineType* line = nullptr;
+    if (size_t dot = key.find('.'); dot != std::string::npos) {
+        const std::string prefix = key.substr(0, dot);
+        key = key.substr(dot + 1);
+        if (prefix != model.name) {
+            for (const LineType* t : line_types())
+                if (t->name == prefix) line = t;
+            if (!line)
+                throw InputError("parameter is for model '" + prefix + "' but the shading model is '" + model.name +
+                                 "' (and there is no line type '" + prefix + "')");
+            params = &line->params;
+            owner = "line type '" + line->name + "'";
+        }
+    }
+    const ParamSpec* spec = find_param(*params, key);
+    if (!spec) {
+        std::string names;
+        for (const auto& p : *params) names += (names.empty() ? "" : ", ") + p.name;
+        throw InputError(owner + " has no parameter '" + key + "'" +
+                         (names.empty() ? " (it has none)" : " (it has " + names + ")"));
+    }
+    ParamValue v = parse_param_value(*spec, value);
+    if (!line) {
+        style.shading.params[spec->name] = std::move(v);
+        return;
+    }
+    auto it = std::find_if(style.lines.begin(), style.lines.end(),
+                           [&](const LineSettings& l) { return l.type == line->name; });
+    if (it == style.lines.end()) it = style.lines.insert(style.lines.end(), LineSettings{line->name, {}});
+    it->params[spec->name] = std::move(v);
+}
+
 Style parse_style(std::string_view text, const std::string& source) {
     if (text.size() > kMaxStyleFileBytes) throw InputError(source, "style file larger than 1 MiB");
     toml::table root;

@@ -3,6 +3,7 @@
 #include <random>
 #include <set>
 
+#include "io/gltf_files.hpp"
 #include "io/mesh_files.hpp"
 #include "io/readers.hpp"
 #include "support/temp_dir.hpp"
@@ -65,6 +66,54 @@ TEST(ObjReader, MtlDiffuseColoursArePerFace) {
     EXPECT_EQ(colour(2), glm::vec3(0, 0, 1));
     EXPECT_EQ(colour(3), glm::vec3(0, 0, 1));
     EXPECT_EQ(m.materials[m.face_materials[1]].name, "red");
+}
+
+const char* kTexturedQuadObj =
+    "mtllib mat/skin.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "usemtl skin\nf 1/1 2/2 3/3 4/4\n";
+
+TEST(ObjReader, MapKdTextureIsLoadedRelativeToTheMtlFile) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path() / "mat");
+    dir.write("mat/skin.png", png_bytes(2, 2, kTexturePixels));
+    dir.write("mat/skin.mtl", "newmtl skin\nKd 1 0.5 0.25\nmap_Kd skin.png\n");
+    Mesh m = load_mesh(dir.write("quad.obj", kTexturedQuadObj));
+    ASSERT_EQ(m.materials.size(), 1u);
+    EXPECT_EQ(m.materials[0].diffuse, glm::vec3(1, 0.5f, 0.25f));
+    ASSERT_TRUE(m.materials[0].texture);
+    EXPECT_EQ(m.materials[0].texture->width, 2);
+    EXPECT_EQ(m.materials[0].texture->rgba, kTexturePixels);
+    EXPECT_EQ(m.materials[0].texture->source, dir.file("mat/skin.png"));
+    ASSERT_EQ(m.uvs.size(), 4u);
+    EXPECT_TRUE(m.warnings.empty());
+}
+
+TEST(ObjReader, MapKdWithoutKdIsNotBlack) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path() / "mat" / "tex");
+    dir.write("mat/tex/skin.png", png_bytes(2, 2, kTexturePixels));
+    dir.write("mat/skin.mtl", "newmtl skin\nmap_Kd tex\\skin.png\n");  // Windows separator
+    Mesh m = load_mesh(dir.write("quad.obj", kTexturedQuadObj));
+    ASSERT_TRUE(m.materials[0].texture);
+    EXPECT_EQ(m.materials[0].diffuse, glm::vec3(1));
+}
+
+TEST(ObjReader, MissingOrBadMapKdIsAWarningNotAFailure) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path() / "mat");
+    dir.write("mat/skin.mtl", "newmtl skin\nKd 1 0 0\nmap_Kd missing.png\n");
+    std::string obj = dir.write("quad.obj", kTexturedQuadObj);
+    Mesh m = load_mesh(obj);
+    EXPECT_EQ(m.triangle_count(), 2u);
+    EXPECT_FALSE(m.materials[0].texture);
+    EXPECT_EQ(m.materials[0].diffuse, glm::vec3(1, 0, 0));
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], obj + ": texture 'missing.png' not loaded (file not found); using the base colour");
+
+    dir.write("mat/missing.png", "\x89PNG\r\n\x1a\n garbage");
+    Mesh bad = load_mesh(obj);
+    ASSERT_EQ(bad.warnings.size(), 1u);
+    EXPECT_NE(bad.warnings[0].find("texture 'missing.png' not loaded (not a decodable image"), std::string::npos) << bad.warnings[0];
 }
 
 TEST(ObjReader, MissingMtlFileFallsBackToNoMaterials) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "io/gltf_files.hpp"
 #include "io/mesh_files.hpp"
 #include "io/readers.hpp"
 #include "support/temp_dir.hpp"
@@ -60,6 +61,73 @@ TEST(PlyReader, ColoursNormalsAndUvsAreKept) {
     EXPECT_EQ(m.normals[1], glm::vec3(0, 0, 1));
     ASSERT_EQ(m.uvs.size(), 3u);
     EXPECT_EQ(m.uvs[2], glm::vec2(0, 1));
+}
+
+std::string textured_ply(const std::string& texture_comment, const std::string& u = "texture_u", const std::string& v = "texture_v") {
+    return "ply\nformat ascii 1.0\n" + texture_comment + "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+           "property float " + u + "\nproperty float " + v + "\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+           "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n";
+}
+
+TEST(PlyReader, TextureUvPropertyNamesAreRead) {
+    TempDir dir;
+    for (auto [u, v] : {std::pair{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}) {
+        Mesh m = load_mesh(dir.write("uv.ply", textured_ply("", u, v)));
+        ASSERT_EQ(m.uvs.size(), 4u) << u;
+        EXPECT_EQ(m.uvs[2], glm::vec2(1, 1)) << u;
+        EXPECT_EQ(m.uvs[1], glm::vec2(1, 0)) << u;
+    }
+}
+
+TEST(PlyReader, TextureFileCommentLoadsTheTexture) {
+    TempDir dir;
+    dir.write("scan texture.png", png_bytes(2, 2, kTexturePixels));
+    Mesh m = load_mesh(dir.write("scan.ply", textured_ply("comment TextureFile scan texture.png\n")));
+    ASSERT_EQ(m.materials.size(), 1u);
+    ASSERT_TRUE(m.materials[0].texture);
+    EXPECT_EQ(m.materials[0].texture->rgba, kTexturePixels);
+    EXPECT_EQ(m.materials[0].diffuse, glm::vec3(1));
+    EXPECT_EQ(m.face_materials, (std::vector<uint32_t>{0, 0}));
+    EXPECT_TRUE(m.warnings.empty());
+}
+
+TEST(PlyReader, MissingTextureFileIsAWarningNotAFailure) {
+    TempDir dir;
+    std::string p = dir.write("scan.ply", textured_ply("comment TextureFile gone.png\n"));
+    Mesh m = load_mesh(p);
+    EXPECT_EQ(m.triangle_count(), 2u);
+    EXPECT_TRUE(m.materials.empty());
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], p + ": texture 'gone.png' not loaded (file not found); using the base colour");
+}
+
+TEST(PlyReader, SoupWeldingKeepsUvSeamsAndMergesTheRest) {
+    TempDir dir;
+    // Two triangles written as a soup sharing the edge (0,0,0)-(1,1,0); the uvs agree at
+    // (0,0,0) but differ at (1,1,0) (a texture seam).
+    std::string s = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                    "property float u\nproperty float v\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                    "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 0 0 0 0\n1 1 0 0.5 0.5\n0 1 0 0 1\n3 0 1 2\n3 3 4 5\n";
+    Mesh m = load_mesh(dir.write("seam.ply", s));
+    EXPECT_TRUE(m.welded);
+    ASSERT_EQ(m.vertex_count(), 5u);  // (0,0,0) merged; (1,1,0) kept twice
+    ASSERT_EQ(m.uvs.size(), 5u);
+    EXPECT_EQ(m.triangles[0].x, m.triangles[1].x);
+    EXPECT_NE(m.triangles[0].z, m.triangles[1].y);
+    EXPECT_EQ(m.uvs[m.triangles[0].z], glm::vec2(1, 1));
+    EXPECT_EQ(m.uvs[m.triangles[1].y], glm::vec2(0.5f, 0.5f));
+    EXPECT_EQ(m.positions[m.triangles[1].y], glm::vec3(1, 1, 0));
+}
+
+TEST(PlyReader, SoupWeldingKeepsColourBoundaries) {
+    TempDir dir;
+    std::string s = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                    "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 2\n"
+                    "property list uchar int vertex_indices\nend_header\n"
+                    "0 0 0 255 0 0\n1 0 0 255 0 0\n1 1 0 255 0 0\n0 0 0 0 0 255\n1 1 0 0 0 255\n0 1 0 0 0 255\n3 0 1 2\n3 3 4 5\n";
+    Mesh m = load_mesh(dir.write("colours.ply", s));
+    EXPECT_EQ(m.vertex_count(), 6u);  // every shared position changes colour: nothing merges
+    for (size_t k = 0; k < 3; ++k) EXPECT_EQ(m.colors[m.triangles[1][k]], glm::vec3(0, 0, 1));
 }
 
 TEST(PlyReader, FloatColoursAreKeptAsIs) {

@@ -64,7 +64,7 @@ TEST(Style, BadFilesGiveOneLineErrorsNamingTheProblem) {
         {"[shading]\nmodel = 'phong'\nspecular = [1, 2]", "needs 3 values"},
         {"background = 'nope'\n[shading]\nmodel = 'phong'", "background"},
         {"[light]\nsun = 1\n[shading]\nmodel = 'phong'", "unknown key 'sun' in [light]"},
-        {"[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'hull'", "unknown line type 'hull'"},
+        {"[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'no-such-line'", "unknown line type 'no-such-line'"},
     };
     for (const auto& [text, phrase] : cases) {
         std::string e = error_of(text);
@@ -89,7 +89,7 @@ TEST(Style, BuiltinsIncludePresetsAndOneStylePerModel) {
     auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
     for (const ShadingModel* m : shading_models()) EXPECT_TRUE(has(m->name)) << m->name;
     for (const char* preset : {"cel-000", "cel-002", "cel-004", "toon"}) EXPECT_TRUE(has(preset)) << preset;
-    EXPECT_FALSE(has("anime"));  // reserved for the raster-line issue
+    for (const char* composite : {"anime", "ink"}) EXPECT_TRUE(has(composite)) << composite;
 }
 
 // Seed 000 eq. 4: half-Lambert > 0.8 -> 1, > 0.6 -> 0.75, > 0.4 -> 0.5, > 0.2 -> 0.25, else 0.
@@ -143,6 +143,45 @@ TEST(Style, EveryBuiltinStyleRenders) {
         if (name != "view") {  // v is constant under an orthographic camera
             EXPECT_GT(hi - lo, 0) << name << " renders one flat colour";
         }
+    }
+}
+
+// The composite styles: anime = cel-000 + hull + rim contour + image-space suggestive contours
+// (seed 000's combined result), toon = seed 004's cel + hull outline, ink = white fill + every
+// raster line type. Each renders the teapot with its lines: dark line pixels, and more of them
+// than the same style without lines.
+TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
+    auto types_of = [](const Style& s) {
+        std::vector<std::string> t;
+        for (const LineSettings& l : s.lines) t.push_back(l.type);
+        return t;
+    };
+    EXPECT_EQ(types_of(load_style("anime")), (std::vector<std::string>{"hull", "rim-contour", "suggestive-image"}));
+    EXPECT_EQ(types_of(load_style("toon")), (std::vector<std::string>{"hull"}));
+    EXPECT_EQ(types_of(load_style("ink")),
+              (std::vector<std::string>{"hull", "rim-contour", "edges", "suggestive-image"}));
+    EXPECT_EQ(load_style("anime").shading.params, load_style("cel-000").shading.params);
+
+    Renderer& r = test::shared_renderer();
+    const Mesh teapot = load_mesh("builtin:teapot");
+    r.set_mesh(teapot);
+    CameraOptions co;
+    const Camera camera = frame_camera(teapot.bounds(), co, 1.0f);
+    for (const char* name : {"anime", "toon", "ink"}) {
+        Style s = load_style(name);
+        RenderOptions o;
+        o.width = o.height = 192;
+        o.background = s.background;
+        Light light = default_light(teapot.bounds(), camera);
+        apply_style_light(s, light);
+        auto dark_pixels = [&](const std::vector<LineSettings>& lines) {
+            Image img = r.render(camera, light, s.shading, lines, o);
+            int n = 0;
+            for (size_t i = 0; i < img.rgba.size(); i += 4) n += img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2] < 60;
+            return n;
+        };
+        const int with = dark_pixels(s.lines), without = dark_pixels({});
+        EXPECT_GT(with, without + 300) << name;
     }
 }
 

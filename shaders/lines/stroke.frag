@@ -1,0 +1,47 @@
+#version 450 core
+// stroke: coverage of the capsule around segment a-b whose radius goes linearly from r0 to r1
+// (distance to the closest point a + t (b - a), inside when <= mix(r0, r1, t)).
+//  - multisampled targets: each sample inside the capsule sets its bit of gl_SampleMask
+//    (positions from interpolateAtSample), alpha = opacity: exact coverage, and with the
+//    stencil (render/stroke_pass.cpp) a sample is blended once per draw;
+//  - single-sampled: alpha = opacity * clamp(r - distance + 0.5, 0, 1) at the pixel centre.
+// Depth: window depth interpolated along the segment minus a bias (lines lie on the surface).
+in vec2 v_px;
+flat in vec4 v_ends;
+flat in vec4 v_radius_depth;
+
+uniform vec4 u_color;  // rgb, opacity
+uniform float u_depth_bias;
+uniform int u_depth_test;
+uniform int u_multisample;
+
+layout(location = 0) out vec4 o_color;
+
+// Signed distance to the capsule's border (negative inside); t = parameter of the closest point.
+float capsule(vec2 p, out float t) {
+    vec2 a = v_ends.xy, b = v_ends.zw, ab = b - a;
+    float l2 = dot(ab, ab);
+    t = l2 > 0.0 ? clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+    return length(p - (a + t * ab)) - mix(v_radius_depth.x, v_radius_depth.y, t);
+}
+
+void main() {
+    float t;
+    float alpha = u_color.a;
+    if (u_multisample == 1) {
+        int mask = 0;
+        for (int i = 0; i < gl_NumSamples; ++i) {
+            float ts;
+            if (capsule(interpolateAtSample(v_px, i), ts) <= 0.0) mask |= 1 << i;
+        }
+        if (mask == 0) discard;
+        gl_SampleMask[0] = mask;
+        capsule(v_px, t);
+    } else {
+        float coverage = clamp(0.5 - capsule(v_px, t), 0.0, 1.0);
+        if (coverage <= 0.0) discard;
+        alpha *= coverage;
+    }
+    gl_FragDepth = u_depth_test == 1 ? mix(v_radius_depth.z, v_radius_depth.w, t) - u_depth_bias : 0.0;
+    o_color = vec4(u_color.rgb, alpha);
+}

@@ -1,0 +1,43 @@
+// Anti-aliased strokes for polylines given in image pixels (inkshade/line_drawing.hpp's
+// LinePath: origin top-left, y down): every segment is a quad around a capsule (round caps and
+// round joins, so no gaps at any angle), width optionally tapered by per-point strength; the
+// fragment shader computes coverage analytically. With MSAA each sample is tested against the
+// capsule (gl_SampleMask) and the stencil lets a sample be covered once per draw, so joins and
+// overlaps of one layer never blend twice; without MSAA the pixel coverage becomes alpha.
+// Depth-tested against the scene with a bias when every path has per-point depth.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "gpu/shader_program.hpp"
+#include "inkshade/line_drawing.hpp"
+
+namespace inkshade::render {
+
+struct StrokeStyle {
+    glm::vec3 color{0.0f};
+    float opacity = 1.0f;
+    float width = 1.0f;         // pixels; times strength when taper is on
+    bool taper = true;          // width * strength (LinePath::strength) per point
+    float depth_bias = 2e-4f;   // subtracted from the paths' window depth before the test
+};
+
+class StrokePass {
+public:
+    StrokePass();
+    ~StrokePass();
+    StrokePass(const StrokePass&) = delete;
+    StrokePass& operator=(const StrokePass&) = delete;
+
+    // Draws `paths` into the bound framebuffer of width x height pixels with `samples`
+    // samples (its depth/stencil buffer is used; the stencil is cleared).
+    void draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height, int samples);
+
+private:
+    std::unique_ptr<gpu::ShaderProgram> program_;
+    GLuint vao_ = 0, buffer_ = 0;
+};
+
+}  // namespace inkshade::render

@@ -1,0 +1,105 @@
+// The raster line passes together: lines of an object behind another are hidden by it;
+// rendering twice gives the same bytes; object-space line types are left to other passes;
+// the old render() is the new one with no lines.
+#include <cstring>
+
+#include "core/builtin_models.hpp"
+#include "render/render_fixture.hpp"
+
+namespace inkshade::test {
+namespace {
+
+Mesh translated_sphere(glm::vec3 centre, float radius) {
+    Mesh m = builtin::sphere(64, 128);
+    for (glm::vec3& p : m.positions) p = centre + radius * p;
+    return m;
+}
+
+Mesh two_spheres() {
+    Mesh m = translated_sphere({0.5f, 0.2f, -2.0f}, 0.8f);        // behind
+    Mesh front = translated_sphere({-0.3f, -0.1f, 0.0f}, 0.6f);  // in front, overlapping it
+    const uint32_t base = uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), front.positions.begin(), front.positions.end());
+    m.normals.insert(m.normals.end(), front.normals.begin(), front.normals.end());
+    for (glm::uvec3 t : front.triangles) m.triangles.push_back(t + glm::uvec3(base));
+    return m;
+}
+
+std::vector<LineSettings> all_raster_lines() {
+    std::vector<LineSettings> lines;
+    for (const char* type : {"hull", "rim-contour", "edges", "suggestive-image"}) {
+        LineSettings l{type, {}};
+        l.params["color"] = {0, 0, 1};
+        lines.push_back(l);
+    }
+    return lines;
+}
+
+Image render_lines(const Mesh& mesh, const std::vector<LineSettings>& lines) {
+    Renderer& r = shared_renderer();
+    r.set_mesh(mesh);
+    RenderOptions o;
+    o.width = o.height = kSize;
+    ShadingSelection s;
+    s.model = "lambert";
+    s.base_color = glm::vec3(0, 1, 0);
+    return r.render(ortho_camera(), directional_light(glm::vec3(0, 0, 1), glm::vec3(0), glm::vec3(1)), s, lines, o);
+}
+
+bool blue(const uint8_t* p) { return p[2] > 100 && p[1] < 160; }
+
+TEST(RasterLines, BackObjectLinesHiddenBehindFrontObject) {
+    Image img = render_lines(two_spheres(), all_raster_lines());
+    const Camera cam = ortho_camera();
+    const glm::vec2 front = project(cam, {-0.3f, -0.1f, 0.0f}), back = project(cam, {0.5f, 0.2f, -2.0f});
+    const float px = float(kSize) / cam.ortho_height, front_r = 0.6f * px, back_r = 0.8f * px;
+    int inside = 0, back_outline = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec2 q(x + 0.5f, y + 0.5f);
+            const float df = glm::length(q - front), db = glm::length(q - back);
+            // Inside the front disc away from its own rim (n.v > 0.6): no line, although the
+            // back sphere's outline passes behind.
+            if (df < 0.8f * front_r) {
+                EXPECT_FALSE(blue(img.pixel(x, y))) << "line inside the front object at " << x << "," << y;
+                ++inside;
+            }
+            // The back sphere's outline where the front one does not cover it: drawn.
+            if (std::abs(db - back_r) < 1.0f && df > front_r + 6.0f) back_outline += blue(img.pixel(x, y));
+        }
+    EXPECT_GT(inside, 1000);
+    EXPECT_GT(back_outline, 100);
+}
+
+TEST(RasterLines, RenderingTwiceGivesIdenticalBytes) {
+    const Mesh mesh = builtin::teapot(8);
+    Image a = render_lines(mesh, all_raster_lines());
+    Image b = render_lines(mesh, all_raster_lines());
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    EXPECT_EQ(std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size()), 0);
+}
+
+TEST(RasterLines, NoLinesEqualsThePlainRender) {
+    Renderer& r = shared_renderer();
+    r.set_mesh(fine_sphere());
+    RenderOptions o;
+    o.width = o.height = 64;
+    ShadingSelection s;
+    Light light;
+    Image a = r.render(ortho_camera(), light, s, o);
+    Image b = r.render(ortho_camera(), light, s, std::vector<LineSettings>{}, o);
+    EXPECT_EQ(a.rgba, b.rgba);
+}
+
+TEST(RasterLines, ObjectSpaceTypesAreSkipped) {
+    const LineType* object_type = nullptr;
+    for (const LineType* t : line_types())
+        if (t->space == LineSpace::Object) object_type = t;
+    if (!object_type) GTEST_SKIP() << "no object-space line type registered in this build";
+    Image a = render_lines(fine_sphere(), {});
+    Image b = render_lines(fine_sphere(), {LineSettings{object_type->name, {}}});
+    EXPECT_EQ(a.rgba, b.rgba);
+}
+
+}  // namespace
+}  // namespace inkshade::test

@@ -1,0 +1,111 @@
+// StrokePass: anti-aliased capsule strokes of polylines in image pixels. Pixels whose centres
+// lie well inside the stroke are fully covered, well outside untouched, on the border about
+// half covered; the join of an L has no gap and, at half opacity, is not blended twice; the
+// taper narrows the stroke; strokes behind the depth buffer are hidden.
+#include <cmath>
+
+#include "gpu/framebuffer.hpp"
+#include "render/render_fixture.hpp"
+#include "render/stroke_pass.hpp"
+
+namespace inkshade::test {
+namespace {
+
+constexpr int kW = 64;
+
+float distance_to_path(glm::vec2 p, const std::vector<glm::vec2>& pts) {
+    float d = INFINITY;
+    for (size_t i = 0; i + 1 < pts.size(); ++i) {
+        glm::vec2 a = pts[i], ab = pts[i + 1] - a;
+        float t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
+        d = std::min(d, glm::length(p - (a + t * ab)));
+    }
+    return d;
+}
+
+// Draws `paths` black on white into a kW x kW framebuffer whose depth is cleared to `depth`.
+Image draw(const std::vector<LinePath>& paths, const render::StrokeStyle& style, int samples = 4,
+           float depth = 1.0f) {
+    shared_renderer();  // a current context
+    gpu::Framebuffer fb(kW, kW, samples);
+    fb.bind();
+    glClearColor(1, 1, 1, 1);
+    glClearDepth(depth);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    render::StrokePass pass;
+    pass.draw(paths, style, kW, kW, samples);
+    fb.resolve();
+    return fb.read(false);
+}
+
+LinePath path(std::vector<glm::vec2> pts) {
+    LinePath p;
+    p.points = std::move(pts);
+    return p;
+}
+
+TEST(StrokePass, CoverageMatchesAnalyticDistance) {
+    const std::vector<glm::vec2> pts = {{10, 10}, {50, 10}, {50, 50}};
+    render::StrokeStyle style;
+    style.width = 5.0f;
+    for (int samples : {1, 4}) {
+        Image img = draw({path(pts)}, style, samples);
+        int inside = 0, outside = 0, border = 0;
+        for (int y = 0; y < kW; ++y)
+            for (int x = 0; x < kW; ++x) {
+                const float d = distance_to_path({x + 0.5f, y + 0.5f}, pts);
+                const int v = img.pixel(x, y)[0];
+                if (d < 2.5f - 0.75f) {
+                    EXPECT_LE(v, 5) << "uncovered inside at " << x << "," << y << " samples " << samples;
+                    ++inside;
+                } else if (d > 2.5f + 0.75f) {
+                    EXPECT_GE(v, 250) << "covered outside at " << x << "," << y << " samples " << samples;
+                    ++outside;
+                } else if (std::abs(d - 2.5f) < 0.05f) {
+                    EXPECT_NEAR(v, 128, 70) << "border pixel " << x << "," << y << " samples " << samples;
+                    ++border;
+                }
+            }
+        EXPECT_GT(inside, 150);
+        EXPECT_GT(border, 20);
+    }
+}
+
+// With MSAA the stencil lets each sample take the colour once: the round join and the
+// overlapping segment ends are as grey as the straight parts at half opacity.
+TEST(StrokePass, HalfOpacityJoinIsNotBlendedTwice) {
+    render::StrokeStyle style;
+    style.width = 6.0f;
+    style.opacity = 0.5f;
+    Image img = draw({path({{10, 10}, {50, 10}, {50, 50}})}, style);
+    const int straight = img.pixel(30, 10)[0];
+    EXPECT_NEAR(straight, 128, 3);
+    EXPECT_NEAR(int(img.pixel(50, 10)[0]), straight, 2);  // the join
+    EXPECT_NEAR(int(img.pixel(49, 11)[0]), straight, 2);
+}
+
+TEST(StrokePass, StrengthTapersWidth) {
+    LinePath p = path({{8, 32}, {56, 32}});
+    p.strength = {1.0f, 0.2f};
+    render::StrokeStyle style;
+    style.width = 10.0f;
+    Image img = draw({p}, style);
+    // Half-width 5 at x = 8, 1 at x = 56: at x = 12 rows 28..35 are covered, at x = 52 only 31..32.
+    EXPECT_LE(int(img.pixel(12, 28)[0]), 5);
+    EXPECT_GE(int(img.pixel(52, 28)[0]), 250);
+    EXPECT_LE(int(img.pixel(52, 31)[0]), 60);
+}
+
+TEST(StrokePass, DepthTestHidesStrokesBehindTheSurface) {
+    LinePath p = path({{8, 32}, {56, 32}});
+    p.depth = {0.6f, 0.6f};
+    render::StrokeStyle style;
+    style.width = 4.0f;
+    EXPECT_GE(int(draw({p}, style, 4, 0.5f).pixel(32, 32)[0]), 250);  // behind: hidden
+    EXPECT_LE(int(draw({p}, style, 4, 0.7f).pixel(32, 32)[0]), 5);    // in front: drawn
+    // Lying on the surface (equal depth): the bias keeps it visible.
+    EXPECT_LE(int(draw({p}, style, 4, 0.6f).pixel(32, 32)[0]), 5);
+}
+
+}  // namespace
+}  // namespace inkshade::test
