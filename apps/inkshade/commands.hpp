@@ -10,6 +10,8 @@ namespace inkshade::cli {
 using Command = std::function<int()>;
 
 Command add_render_command(CLI::App& app);
+Command add_lines_command(CLI::App& app);
+Command add_view_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
 Command add_styles_command(CLI::App& app);
 Command add_demo_command(CLI::App& app);

@@ -1,12 +1,35 @@
 // `inkshade info MODEL`: facts about a mesh as loaded.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <set>
 
 #include "commands.hpp"
 #include "geometry/mesh_stats.hpp"
 #include "inkshade/io.hpp"
 
 namespace inkshade::cli {
+
+namespace {
+
+// What the load got past (a texture not found, skipped primitives): one line each on stderr,
+// not an error.
+void print_warnings(const Mesh& mesh) {
+    for (std::string line : mesh.warnings) {
+        std::replace(line.begin(), line.end(), '\n', ' ');
+        std::fprintf(stderr, "inkshade: warning: %s\n", line.c_str());
+    }
+}
+
+// Distinct images among the materials' textures (materials may share one).
+size_t texture_count(const Mesh& mesh) {
+    std::set<const Texture*> textures;
+    for (const Material& m : mesh.materials)
+        if (m.texture) textures.insert(m.texture.get());
+    return textures.size();
+}
+
+}  // namespace
 
 Command add_info_command(CLI::App& app) {
     auto model = std::make_shared<std::string>();
@@ -15,6 +38,7 @@ Command add_info_command(CLI::App& app) {
     return [model] {
         auto start = std::chrono::steady_clock::now();
         Mesh mesh = load_mesh(*model);
+        print_warnings(mesh);
         double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         geometry::MeshStats s = geometry::mesh_stats(mesh);
         BoundingBox b = mesh.bounds();
@@ -34,6 +58,8 @@ Command add_info_command(CLI::App& app) {
         std::printf("components:           %zu\n", s.components);
         std::printf("euler characteristic: %ld\n", s.euler_characteristic);
         std::printf("materials:            %zu\n", mesh.materials.size());
+        std::printf("textures:             %zu\n", texture_count(mesh));
+        std::printf("texture coordinates:  %s\n", mesh.uvs.empty() ? "no" : "yes");
         std::printf("vertex colours:       %s\n", mesh.colors.empty() ? "no" : "yes");
         std::printf("load time:            %.1f ms\n", load_ms);
         return 0;

@@ -33,6 +33,15 @@ void check_output_path(const std::string& path) {
     if (!fs::is_directory(dir, ec)) throw InputError(path + ": directory " + dir.string() + " does not exist");
 }
 
+// What the load got past (a texture not found, skipped primitives): one line each on stderr,
+// not an error.
+void print_warnings(const Mesh& mesh) {
+    for (std::string line : mesh.warnings) {
+        std::replace(line.begin(), line.end(), '\n', ' ');
+        std::fprintf(stderr, "inkshade: warning: %s\n", line.c_str());
+    }
+}
+
 struct RenderArgs {
     SceneOptions scene;
     std::string output;
@@ -47,6 +56,7 @@ int run_render(const RenderArgs& args) {
     const ShadingSelection& shading = style.shading;
     const auto load_start = std::chrono::steady_clock::now();
     const Mesh mesh = load_mesh(args.scene.model);
+    print_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();

@@ -25,12 +25,13 @@ glm::vec3 parse_vec3(const std::string& option, const std::string& text) {
     return v;
 }
 
-void SceneOptions::add_to(CLI::App& cmd) {
+void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("MODEL", model, "mesh file (.obj .stl .ply .off) or builtin:sphere|torus|torus-knot|teapot")
-        ->required();
+        ->required(model_required);
     cmd.add_option("--style", style, "built-in style name or style file (.toml); see `inkshade styles`");
     cmd.add_option("--shading", shading, "shading model with default parameters (default lambert)");
-    cmd.add_option("--set", sets, "parameter override [model.]param=value (repeatable)")
+    cmd.add_option("--set", sets,
+                   "parameter override [model.]param=value, or TYPE.param=value for a line type (repeatable)")
         ->allow_extra_args(false);  // one value per --set, so MODEL may follow
     cmd.add_option("--size", size, "image size WxH")->capture_default_str();
     cmd.add_option("--azimuth", azimuth, "camera azimuth in degrees about +y (0 = from +z)");
@@ -52,15 +53,20 @@ void SceneOptions::add_to(CLI::App& cmd) {
     cmd.add_flag("--srgb", srgb, "sRGB-encode the output (default: formula values as they are)");
 }
 
-RenderOptions SceneOptions::render_options(const Style& style) const {
-    RenderOptions o;
+glm::ivec2 SceneOptions::image_size() const {
     int w = 0, h = 0;
     char x = 0;
     std::istringstream in(size);
     if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w <= 0 || h <= 0 || w > 16384 || h > 16384)
         throw InputError("--size: expected WxH with each side in 1..16384, got '" + size + "'");
-    o.width = w;
-    o.height = h;
+    return {w, h};
+}
+
+RenderOptions SceneOptions::render_options(const Style& style) const {
+    RenderOptions o;
+    const glm::ivec2 wh = image_size();
+    o.width = wh.x;
+    o.height = wh.y;
     if (samples < 1 || samples > 16) throw InputError("--samples: expected 1..16, got " + std::to_string(samples));
     o.samples = samples;
     o.background = style.background;
@@ -69,35 +75,22 @@ RenderOptions SceneOptions::render_options(const Style& style) const {
 }
 
 Style SceneOptions::resolved_style() const {
+    Style s = loaded_style();
+    apply_overrides(s);
+    return s;
+}
+
+Style SceneOptions::loaded_style() const {
     if (!style.empty() && !shading.empty())
         throw InputError("--style and --shading are alternatives: use one (a style names its shading model)");
-    Style s;
-    if (!shading.empty()) {
-        s = load_style(shading_model(shading).name);  // validates the model name
-    } else {
-        s = load_style(style.empty() ? "lambert" : style);
-    }
-    const ShadingModel& model = shading_model(s.shading.model);
+    if (!shading.empty()) return load_style(shading_model(shading).name);  // validates the model name
+    return load_style(style.empty() ? "lambert" : style);
+}
+
+void SceneOptions::apply_overrides(Style& s) const {
     for (const std::string& set : sets) {
-        size_t eq = set.find('=');
-        if (eq == std::string::npos) throw InputError("--set: expected [model.]param=value, got '" + set + "'");
-        std::string key = set.substr(0, eq), value = set.substr(eq + 1);
-        if (size_t dot = key.find('.'); dot != std::string::npos) {
-            std::string prefix = key.substr(0, dot);
-            if (prefix != model.name)
-                throw InputError("--set " + set + ": parameter is for model '" + prefix +
-                                 "' but the shading model is '" + model.name + "'");
-            key = key.substr(dot + 1);
-        }
-        const ParamSpec* spec = model.param(key);
-        if (!spec) {
-            std::string names;
-            for (const auto& p : model.params) names += (names.empty() ? "" : ", ") + p.name;
-            throw InputError("--set " + set + ": model '" + model.name + "' has no parameter '" + key + "'" +
-                             (names.empty() ? " (it has none)" : " (it has " + names + ")"));
-        }
         try {
-            s.shading.params[spec->name] = parse_param_value(*spec, value);
+            apply_override(s, set);
         } catch (const InputError& e) {
             throw InputError("--set " + set + ": " + e.what());
         }
@@ -113,10 +106,13 @@ Style SceneOptions::resolved_style() const {
     if (!background.empty()) s.background = color("--background", background);
     if (!light_color.empty()) s.light_color = glm::vec3(color("--light-color", light_color));
     if (!ambient.empty()) s.ambient = glm::vec3(color("--ambient", ambient));
-    return s;
 }
 
 Camera SceneOptions::camera(const BoundingBox& box, float aspect) const {
+    return frame_camera(box, camera_options(), aspect);
+}
+
+CameraOptions SceneOptions::camera_options() const {
     CameraOptions o;
     o.azimuth_degrees = azimuth;
     o.elevation_degrees = elevation;
@@ -132,7 +128,7 @@ Camera SceneOptions::camera(const BoundingBox& box, float aspect) const {
     if (!(fov > 0.0f && fov < 180.0f)) throw InputError("--fov: expected degrees in (0, 180)");
     o.fov_degrees = fov;
     o.orthographic = ortho;
-    return frame_camera(box, o, aspect);
+    return o;
 }
 
 Light SceneOptions::light(const BoundingBox& box, const Camera& camera, const Style& style) const {

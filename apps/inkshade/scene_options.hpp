@@ -16,7 +16,7 @@ struct SceneOptions {
     std::string model;
     std::string style;    // --style NAME|FILE
     std::string shading;  // --shading NAME (the model's built-in style)
-    std::vector<std::string> sets;  // --set [model.]param=value
+    std::vector<std::string> sets;  // --set [model.]param=value or TYPE.param=value (line types)
     std::string size = "1024x1024";
     std::optional<float> azimuth, elevation, distance;
     std::string eye, target, up;
@@ -27,13 +27,21 @@ struct SceneOptions {
     int samples = 4;
     bool srgb = false;
 
-    void add_to(CLI::App& cmd);
+    // MODEL is a required positional unless model_required is false (`view` opens a default).
+    void add_to(CLI::App& cmd, bool model_required = true);
 
     // Resolved values; each throws InputError naming the option on a bad value.
     // The style named by --style or --shading (default lambert) with --set, --base-color
     // and --background applied.
     Style resolved_style() const;
+    // The two steps of resolved_style, for commands that choose the style's line types in
+    // between (`inkshade lines --lines ...`): the style as named, then the overrides. A --set
+    // TYPE.param=value applies to line type TYPE, which the style must draw.
+    Style loaded_style() const;
+    void apply_overrides(Style& style) const;
+    glm::ivec2 image_size() const;  // --size
     RenderOptions render_options(const Style& style) const;
+    CameraOptions camera_options() const;  // checked camera options, before framing
     Camera camera(const BoundingBox& box, float aspect) const;
     Light light(const BoundingBox& box, const Camera& camera, const Style& style) const;
 };

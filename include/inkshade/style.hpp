@@ -26,8 +26,8 @@ struct Style {
 void apply_style_light(const Style& style, Light& light);
 
 // Applies one override "param=value" or "MODEL.param=value" (a parameter of the style's shading
-// model) or "LINETYPE.param=value" (a parameter of a line type, which is added to the style when
-// absent), as --set and the viewer's scripts give them. Throws InputError naming the problem.
+// model) or "LINETYPE.param=value" (a parameter of a line type the style draws), as --set and the
+// viewer's scripts give them. Throws InputError naming the problem; the style is then unchanged.
 void apply_override(Style& style, const std::string& text);
 
 // Parses a style file's text. `source` names it in errors: InputError("SOURCE: problem").

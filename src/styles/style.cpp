@@ -190,10 +190,16 @@ void apply_override(Style& style, const std::string& text) {
         style.shading.params[spec->name] = std::move(v);
         return;
     }
-    auto it = std::find_if(style.lines.begin(), style.lines.end(),
-                           [&](const LineSettings& l) { return l.type == line->name; });
-    if (it == style.lines.end()) it = style.lines.insert(style.lines.end(), LineSettings{line->name, {}});
-    it->params[spec->name] = std::move(v);
+    std::string drawn;
+    for (LineSettings& l : style.lines) {
+        if (l.type == line->name) {
+            l.params[spec->name] = std::move(v);
+            return;
+        }
+        drawn += (drawn.empty() ? "" : ", ") + l.type;
+    }
+    throw InputError("the style draws no '" + line->name + "' lines (" +
+                     (drawn.empty() ? std::string("it draws none") : "it draws " + drawn) + ")");
 }
 
 Style parse_style(std::string_view text, const std::string& source) {

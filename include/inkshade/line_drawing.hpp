@@ -1,0 +1,77 @@
+// Object-space line drawings: the vector line types of a style (contour, suggestive, crease,
+// border, ridge, valley — LineSpace::Object) extracted from the mesh for one view, with hidden
+// parts removed, chained into polylines in image coordinates. The same drawing is written as
+// SVG (`inkshade lines`), as JSON (--lines-json) and drawn as GPU strokes by the renderer.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "inkshade/camera.hpp"
+#include "inkshade/lines.hpp"
+#include "inkshade/mesh.hpp"
+
+namespace inkshade {
+
+// One polyline in image coordinates: pixels, origin at the top-left corner of the image, y
+// down (SVG's convention; pixel (i, j) covers [i, i+1] x [j, j+1]).
+struct LinePath {
+    std::vector<glm::vec2> points;  // a closed path does not repeat its first point
+    std::vector<float> depth;       // per point: window depth in [0, 1] as in the GL depth buffer
+    std::vector<float> strength;    // per point in [0, 1]: fading and taper (1 = full stroke)
+    bool closed = false;
+};
+
+struct LineLayer {
+    LineSettings settings;         // the line type and its parameters
+    std::vector<LinePath> visible;
+    std::vector<LinePath> hidden;  // only when the type's "hidden" parameter asks for them
+};
+
+struct LineDrawing {
+    int width = 0, height = 0;     // image size in pixels (the SVG viewBox)
+    std::vector<LineLayer> layers;  // one per object-space line type, in the style's order
+};
+
+struct LineTiming {
+    std::string stage;  // "normals+curvature", "extract", "visibility", "chain", ...
+    double milliseconds = 0.0;
+};
+
+// Keeps what depends on the mesh only (normals, adjacency, curvature, the ray-casting scene),
+// so new views of one mesh cost only the per-view work. Pipeline, visibility method and its
+// tolerance: docs/lines.md. One extractor is not safe to use from two threads at once.
+class LineExtractor {
+public:
+    // Copies positions, triangles and normals (the mesh's when sane, else angle-weighted), so
+    // `mesh` may go away; mesh-wide data is computed on the first draw that needs it.
+    explicit LineExtractor(const Mesh& mesh);
+    ~LineExtractor();
+    LineExtractor(const LineExtractor&) = delete;
+    LineExtractor& operator=(const LineExtractor&) = delete;
+
+    // The drawing of the object-space line types among `lines` (image-space types are skipped)
+    // seen by `camera` in a width x height image, one layer per type in the order of `lines`.
+    // Throws InputError for a bad size or an unknown type. `timings` receives milliseconds
+    // per stage summed over the types: per view "extract", "visibility", "chain", "finish";
+    // on the draw that computes them, the once-per-mesh "ray scene", "curvature", ...
+    LineDrawing draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
+                     std::vector<LineTiming>* timings = nullptr);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// SVG 1.1 text: viewBox = image size, one <g> layer per line type (id and inkscape:label),
+// each polyline a <path> with its stroke colour, opacity and width; hidden lines in their own
+// dashed layer. `background` with alpha 0 writes no background rectangle.
+std::string format_svg(const LineDrawing& drawing, glm::vec4 background);
+// Writes format_svg atomically (temporary file + rename). Throws RuntimeError on failure.
+void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background);
+
+// JSON for scripting: image size and, per layer, its type, parameters and polylines (points,
+// depth, strength, closed, hidden).
+std::string format_lines_json(const LineDrawing& drawing);
+
+}  // namespace inkshade

@@ -1,0 +1,155 @@
+// LineExtractor: per view, for each object-space line type of the style: extract segments
+// (world space) → split by visibility (ray casting, visibility.hpp) → chain into polylines →
+// project to image pixels → drop short chains and smooth (in pixels) → one layer.
+#include <chrono>
+#include <map>
+
+#include "geometry/chaining.hpp"
+#include "geometry/line_types/mesh_line_data.hpp"
+#include "geometry/line_types/object_line_registry.hpp"
+#include "geometry/visibility.hpp"
+#include "inkshade/error.hpp"
+#include "inkshade/line_drawing.hpp"
+
+namespace inkshade {
+
+using namespace geometry;
+
+struct LineExtractor::Impl {
+    MeshLineData data;
+    std::unique_ptr<RayScene> scene;  // built on the first draw (timed there)
+    explicit Impl(const Mesh& mesh) : data(mesh) {}
+};
+
+LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
+LineExtractor::~LineExtractor() = default;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Sums milliseconds per stage over the line types, stages in first-seen order.
+class StageTimer {
+public:
+    explicit StageTimer(std::vector<LineTiming>* out) : out_(out) {}
+    template <class F>
+    auto operator()(const std::string& stage, F&& f) {
+        const auto start = Clock::now();
+        auto result = f();
+        add(stage, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        return result;
+    }
+    void add(const std::string& stage, double ms) {
+        if (!out_) return;
+        for (auto& t : *out_)
+            if (t.stage == stage) {
+                t.milliseconds += ms;
+                return;
+            }
+        out_->push_back({stage, ms});
+    }
+
+private:
+    std::vector<LineTiming>* out_;
+};
+
+// World polylines → image paths; drops those shorter than min_length px, then smooths.
+std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImageProjection& view, float min_length_px,
+                               int smooth_iterations) {
+    std::vector<Polyline> image;  // (x, y, 0) in pixels, for drop_short and smoothing
+    std::vector<std::vector<float>> depths;
+    image.reserve(lines.size());
+    for (const Polyline& line : lines) {
+        Polyline p;
+        p.closed = line.closed;
+        p.strength = line.strength;
+        p.points.reserve(line.points.size());
+        std::vector<float> depth;
+        depth.reserve(line.points.size());
+        for (const glm::vec3& q : line.points) {
+            const glm::dvec3 s = view.project(q);
+            p.points.emplace_back(float(s.x), float(s.y), 0.0f);
+            depth.push_back(float(s.z));
+        }
+        if (p.strength.size() != p.points.size()) p.strength.assign(p.points.size(), 1.0f);
+        if (p.points.size() < 2 || polyline_length(p) < min_length_px) continue;
+        image.push_back(std::move(p));
+        depths.push_back(std::move(depth));
+    }
+    if (smooth_iterations > 0) smooth_polylines(image, smooth_iterations);
+    std::vector<LinePath> paths(image.size());
+    for (size_t i = 0; i < image.size(); ++i) {
+        LinePath& path = paths[i];
+        path.closed = image[i].closed;
+        path.points.reserve(image[i].points.size());
+        for (const glm::vec3& q : image[i].points) path.points.emplace_back(q.x, q.y);
+        path.depth = std::move(depths[i]);
+        path.strength = std::move(image[i].strength);
+    }
+    return paths;
+}
+
+}  // namespace
+
+LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
+                                std::vector<LineTiming>* timings) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        throw InputError("line drawing size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
+                         std::to_string(height));
+    if (timings) timings->clear();
+    StageTimer timer(timings);
+    LineDrawing drawing;
+    drawing.width = width;
+    drawing.height = height;
+
+    // Validate every entry before any work, so bad input fails fast.
+    std::vector<const LineSettings*> object_lines;
+    for (const LineSettings& settings : lines) {
+        const LineType& type = line_type(settings.type);  // InputError when unknown
+        if (type.space != LineSpace::Object) continue;
+        if (!object_line_extractor(type.name))
+            throw InputError("line type '" + type.name + "' has no object-space extractor");
+        object_lines.push_back(&settings);
+    }
+    if (object_lines.empty()) return drawing;
+
+    Impl& m = *impl_;
+    if (!m.scene) m.scene = timer("ray scene", [&] { return std::make_unique<RayScene>(m.data.mesh()); });
+    const ImageProjection view(camera, width, height);
+
+    for (const LineSettings* settings : object_lines) {
+        const ExtractLineSegments extract = object_line_extractor(settings->type);
+        const auto start = Clock::now();
+        std::vector<LineSegment> segments = extract(m.data, camera, *settings);
+        double extract_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        // Lazy mesh-wide work done inside extract() (curvature, adjacency) is reported on its
+        // own stage, not as per-view extraction.
+        for (const auto& [stage, ms] : m.data.take_setup_timings()) {
+            timer.add(stage, ms);
+            extract_ms -= ms;
+        }
+        timer.add("extract", extract_ms);
+        const bool want_hidden = line_number(*settings, "hidden") != 0.0f;
+        VisibilitySplit split =
+            timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments); });
+        auto chained = timer("chain", [&] {
+            std::pair<std::vector<Polyline>, std::vector<Polyline>> out;
+            out.first = chain_segments(split.visible);
+            if (want_hidden) out.second = chain_segments(split.hidden);
+            return out;
+        });
+        LineLayer layer;
+        layer.settings = *settings;
+        timer("finish", [&] {
+            const float min_length = line_number(*settings, "min-length");
+            const int smooth = int(line_number(*settings, "smooth"));
+            layer.visible = to_image(chained.first, view, min_length, smooth);
+            if (want_hidden) layer.hidden = to_image(chained.second, view, min_length, smooth);
+            return 0;
+        });
+        drawing.layers.push_back(std::move(layer));
+    }
+    return drawing;
+}
+
+}  // namespace inkshade

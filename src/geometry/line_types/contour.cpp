@@ -1,0 +1,33 @@
+// `contour` (SPEC §3): occluding contours, the zero set of n·v interpolated across faces
+// (extract_contours), optionally with seed 002's mesh silhouette edges added.
+#include "geometry/line_types/object_line_registry.hpp"
+
+namespace inkshade::geometry {
+
+namespace {
+
+std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+    std::vector<LineSegment> segments = extract_contours(data.mesh(), data.normals(), camera);
+    if (line_number(settings, "silhouette-edges") != 0.0f) {
+        const auto& p = data.mesh().positions;
+        for (const SilhouetteEdge& e : mesh_silhouette_edges(data.mesh(), camera))
+            segments.push_back({.a = p[e.v0], .b = p[e.v1], .edge_a = vertex_key(e.v0), .edge_b = vertex_key(e.v1),
+                                .face = 0xffffffffu});
+    }
+    return segments;
+}
+
+const ObjectLineRegistration registration{
+    {.name = "contour",
+     .summary = "occluding contours: zero crossings of n·v interpolated along mesh edges (seed 002 marked whole edges)",
+     .params = object_line_params(
+         glm::vec3(0.0f), 1.5f,
+         {bool_param("silhouette-edges", false,
+                     "also draw whole mesh edges between a front- and a back-facing face (seed 002's "
+                     "silhouette, not interpolated: jagged on coarse meshes but exactly the polygon outline)")},
+         1.0f)},
+    extract};
+
+}  // namespace
+
+}  // namespace inkshade::geometry

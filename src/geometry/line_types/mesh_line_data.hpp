@@ -1,0 +1,53 @@
+// What object-space line types extract from: one mesh (positions, triangles, unit vertex
+// normals) and what is derived from it alone — edge adjacency, curvature, creases — computed
+// on first use and kept, so later views of the same mesh pay only per-view work.
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/adjacency.hpp"
+#include "geometry/creases.hpp"
+#include "geometry/curvature.hpp"
+#include "geometry/ridges.hpp"
+#include "inkshade/mesh.hpp"
+
+namespace inkshade::geometry {
+
+class MeshLineData {
+public:
+    // Copies positions and triangles (so the caller's mesh may go away); keeps the mesh's
+    // normals when sane (renormalised), else computes angle-weighted ones.
+    explicit MeshLineData(const Mesh& mesh);
+
+    // Positions, triangles and unit normals (no colours or uvs).
+    const Mesh& mesh() const { return mesh_; }
+    const std::vector<glm::vec3>& normals() const { return mesh_.normals; }
+
+    const EdgeAdjacency& adjacency();
+    const Curvature& curvature();  // Rusinkiewicz 2004, from normals()
+    // Crease classification at `angle_degrees` (the last angle asked for is kept).
+    const CreaseLines& creases(float angle_degrees);
+    // Border edges: from the cached crease classification whatever its angle (borders do
+    // not depend on it), computed at the default angle when there is none yet.
+    const std::vector<LineSegment>& borders();
+    // Ridges and valleys with these options (the last options asked for are kept).
+    const RidgeLines& ridges(const RidgeOptions& options);
+
+    // Names and milliseconds of the lazy computations done since the last call (for
+    // LineExtractor's timings), then cleared.
+    std::vector<std::pair<std::string, double>> take_setup_timings();
+
+private:
+    Mesh mesh_;
+    std::optional<EdgeAdjacency> adjacency_;
+    std::optional<Curvature> curvature_;
+    std::optional<CreaseLines> creases_;
+    float crease_angle_ = 0.0f;
+    std::optional<RidgeLines> ridges_;
+    RidgeOptions ridge_options_;
+    std::vector<std::pair<std::string, double>> setup_timings_;
+};
+
+}  // namespace inkshade::geometry

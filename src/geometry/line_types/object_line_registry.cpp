@@ -1,0 +1,50 @@
+#include "geometry/line_types/object_line_registry.hpp"
+
+#include <map>
+
+namespace inkshade::geometry {
+
+namespace {
+
+std::map<std::string, ExtractLineSegments>& extractors() {
+    static std::map<std::string, ExtractLineSegments> map;
+    return map;
+}
+
+}  // namespace
+
+ObjectLineRegistration::ObjectLineRegistration(LineType type, ExtractLineSegments extract) {
+    type.space = LineSpace::Object;
+    extractors()[type.name] = extract;
+    LineTypeRegistration{std::move(type)};
+}
+
+ExtractLineSegments object_line_extractor(const std::string& type_name) {
+    auto it = extractors().find(type_name);
+    return it == extractors().end() ? nullptr : it->second;
+}
+
+std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::vector<ParamSpec> own,
+                                          float min_length_px) {
+    std::vector<ParamSpec> params = stroke_params(color, width_px);
+    for (auto& p : own) params.push_back(std::move(p));
+    params.push_back(float_param("min-length", min_length_px, 0.0f, 10000.0f,
+                                 "drop polylines shorter than this many pixels (after hidden-line removal): the "
+                                 "specks curvature noise leaves (DeCarlo et al. 2003 §4 discard short pieces)"));
+    params.push_back(int_param("smooth", 0, 0, 100,
+                               "Laplacian smoothing iterations in the image (weight 0.5, ends fixed); 0 keeps the "
+                               "exact interpolated points"));
+    params.push_back(bool_param("taper", false,
+                                "line strength (fading, e.g. suggestive contours near their trim point) scales "
+                                "the stroke width instead of its opacity"));
+    params.push_back(bool_param("hidden", false,
+                                "also output the hidden parts, as a dashed layer TYPE-hidden (technical "
+                                "drawing convention)"));
+    return params;
+}
+
+float line_number(const LineSettings& settings, const std::string& name) {
+    return line_param(settings, name).at(0);
+}
+
+}  // namespace inkshade::geometry

@@ -1,0 +1,36 @@
+// `suggestive` (SPEC §3, method (a)): suggestive contours of DeCarlo et al. 2003, trimmed and
+// faded as in DeCarlo et al. 2004 / rtsc (extract_suggestive_contours).
+#include "geometry/line_types/object_line_registry.hpp"
+#include "geometry/suggestive_contours.hpp"
+
+namespace inkshade::geometry {
+
+namespace {
+
+std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+    const SuggestiveOptions options{.threshold = line_number(settings, "threshold"),
+                                    .fade = line_number(settings, "fade"),
+                                    .feature_size = line_number(settings, "feature-size")};
+    return extract_suggestive_contours(data.mesh(), data.normals(), data.curvature(), camera, options);
+}
+
+const ObjectLineRegistration registration{
+    {.name = "suggestive",
+     .summary = "suggestive contours: κr = 0 with D_w κr > 0 (DeCarlo et al. 2003; trim and fade as rtsc)",
+     .params = object_line_params(
+         glm::vec3(0.0f), 1.0f,
+         {float_param("threshold", 0.01f, 0.0f, 10.0f,
+                      "trim: keep points where D_w κr / (n·v) > threshold / feature-size² (dimensionless; "
+                      "rtsc's sug_thresh default 0.01)"),
+          float_param("fade", 0.03f, 0.0f, 10.0f,
+                      "fade-in above the trim threshold, in the same units (rtsc's draw_faded constant 0.03); "
+                      "0 = no fading"),
+          float_param("feature-size", 0.0f, 0.0f, 1e9f,
+                      "world length making threshold and fade dimensionless; 0 = 1% of the bounding-box "
+                      "diagonal (about rtsc's median edge length on its scans)")},
+         4.0f)},
+    extract};
+
+}  // namespace
+
+}  // namespace inkshade::geometry

@@ -1,0 +1,68 @@
+// JSON form of a LineDrawing for scripts (--lines-json); schema in docs/lines.md:
+// {"width", "height", "layers": [{"type", "params", "stroke", "paths": [{"hidden", "closed",
+// "points": [[x, y], ...], "depth": [...], "strength": [...]}]}]}.
+// Numbers are rounded (1e-3 px, 1e-7 depth, 1e-4 strength) so the text is short and stable.
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "inkshade/line_drawing.hpp"
+
+namespace inkshade {
+
+namespace {
+
+double rounded(double v, double unit) { return std::isfinite(v) ? std::round(v / unit) * unit : 0.0; }
+
+// A float parameter as the double of its shortest decimal text (0.01, not 0.009999999776).
+double clean(float v) { return std::isfinite(v) ? std::stod(format_number(v)) : 0.0; }
+
+nlohmann::json param_json(const ParamSpec& spec, const ParamValue& value) {
+    switch (spec.type) {
+        case ParamType::Bool: return value.at(0) != 0.0f;
+        case ParamType::Int: return int(std::lround(value.at(0)));
+        case ParamType::Choice: return format_param_value(spec, value);
+        case ParamType::Float: return clean(value.at(0));
+        default: {
+            nlohmann::json a = nlohmann::json::array();
+            for (float v : value) a.push_back(clean(v));
+            return a;
+        }
+    }
+}
+
+nlohmann::json path_json(const LinePath& p, bool hidden) {
+    nlohmann::json points = nlohmann::json::array(), depth = nlohmann::json::array(),
+                   strength = nlohmann::json::array();
+    for (const glm::vec2& q : p.points) points.push_back({rounded(q.x, 1e-3), rounded(q.y, 1e-3)});
+    for (float d : p.depth) depth.push_back(rounded(d, 1e-7));
+    for (float s : p.strength) strength.push_back(rounded(s, 1e-4));
+    return {{"hidden", hidden}, {"closed", p.closed}, {"points", points}, {"depth", depth}, {"strength", strength}};
+}
+
+}  // namespace
+
+std::string format_lines_json(const LineDrawing& drawing) {
+    nlohmann::json layers = nlohmann::json::array();
+    for (const LineLayer& layer : drawing.layers) {
+        const LineType& type = line_type(layer.settings.type);
+        nlohmann::json params = nlohmann::json::object();
+        for (const ParamSpec& spec : type.params) params[spec.name] = param_json(spec, value_or_default(spec, layer.settings.params));
+        const Stroke stroke = stroke_of(layer.settings);
+        nlohmann::json paths = nlohmann::json::array();
+        for (const LinePath& p : layer.visible) paths.push_back(path_json(p, false));
+        for (const LinePath& p : layer.hidden) paths.push_back(path_json(p, true));
+        layers.push_back({{"type", type.name},
+                          {"params", params},
+                          {"stroke",
+                           {{"color", {clean(stroke.color.r), clean(stroke.color.g), clean(stroke.color.b)}},
+                            {"opacity", clean(stroke.opacity)},
+                            {"width", clean(stroke.width)}}},
+                          {"paths", paths}});
+    }
+    nlohmann::json root = {{"width", drawing.width}, {"height", drawing.height}, {"layers", layers}};
+    return root.dump() + "\n";
+}
+
+}  // namespace inkshade

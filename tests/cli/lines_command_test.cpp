@@ -1,0 +1,143 @@
+// `inkshade lines`: SVG output that rsvg-convert rasterises onto the same pixels as
+// `inkshade render`'s silhouette, --lines-json, --set for line types, one-line errors.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/run_cli.hpp"
+#include "inkshade/image.hpp"
+
+namespace inkshade::test {
+namespace {
+
+// Rasterises an SVG with rsvg-convert (librsvg2-bin, installed by scripts/setup).
+Image rasterise(const TempDir& dir, const std::string& svg) {
+    const std::string png = svg + ".png";
+    const int status = std::system(("rsvg-convert " + svg + " -o " + png + " 2>" + dir.file("rsvg.err")).c_str());
+    EXPECT_EQ(status, 0) << slurp(dir.file("rsvg.err"));
+    return read_png(png);
+}
+
+// Rasterised contour of `inkshade lines` against the silhouette of `inkshade render` with the
+// same camera options (an off-centre target, so a flipped or shifted image axis would miss).
+void expect_lines_on_silhouette(const std::string& projection) {
+    TempDir dir;
+    const std::string camera =
+        " --size 160x120 --azimuth 30 --elevation 20 --target 0.3,0.35,0 --background transparent " + projection + " ";
+    auto r = run_cli("lines builtin:sphere --lines contour" + camera + "-o " + dir.file("s.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("render builtin:sphere" + camera + "-o " + dir.file("s.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Image lines = rasterise(dir, dir.file("s.svg"));
+    const Image shaded = read_png(dir.file("s.png"));
+    ASSERT_EQ(lines.width, 160);
+    ASSERT_EQ(lines.height, 120);
+    ASSERT_EQ(shaded.width, 160);
+
+    // Boundary of the rendered sphere: pixels whose coverage (alpha) differs from a 4-neighbour.
+    auto inside = [&](int x, int y) { return shaded.pixel(x, y)[3] >= 128; };
+    std::vector<uint8_t> boundary(size_t(160 * 120), 0);
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x) {
+            if (x + 1 < 160 && inside(x, y) != inside(x + 1, y)) boundary[y * 160 + x] = boundary[y * 160 + x + 1] = 1;
+            if (y + 1 < 120 && inside(x, y) != inside(x, y + 1))
+                boundary[y * 160 + x] = boundary[(y + 1) * 160 + x] = 1;
+        }
+    int line_pixels = 0, near = 0;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x) {
+            if (lines.pixel(x, y)[3] < 128) continue;
+            ++line_pixels;
+            bool hit = false;
+            for (int dy = -1; dy <= 1 && !hit; ++dy)
+                for (int dx = -1; dx <= 1 && !hit; ++dx) {
+                    const int u = x + dx, v = y + dy;
+                    hit = u >= 0 && v >= 0 && u < 160 && v < 120 && boundary[v * 160 + u];
+                }
+            near += hit;
+        }
+    EXPECT_GT(line_pixels, 200) << "the outline ring is drawn";
+    EXPECT_GE(near, 0.95 * line_pixels) << near << " of " << line_pixels << " line pixels on the silhouette";
+}
+
+TEST(LinesCommand, SphereSvgRasterisesOntoRenderedSilhouette) {
+    expect_lines_on_silhouette("");
+    expect_lines_on_silhouette("--ortho");
+}
+
+TEST(LinesCommand, DefaultLinesJsonAndSets) {
+    TempDir dir;
+    auto r = run_cli("lines builtin:teapot --size 200x150 --hidden --set contour.width=3 --set crease.angle=45 -o " +
+                     dir.file("t.svg") + " --lines-json " + dir.file("t.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    const std::string svg = slurp(dir.file("t.svg"));
+    for (const char* id : {"contour", "suggestive", "crease", "border", "contour-hidden"})
+        EXPECT_NE(svg.find("<g id=\"" + std::string(id) + "\""), std::string::npos) << id;
+    EXPECT_NE(svg.find("viewBox=\"0 0 200 150\""), std::string::npos);
+    const nlohmann::json j = nlohmann::json::parse(slurp(dir.file("t.json")));
+    ASSERT_EQ(j.at("layers").size(), 4u);
+    EXPECT_EQ(j.at("layers")[0].at("type"), "contour");
+    EXPECT_EQ(j.at("layers")[0].at("stroke").at("width"), 3.0);
+    EXPECT_EQ(j.at("layers")[2].at("params").at("angle"), 45.0);
+    EXPECT_FALSE(j.at("layers")[0].at("paths").empty());
+    bool any_hidden = false;
+    for (const auto& p : j.at("layers")[0].at("paths")) any_hidden |= p.at("hidden").get<bool>();
+    EXPECT_TRUE(any_hidden) << "the teapot hides part of its own contour (--hidden)";
+}
+
+TEST(LinesCommand, TimingPrintsStagesAndTotal) {
+    TempDir dir;
+    auto r = run_cli("lines builtin:torus --size 64x64 --timing 3 -o " + dir.file("t.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* stage : {"extract", "visibility", "chain", "total", "once per mesh"})
+        EXPECT_NE(r.out.find(stage), std::string::npos) << r.out;
+}
+
+TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
+    TempDir dir;
+    const std::string out = dir.file("x.svg");
+    for (const std::string& args : std::vector<std::string>{"builtin:sphere --lines scribble", "builtin:sphere --lines contour,contour", "builtin:sphere --lines ,",
+          "builtin:sphere --size 0x5", "builtin:sphere --size big", "builtin:nothing",
+          dir.file("missing.obj"), "builtin:sphere --set contour.wobble=1", "builtin:sphere --set contour.width=-1",
+          "builtin:sphere --lines contour --set crease.angle=30", "builtin:sphere --eye 1,2"}) {
+        auto r = run_cli("lines " + args + " -o " + out);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+        EXPECT_EQ(r.err.rfind("inkshade: ", 0), 0u) << r.err;
+    }
+    for (std::string target : {dir.file("no/such/dir/x.svg"), dir.path().string()}) {
+        auto r = run_cli("lines builtin:sphere -o " + target);
+        EXPECT_EQ(r.status, 2) << target << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << r.err;
+    }
+    auto r = run_cli("lines builtin:sphere -o " + out + " --lines-json " + dir.file("nope/x.json"));
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << "no output after a failure";
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+        EXPECT_EQ(e.path().filename().string().find("x.svg"), std::string::npos) << e.path();
+}
+
+TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
+    TempDir dir;
+    // Every registered object-space type is accepted; the message for a bad name lists them.
+    auto r = run_cli("lines builtin:sphere --lines nope -o " + dir.file("x.svg"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("contour"), std::string::npos) << r.err;
+    // `hull` is a raster line type (GPU): `lines` points to `render`.
+    r = run_cli("lines builtin:sphere --lines hull -o " + dir.file("x.svg"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(line_count(r.err), 1);
+    if (r.err.find("unknown line type") == std::string::npos) {
+        EXPECT_NE(r.err.find("inkshade render"), std::string::npos) << r.err;
+    }
+    r = run_cli("lines builtin:torus --lines contour,suggestive,crease,border,ridge,valley --size 64x64 -o " +
+                dir.file("all.svg"));
+    EXPECT_EQ(r.status, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace inkshade::test
