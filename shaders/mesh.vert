@@ -1,8 +1,14 @@
 #version 450 core
-// Shared vertex stage of every shading model: world-space position, normal and colour.
+// Shared vertex stage of every shading model: world-space position, normal and colour, and
+// the uvs of a textured mesh (INKSHADE_BASE_TEXTURE: a program variant, so untextured meshes
+// pay nothing; common/surface.glsl samples the texture).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
+#ifdef INKSHADE_BASE_TEXTURE
+layout(location = 5) in vec2 a_uv;
+out vec2 v_uv;
+#endif
 
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
@@ -19,5 +25,8 @@ void main() {
     v_world_normal = u_normal_matrix * a_normal;
     v_color = a_color;
     v_object_pos = a_position;
+#ifdef INKSHADE_BASE_TEXTURE
+    v_uv = a_uv;
+#endif
     gl_Position = u_view_proj * world;
 }

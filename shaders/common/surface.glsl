@@ -5,6 +5,12 @@ in vec3 v_world_pos;
 in vec3 v_world_normal;
 in vec3 v_color;
 in vec3 v_object_pos;
+#ifdef INKSHADE_BASE_TEXTURE
+// Base-colour texture: GL_SRGB8_ALPHA8, so the sample is linear; rows stored top first while
+// uvs have v = 0 at the bottom (inkshade::Texture), hence 1 - v.
+in vec2 v_uv;
+uniform sampler2D u_base_texture;
+#endif
 
 layout(location = 0) out vec4 o_color;
 
@@ -24,7 +30,7 @@ struct Surface {
     vec3 n;       // unit normal, flipped towards the viewer on back faces (two-sided)
     vec3 v;       // unit vector towards the viewer
     vec3 l;       // unit vector towards the light
-    vec3 albedo;  // C
+    vec3 albedo;  // C = base colour x vertex/material colour x texture
 };
 
 Surface surface() {
@@ -36,5 +42,8 @@ Surface surface() {
     s.v = to_viewer(s.p);
     s.l = to_light(s.p);
     s.albedo = u_base_color * v_color;
+#ifdef INKSHADE_BASE_TEXTURE
+    s.albedo *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;
+#endif
     return s;
 }

@@ -154,7 +154,7 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         mesh = io::read_gltf(path);
     } else {
         throw InputError(path, (ext.empty() ? std::string("no file extension") : "unknown file extension " + io::quote_token(ext)) +
-                                   " (supported: .obj .stl .ply .off)");
+                                   " (supported: .obj .stl .ply .off .gltf .glb .vrm)");
     }
 
     validate(mesh, path);

@@ -1,6 +1,10 @@
 #include "render/gpu_mesh.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
+#include <map>
+#include <numeric>
 #include <unordered_map>
 
 #include "render/welded_attributes.hpp"
@@ -49,6 +53,32 @@ void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
 }
 
 GpuMesh::GpuMesh(const Mesh& mesh) {
+    // Materials: what the per-material draws need (no pixels), and each distinct image once as
+    // a GL texture (first, so that a texture that fails leaves no buffers behind).
+    const bool has_face_materials =
+        !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
+    materials_ = mesh.materials;
+    for (Material& m : materials_) {
+        m.texture.reset();
+        has_material_params_ |= !m.mtoon.empty();
+    }
+    if (has_face_materials && mesh.uvs.size() == mesh.positions.size()) {
+        constexpr size_t kWhite = std::numeric_limits<size_t>::max();
+        std::map<const Texture*, size_t> index;
+        material_texture_.assign(mesh.materials.size(), kWhite);
+        for (size_t m = 0; m < mesh.materials.size(); ++m) {
+            const Texture* t = mesh.materials[m].texture.get();
+            if (!t) continue;
+            auto [it, inserted] = index.try_emplace(t, textures_.size());
+            if (inserted) textures_.emplace_back(*t);
+            material_texture_[m] = it->second;
+        }
+        if (!textures_.empty()) {
+            textures_.push_back(gpu::BaseTexture::white());
+            for (size_t& t : material_texture_) t = std::min(t, textures_.size() - 1);
+        }
+    }
+
     std::vector<GpuVertex> vertices;
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> source;
@@ -66,6 +96,36 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     for (size_t f = 0; f < triangles.size(); ++f)
         for (int k = 0; k < 3; ++k)
             if (triangles[f][k] < vertex_ids.size()) vertex_ids[triangles[f][k]] = face_ids[f];
+
+    // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
+    // file's order, so untextured meshes draw exactly as they always did.
+    constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
+    if (has_face_materials && (textured() || has_material_params_)) {
+        std::vector<uint32_t> order(triangles.size());
+        std::iota(order.begin(), order.end(), 0u);
+        auto key = [&](uint32_t f) {
+            uint32_t m = mesh.face_materials[f];
+            return m < mesh.materials.size() ? m : kNoMaterial;
+        };
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+        std::vector<glm::uvec3> sorted(triangles.size());
+        for (size_t i = 0; i < order.size(); ++i) {
+            sorted[i] = triangles[order[i]];
+            if (ranges_.empty() || ranges_.back().material != key(order[i]))
+                ranges_.push_back({i * 3, 0, key(order[i])});
+            ranges_.back().count += 3;
+        }
+        triangles = std::move(sorted);
+    } else {
+        ranges_.push_back({0, index_count_, kNoMaterial});
+    }
+
+    if (textured()) {
+        std::vector<glm::vec2> uvs(vertices.size());
+        for (size_t i = 0; i < vertices.size(); ++i) uvs[i] = mesh.uvs[source[i]];
+        glCreateBuffers(1, &uv_vbo_);
+        glNamedBufferStorage(uv_vbo_, GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data(), 0);
+    }
 
     glCreateBuffers(1, &vbo_);
     glNamedBufferStorage(vbo_, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), 0);
@@ -95,6 +155,13 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glEnableVertexArrayAttrib(vao_, 4);
     glVertexArrayAttribIFormat(vao_, 4, 1, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(vao_, 4, 2);
+
+    if (uv_vbo_) {
+        glVertexArrayVertexBuffer(vao_, 3, uv_vbo_, 0, sizeof(glm::vec2));
+        glEnableVertexArrayAttrib(vao_, 5);
+        glVertexArrayAttribFormat(vao_, 5, 2, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao_, 5, 3);
+    }
 }
 
 GpuMesh::~GpuMesh() {
@@ -103,11 +170,23 @@ GpuMesh::~GpuMesh() {
     glDeleteBuffers(1, &ibo_);
     glDeleteBuffers(1, &hull_normal_vbo_);
     glDeleteBuffers(1, &object_id_vbo_);
+    glDeleteBuffers(1, &uv_vbo_);
 }
 
 void GpuMesh::draw() const {
     glBindVertexArray(vao_);
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+void GpuMesh::draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const {
+    glBindVertexArray(vao_);
+    for (const Range& r : ranges_) {
+        const bool known = r.material < materials_.size();
+        if (textured()) textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit);
+        if (before) before(known ? &materials_[r.material] : nullptr);
+        glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(r.first * sizeof(uint32_t)));
+    }
 }
 
 }  // namespace inkshade::render

@@ -1,12 +1,15 @@
 // A mesh on the GPU: interleaved position/normal/colour vertices and a triangle index buffer,
 // plus what the line passes need, each in its own buffer so the shading pass does not fetch
 // them: welded normals for the inverted hull (attribute 3) and the object id (attribute 4,
-// unsigned int, read `flat`; render/welded_attributes.hpp).
+// unsigned int, read `flat`; render/welded_attributes.hpp). A textured mesh (uvs and at least
+// one material texture) also gets its uvs (attribute 5) and one GL texture per distinct image.
 #pragma once
 #include <epoxy/gl.h>
 
+#include <functional>
 #include <vector>
 
+#include "gpu/base_texture.hpp"
 #include "inkshade/mesh.hpp"
 
 namespace inkshade::render {
@@ -29,11 +32,32 @@ public:
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
+    // All faces in one call (depth, hull and G-buffer passes).
     void draw() const;
 
+    // Uvs and a texture are uploaded: shaders read them under INKSHADE_BASE_TEXTURE.
+    bool textured() const { return !textures_.empty(); }
+    // Some material carries VRM MToon values (Material::mtoon).
+    bool has_material_params() const { return has_material_params_; }
+    // The faces material by material (sorted by material when the mesh is textured or has
+    // material parameters, else one range in file order, exactly as draw()). Before each range
+    // its texture is bound to `texture_unit` (a white texel for materials without one) when the
+    // mesh is textured, and `before` gets the range's material (null: none).
+    void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
+
 private:
-    GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, hull_normal_vbo_ = 0, object_id_vbo_ = 0;
+    struct Range {
+        size_t first = 0;  // index offset into the index buffer
+        GLsizei count = 0;
+        uint32_t material = 0;
+    };
+    GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, hull_normal_vbo_ = 0, object_id_vbo_ = 0, uv_vbo_ = 0;
     GLsizei index_count_ = 0;
+    std::vector<Range> ranges_;
+    std::vector<Material> materials_;              // names, colours and MToon values; no pixels
+    std::vector<gpu::BaseTexture> textures_;       // each distinct image once, then the white texel
+    std::vector<size_t> material_texture_;         // per material: index into textures_
+    bool has_material_params_ = false;
 };
 
 }  // namespace inkshade::render

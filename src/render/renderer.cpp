@@ -74,6 +74,22 @@ void upload_params(gpu::ShaderProgram& program, const ShadingModel& model, const
     }
 }
 
+// The model's values with a material's VRM MToon values (Material::mtoon) in place of those
+// the material carries, when the model has `use-material-params` and it is on.
+ParamValues with_material_params(const ShadingModel& model, const ParamValues& values, const Material* material) {
+    ParamValues merged = values;
+    if (!material) return merged;
+    for (const ParamSpec& spec : model.params) {
+        if (spec.compile_time) continue;  // a program variant, not a per-draw uniform
+        auto it = material->mtoon.find(spec.name);
+        if (it != material->mtoon.end() && it->second.size() == value_or_default(spec, values).size())
+            merged[spec.name] = it->second;
+    }
+    return merged;
+}
+
+constexpr GLuint kBaseTextureUnit = 2;  // 1 is the shadow map's
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -96,9 +112,10 @@ struct Renderer::Impl {
     // One compiled variant per model and compile-time parameter values (#defines, not
     // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
     // model's `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl).
+    // `textured`: the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values,
-                                    const render::SurfaceLines& lines) {
-        std::string defines;
+                                    const render::SurfaceLines& lines, bool textured) {
+        std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
             const ParamValue& v = value_or_default(spec, values);
@@ -203,7 +220,13 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     const ParamSpec* shadows_spec = model.param("shadows");
     const bool shadows =
         model.shadow_map && shadows_spec && value_or_default(*shadows_spec, shading.params).at(0) != 0.0f;
-    gpu::ShaderProgram& program = impl_->program_for(model, shading.params, surface_lines);
+    // Models on the shared vertex stage sample the texture in common/surface.glsl (gouraud
+    // lights per vertex in its own stage and does not).
+    const bool textured = impl_->mesh->textured() && model.vertex == "mesh.vert" && !model.debug_view;
+    const ParamSpec* material_params_spec = model.param("use-material-params");
+    const bool material_params = impl_->mesh->has_material_params() && material_params_spec &&
+                                 value_or_default(*material_params_spec, shading.params).at(0) != 0.0f;
+    gpu::ShaderProgram& program = impl_->program_for(model, shading.params, surface_lines, textured);
     const bool cull = can_cull_back_faces(impl_->closed, impl_->bounds, camera);
     glm::mat4 light_view_proj(1.0f);
     if (shadows) {
@@ -264,7 +287,15 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         }
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
-        impl_->mesh->draw();
+        if (textured || material_params) {
+            program.set("u_base_texture", int(kBaseTextureUnit));
+            impl_->mesh->draw_by_material(kBaseTextureUnit, [&](const Material* material) {
+                if (material_params)
+                    upload_params(program, model, with_material_params(model, shading.params, material));
+            });
+        } else {
+            impl_->mesh->draw();
+        }
     }
     if (hull) {
         PassTimer t(timings, "hull");

@@ -3,6 +3,9 @@
 namespace inkshade {
 // Defaults are MToon 1.0's (SPEC.md section 2): shade colour 0, shift 0, toony 0.9, rim colour
 // 0, fresnel power 5, lift 0, rim lighting mix 1. Shadows on: seed 000 enables shadow maps.
+// use-material-params: a VRM avatar's materials (face, hair, clothes) each carry their own
+// MToon values, which one style cannot express, so by default they replace the style's values
+// for the parameters a material carries (per material draw, renderer.cpp); off restyles them.
 static const ShadingModelRegistration mtoon_model{{
     .name = "mtoon",
     .summary = "MToon 1.0: E*mix(S, C, linearstep(-1+toony, 1-toony, n.l+shift)*shadow) + A*C + rim",
@@ -21,6 +24,8 @@ static const ShadingModelRegistration mtoon_model{{
                          "seeds: values as they are; threejs: 1/pi light units and sRGB output (three-vrm)"),
             compile_time(bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)")),
             float_param("shadow-softness", 1.5f, 0.0f, 4.0f, "PCF filter radius in shadow-map texels"),
+            bool_param("use-material-params", true,
+                       "materials' VRM MToon values (shade colour, shift, toony, rim) replace these per material"),
         },
 }};
 }  // namespace inkshade

@@ -1,0 +1,64 @@
+#include "gpu/base_texture.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+#include "inkshade/error.hpp"
+
+namespace inkshade::gpu {
+
+namespace {
+
+// The texture itself, after checking that its pixels match its size (nothing is read past them).
+const Texture& checked(const Texture& texture) {
+    if (texture.width <= 0 || texture.height <= 0 ||
+        texture.rgba.size() != size_t(texture.width) * size_t(texture.height) * 4)
+        throw RuntimeError("texture " + texture.source + ": pixel data does not match its size");
+    return texture;
+}
+
+// Anisotropic filtering where the driver has it, except on llvmpipe: there (Mesa 22.3) any
+// maximum anisotropy above 1 also blurs magnified textures (a 2x2 texture seen at 33 px per
+// texel read 35% of its neighbours at a texel's centre: tests/render/texture_test.cpp).
+float max_anisotropy() {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (renderer && std::strstr(renderer, "llvmpipe")) return 1.0f;
+    if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") &&
+        !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic"))
+        return 1.0f;
+    GLfloat max = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &max);
+    return std::min(16.0f, max);
+}
+
+}  // namespace
+
+BaseTexture::BaseTexture(const Texture& texture)
+    : BaseTexture(checked(texture).width, texture.height, texture.rgba.data()) {}
+
+BaseTexture BaseTexture::white() {
+    const uint8_t texel[4] = {255, 255, 255, 255};
+    return BaseTexture(1, 1, texel);
+}
+
+BaseTexture::BaseTexture(int width, int height, const uint8_t* rgba) {
+    const GLsizei levels = GLsizei(std::bit_width(unsigned(std::max(width, height))));
+    glCreateTextures(GL_TEXTURE_2D, 1, &id_);
+    glTextureStorage2D(id_, levels, GL_SRGB8_ALPHA8, width, height);
+    // RGBA8 rows are 4-byte aligned, as the default unpack alignment expects.
+    glTextureSubImage2D(id_, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glGenerateTextureMipmap(id_);
+    glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    if (const float anisotropy = max_anisotropy(); anisotropy > 1.0f)
+        glTextureParameterf(id_, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
+}
+
+BaseTexture::~BaseTexture() {
+    if (id_) glDeleteTextures(1, &id_);
+}
+
+}  // namespace inkshade::gpu
