@@ -1,6 +1,6 @@
 // `inkshade demo`: the built-in demo of `make run` — the Utah teapot in every built-in style
-// (every shading model, the seed presets, the debug views), one PNG each plus a labelled
-// contact sheet.
+// (every shading model, the seed presets and line styles, the debug views), one PNG each plus a
+// labelled contact sheet, and the SVG line drawing of the same view.
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +8,7 @@
 #include "inkshade/contact_sheet.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "inkshade/line_drawing.hpp"
 #include "inkshade/renderer.hpp"
 #include "inkshade/style.hpp"
 
@@ -41,7 +42,7 @@ Command add_demo_command(CLI::App& app) {
             Light light = default_light(mesh.bounds(), camera);
             apply_style_light(style, light);
             options.background = style.background;
-            Image image = renderer.render(camera, light, style.shading, options);
+            Image image = renderer.render(camera, light, style.shading, style.lines, options);
             const std::string path = (std::filesystem::path(args->out) / (name + ".png")).string();
             write_png(path, image);
             std::printf("  %s\n", path.c_str());
@@ -49,6 +50,15 @@ Command add_demo_command(CLI::App& app) {
             (debug ? debug_tiles : tiles).push_back({debug ? name + " (debug)" : name, std::move(image)});
         }
         for (auto& t : debug_tiles) tiles.push_back(std::move(t));
+        // The vector line drawing of the same view (what `inkshade lines` writes).
+        {
+            LineExtractor extractor(mesh);
+            std::vector<LineSettings> vector_lines;
+            for (const char* type : {"contour", "suggestive", "crease", "border"}) vector_lines.push_back({type, {}});
+            const std::string svg = (std::filesystem::path(args->out) / "lines.svg").string();
+            write_svg(svg, extractor.draw(camera, args->size, args->size, vector_lines), glm::vec4(1.0f));
+            std::printf("  %s\n", svg.c_str());
+        }
         const std::string sheet = (std::filesystem::path(args->out) / "contact_sheet.png").string();
         write_png(sheet, contact_sheet(tiles, 5));
         std::printf("demo: %zu images and the contact sheet %s (renderer: %s)\n", tiles.size(), sheet.c_str(),

@@ -11,11 +11,13 @@
 #include "gpu/gl_context.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/line_drawing.hpp"
 #include "render/gbuffer.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/lines/hull.hpp"
 #include "render/lines/image_lines_pass.hpp"
 #include "render/shadow_pass.hpp"
+#include "render/stroke_pass.hpp"
 #include "render/surface_lines.hpp"
 
 namespace inkshade {
@@ -108,6 +110,11 @@ struct Renderer::Impl {
     std::unique_ptr<render::GBuffer> gbuffer;  // the image's size
     std::unique_ptr<render::HullPass> hull;
     std::unique_ptr<render::ImageLinesPass> image_lines;
+    // Object-space lines: extracted on the CPU (ray-cast visibility), drawn as strokes. The
+    // extractor keeps its own copy of positions, triangles and normals (set_mesh), since the
+    // caller's mesh need not outlive set_mesh; curvature and the ray scene come on first use.
+    std::unique_ptr<LineExtractor> line_extractor;
+    std::unique_ptr<render::StrokePass> strokes;
 
     // One compiled variant per model and compile-time parameter values (#defines, not
     // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
@@ -155,6 +162,7 @@ Renderer::~Renderer() {
     impl_->context->make_current();
     // GL objects go before the context that owns them.
     impl_->gbuffer.reset();
+    impl_->strokes.reset();
     impl_->hull.reset();
     impl_->image_lines.reset();
     impl_->framebuffer.reset();
@@ -172,6 +180,7 @@ void Renderer::set_mesh(const Mesh& mesh) {
     impl_->bounds = mesh.bounds();
     impl_->closed = geometry::is_closed_outward(mesh);
     impl_->shadow_valid = false;
+    impl_->line_extractor = std::make_unique<LineExtractor>(mesh);
 }
 
 namespace {
@@ -199,9 +208,12 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
                        const std::vector<LineSettings>& lines, const RenderOptions& options,
                        std::vector<PassTiming>* timings) {
     if (!impl_->mesh) throw RuntimeError("no mesh to render (set_mesh first)");
-    // The image-space line types of the style; object-space ones are drawn elsewhere.
+    // The image-space line types of the style get GPU passes; object-space ones are extracted
+    // on the CPU and drawn as strokes.
     const LineSettings *hull = nullptr, *rim = nullptr, *edges = nullptr, *suggestive = nullptr;
+    std::vector<LineSettings> vector_lines;
     for (const LineSettings& l : lines) {
+        if (line_type(l.type).space == LineSpace::Object) vector_lines.push_back(l);
         if (line_type(l.type).space != LineSpace::Image) continue;
         if (l.type == "hull") hull = &l;
         else if (l.type == "rim-contour") rim = &l;
@@ -315,6 +327,26 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         fb.bind();
         if (!impl_->image_lines) impl_->image_lines = std::make_unique<render::ImageLinesPass>();
         impl_->image_lines->draw(*impl_->gbuffer, camera, options.width, options.height, edges, suggestive);
+    }
+    if (!vector_lines.empty()) {
+        LineDrawing drawing;
+        {
+            PassTimer t(timings, "vector-lines");
+            drawing = impl_->line_extractor->draw(camera, options.width, options.height, vector_lines);
+        }
+        PassTimer t(timings, "strokes");
+        fb.bind();
+        if (!impl_->strokes) impl_->strokes = std::make_unique<render::StrokePass>();
+        for (LineLayer& layer : drawing.layers) {
+            const Stroke stroke = stroke_of(layer.settings);
+            render::StrokeStyle style{stroke.color, stroke.opacity, stroke.width,
+                                      line_param(layer.settings, "taper").at(0) != 0.0f};
+            // Hidden parts are already cut away exactly by ray casting; without per-point depth
+            // the stroke pass skips its depth test, which would otherwise nibble at the half of a
+            // contour stroke that lies over the surface it outlines. Hidden layers are SVG-only.
+            for (LinePath& path : layer.visible) path.depth.clear();
+            impl_->strokes->draw(layer.visible, style, options.width, options.height, options.samples);
+        }
     }
     {
         PassTimer t(timings, "resolve");

@@ -1,5 +1,5 @@
 // The raster line passes together: lines of an object behind another are hidden by it;
-// rendering twice gives the same bytes; object-space line types are left to other passes;
+// rendering twice gives the same bytes; object-space contours become strokes on the outline;
 // the old render() is the new one with no lines.
 #include <cstring>
 
@@ -91,14 +91,28 @@ TEST(RasterLines, NoLinesEqualsThePlainRender) {
     EXPECT_EQ(a.rgba, b.rgba);
 }
 
-TEST(RasterLines, ObjectSpaceTypesAreSkipped) {
-    const LineType* object_type = nullptr;
-    for (const LineType* t : line_types())
-        if (t->space == LineSpace::Object) object_type = t;
-    if (!object_type) GTEST_SKIP() << "no object-space line type registered in this build";
-    Image a = render_lines(fine_sphere(), {});
-    Image b = render_lines(fine_sphere(), {LineSettings{object_type->name, {}}});
-    EXPECT_EQ(a.rgba, b.rgba);
+// Object-space contours are drawn as strokes: on the unit sphere seen orthographically the
+// stroke (width 2 px) is centred on the analytic outline circle, and nothing else is drawn.
+TEST(RasterLines, ObjectSpaceContourStrokeLiesOnTheOutline) {
+    LineSettings contour{"contour", {}};
+    contour.params["color"] = {0, 0, 1};
+    contour.params["width"] = {2};
+    Image img = render_lines(fine_sphere(), {contour});
+    const Camera cam = ortho_camera();
+    const glm::vec2 centre = project(cam, glm::vec3(0.0f));
+    const float radius = float(kSize) / cam.ortho_height;  // the unit sphere's outline in pixels
+    int stroke = 0, off = 0, ring_samples = 0, ring_hits = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const float d = glm::length(glm::vec2(x + 0.5f, y + 0.5f) - centre) - radius;
+            const bool is_blue = blue(img.pixel(x, y));
+            stroke += is_blue;
+            if (is_blue && std::abs(d) > 1.0f + 1.0f) ++off;  // half width + 1 px
+            if (std::abs(d) < 0.5f) ++ring_samples, ring_hits += is_blue;
+        }
+    EXPECT_GT(stroke, int(2.0f * 3.14159f * radius));  // about 2 px wide all round
+    EXPECT_EQ(off, 0);
+    EXPECT_GE(ring_hits, int(0.98f * ring_samples));
 }
 
 }  // namespace

@@ -148,7 +148,8 @@ TEST(Style, EveryBuiltinStyleRenders) {
 
 // The composite styles: anime = cel-000 + hull + rim contour + image-space suggestive contours
 // (seed 000's combined result), toon = seed 004's cel + hull outline, ink = white fill + every
-// raster line type. Each renders the teapot with its lines: dark line pixels, and more of them
+// raster line type; technical = gooch + object-space contours and creases, ink-vector = white
+// fill + the object-space line types as strokes. Each renders the teapot with its lines: dark line pixels, and more of them
 // than the same style without lines.
 TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
     auto types_of = [](const Style& s) {
@@ -160,6 +161,10 @@ TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
     EXPECT_EQ(types_of(load_style("toon")), (std::vector<std::string>{"hull"}));
     EXPECT_EQ(types_of(load_style("ink")),
               (std::vector<std::string>{"hull", "rim-contour", "edges", "suggestive-image"}));
+    EXPECT_EQ(types_of(load_style("technical")), (std::vector<std::string>{"contour", "crease", "border"}));
+    EXPECT_EQ(load_style("technical").shading.model, "gooch");
+    EXPECT_EQ(types_of(load_style("ink-vector")),
+              (std::vector<std::string>{"contour", "suggestive", "crease", "border"}));
     EXPECT_EQ(load_style("anime").shading.params, load_style("cel-000").shading.params);
 
     Renderer& r = test::shared_renderer();
@@ -167,7 +172,7 @@ TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
     r.set_mesh(teapot);
     CameraOptions co;
     const Camera camera = frame_camera(teapot.bounds(), co, 1.0f);
-    for (const char* name : {"anime", "toon", "ink"}) {
+    for (const char* name : {"anime", "toon", "ink", "technical", "ink-vector"}) {
         Style s = load_style(name);
         RenderOptions o;
         o.width = o.height = 192;
@@ -182,6 +187,28 @@ TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
         };
         const int with = dark_pixels(s.lines), without = dark_pixels({});
         EXPECT_GT(with, without + 300) << name;
+    }
+}
+
+// One override path for --set and the viewer: model parameters, parameters of drawn line
+// types; anything else is an error that leaves the style unchanged.
+TEST(Style, ApplyOverrideSetsModelAndLineParameters) {
+    Style s = load_style("toon");
+    apply_override(s, "shininess=8");
+    apply_override(s, "cel.specular=false");
+    apply_override(s, "hull.width=4.5");
+    EXPECT_EQ(s.shading.params.at("shininess"), ParamValue{8.0f});
+    EXPECT_EQ(s.shading.params.at("specular"), ParamValue{0.0f});
+    EXPECT_EQ(s.lines.at(0).params.at("width"), ParamValue{4.5f});
+    const Style before = s;
+    for (const char* bad : {"edges.width=2", "hull.gloss=1", "phong.shininess=3", "shininess", "hull.width=-1"}) {
+        EXPECT_THROW(apply_override(s, bad), InputError) << bad;
+        EXPECT_EQ(format_style(s), format_style(before)) << bad;
+    }
+    try {
+        apply_override(s, "edges.width=2");
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("draws no 'edges' lines (it draws hull)"), std::string::npos) << e.what();
     }
 }
 

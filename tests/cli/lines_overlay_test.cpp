@@ -1,0 +1,84 @@
+// The same object-space lines two ways: `inkshade lines` (SVG, rasterised by rsvg-convert) and
+// `inkshade render` (GPU strokes over the shading) with the same style and camera must put
+// their line pixels in the same places (issue: >= 95% of line pixels within 1 px).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "cli/run_cli.hpp"
+#include "inkshade/image.hpp"
+
+namespace inkshade::test {
+namespace {
+
+// Line pixels: dark on the white fill (the style's fill is white, its lines black).
+std::vector<uint8_t> dark_mask(const Image& image) {
+    std::vector<uint8_t> mask(size_t(image.width) * size_t(image.height), 0);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const uint8_t* p = image.pixel(x, y);
+            // Composite over white (rsvg-convert keeps alpha), then threshold the luminance.
+            const float a = p[3] / 255.0f;
+            const float lum = (0.299f * p[0] + 0.587f * p[1] + 0.114f * p[2]) * a + 255.0f * (1.0f - a);
+            mask[size_t(y) * image.width + x] = lum < 128.0f;
+        }
+    return mask;
+}
+
+// Fraction of `from`'s set pixels that have a set pixel of `to` within one pixel (3x3).
+double fraction_near(const std::vector<uint8_t>& from, const std::vector<uint8_t>& to, int w, int h, int* count) {
+    int n = 0, near = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (!from[size_t(y) * w + x]) continue;
+            ++n;
+            bool hit = false;
+            for (int dy = -1; dy <= 1 && !hit; ++dy)
+                for (int dx = -1; dx <= 1 && !hit; ++dx) {
+                    const int u = x + dx, v = y + dy;
+                    hit = u >= 0 && v >= 0 && u < w && v < h && to[size_t(v) * w + u];
+                }
+            near += hit;
+        }
+    *count = n;
+    return n ? double(near) / n : 0.0;
+}
+
+void expect_overlap(const std::string& model, const std::string& camera) {
+    TempDir dir;
+    const std::string style = dir.write("lines.toml",
+                                        "background = 'white'\nbase-color = '1,1,1'\n[light]\ncolor = '0,0,0'\n"
+                                        "ambient = '1,1,1'\n[shading]\nmodel = 'lambert'\n"
+                                        "[[lines]]\ntype = 'contour'\nwidth = 2.0\n"
+                                        "[[lines]]\ntype = 'suggestive'\nwidth = 1.5\n"
+                                        "[[lines]]\ntype = 'crease'\nwidth = 1.5\n");
+    const std::string args = model + " --style " + style + " --size 200x150 " + camera;
+    CliResult r = run_cli("lines " + args + " -o " + dir.file("l.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("render " + args + " -o " + dir.file("r.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string png = dir.file("l.png");
+    ASSERT_EQ(std::system(("rsvg-convert " + dir.file("l.svg") + " -o " + png).c_str()), 0);
+    const Image svg = read_png(png), gpu = read_png(dir.file("r.png"));
+    ASSERT_EQ(svg.width, 200);
+    ASSERT_EQ(svg.height, 150);
+    ASSERT_EQ(gpu.width, 200);
+    const auto a = dark_mask(svg), b = dark_mask(gpu);
+    int n_svg = 0, n_gpu = 0;
+    const double svg_near_gpu = fraction_near(a, b, 200, 150, &n_svg);
+    const double gpu_near_svg = fraction_near(b, a, 200, 150, &n_gpu);
+    EXPECT_GT(n_svg, 200) << "the drawing has lines";
+    EXPECT_GE(svg_near_gpu, 0.95) << n_svg << " SVG line pixels";
+    EXPECT_GE(gpu_near_svg, 0.95) << n_gpu << " GPU line pixels";
+}
+
+TEST(LinesOverlay, SvgAndGpuStrokesCoverTheSamePixelsOnTheTorus) {
+    expect_overlap("builtin:torus", "--azimuth 20 --elevation 35");
+}
+
+TEST(LinesOverlay, SvgAndGpuStrokesCoverTheSamePixelsOnTheTeapotOrthographic) {
+    expect_overlap("builtin:teapot", "--azimuth 40 --elevation 15 --ortho");
+}
+
+}  // namespace
+}  // namespace inkshade::test
