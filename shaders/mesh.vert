@@ -9,6 +9,10 @@ layout(location = 2) in vec3 a_color;
 layout(location = 5) in vec2 a_uv;
 out vec2 v_uv;
 #endif
+#ifdef INKSHADE_RADIAL_CURVATURE
+layout(location = 6) in float a_kr;  // per view, from the CPU (debug view kr)
+out float v_kr;
+#endif
 
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
@@ -27,6 +31,9 @@ void main() {
     v_object_pos = a_position;
 #ifdef INKSHADE_BASE_TEXTURE
     v_uv = a_uv;
+#endif
+#ifdef INKSHADE_RADIAL_CURVATURE
+    v_kr = a_kr;
 #endif
     gl_Position = u_view_proj * world;
 }

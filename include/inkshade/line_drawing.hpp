@@ -58,6 +58,11 @@ public:
     LineDrawing draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
                      std::vector<LineTiming>* timings = nullptr);
 
+    // Radial curvature κr per mesh vertex for this view (1/world length; DeCarlo et al. 2003:
+    // the normal curvature along the view vector projected onto the tangent plane), as the
+    // `kr` debug view shows it. Curvature is computed on the first call and kept.
+    std::vector<float> radial_curvature(const Camera& camera);
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

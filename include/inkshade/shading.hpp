@@ -18,6 +18,9 @@ struct ShadingModel {
     // the renderer then runs a depth pass from the light and binds it
     // (shaders/common/shadow.glsl).
     bool shadow_map = false;
+    // Reads the per-vertex radial curvature κr of the current view (attribute 6, v_kr, under
+    // INKSHADE_RADIAL_CURVATURE), computed on the CPU from Rusinkiewicz 2004 curvatures.
+    bool radial_curvature = false;
     std::vector<ParamSpec> params;
 
     const ParamSpec* param(const std::string& name) const;

@@ -7,6 +7,7 @@
 #include "geometry/chaining.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
+#include "geometry/suggestive_contours.hpp"
 #include "geometry/visibility.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/line_drawing.hpp"
@@ -23,6 +24,11 @@ struct LineExtractor::Impl {
 
 LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
 LineExtractor::~LineExtractor() = default;
+
+std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
+    MeshLineData& d = impl_->data;
+    return geometry::radial_curvature(d.mesh(), d.normals(), d.curvature(), camera).kr;
+}
 
 namespace {
 

@@ -87,6 +87,10 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
     std::vector<glm::vec3> hull_normals(vertices.size());
     for (size_t i = 0; i < vertices.size(); ++i) hull_normals[i] = welded[source[i]];
+    // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
+    bool identity = source.size() == mesh.positions.size();
+    for (size_t i = 0; identity && i < source.size(); ++i) identity = source[i] == i;
+    if (!identity) source_ = source;
     // Object id per stream vertex: every face using a vertex has the same id (components are
     // unions over shared positions; the stream splits vertices by material when faces have
     // materials), except for meshes with both vertex colours and several materials, where
@@ -171,6 +175,28 @@ GpuMesh::~GpuMesh() {
     glDeleteBuffers(1, &hull_normal_vbo_);
     glDeleteBuffers(1, &object_id_vbo_);
     glDeleteBuffers(1, &uv_vbo_);
+    glDeleteBuffers(1, &scalar_vbo_);
+}
+
+void GpuMesh::set_vertex_scalar(const std::vector<float>& per_mesh_vertex) {
+    std::vector<float> stream;
+    const std::vector<float>* data = &per_mesh_vertex;
+    if (!source_.empty()) {
+        stream.resize(source_.size(), 0.0f);
+        for (size_t i = 0; i < source_.size(); ++i)
+            if (source_[i] < per_mesh_vertex.size()) stream[i] = per_mesh_vertex[source_[i]];
+        data = &stream;
+    }
+    glBindVertexArray(vao_);
+    if (!scalar_vbo_) {
+        glGenBuffers(1, &scalar_vbo_);
+        glBindBuffer(GL_ARRAY_BUFFER, scalar_vbo_);
+        glEnableVertexAttribArray(6);
+        glVertexAttribPointer(6, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, scalar_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data->size() * sizeof(float)), data->data(), GL_DYNAMIC_DRAW);
+    glBindVertexArray(0);
 }
 
 void GpuMesh::draw() const {

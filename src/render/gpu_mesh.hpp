@@ -2,7 +2,8 @@
 // plus what the line passes need, each in its own buffer so the shading pass does not fetch
 // them: welded normals for the inverted hull (attribute 3) and the object id (attribute 4,
 // unsigned int, read `flat`; render/welded_attributes.hpp). A textured mesh (uvs and at least
-// one material texture) also gets its uvs (attribute 5) and one GL texture per distinct image.
+// one material texture) also gets its uvs (attribute 5) and one GL texture per distinct image;
+// a debug view may add a per-vertex scalar (attribute 6).
 #pragma once
 #include <epoxy/gl.h>
 
@@ -45,13 +46,18 @@ public:
     // mesh is textured, and `before` gets the range's material (null: none).
     void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
 
+    // Uploads one float per mesh vertex as attribute 6 (the `kr` debug view's per-view radial
+    // curvature); stream vertices duplicated per material take their source vertex's value.
+    void set_vertex_scalar(const std::vector<float>& per_mesh_vertex);
+
 private:
     struct Range {
         size_t first = 0;  // index offset into the index buffer
         GLsizei count = 0;
         uint32_t material = 0;
     };
-    GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, hull_normal_vbo_ = 0, object_id_vbo_ = 0, uv_vbo_ = 0;
+    GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, hull_normal_vbo_ = 0, object_id_vbo_ = 0, uv_vbo_ = 0, scalar_vbo_ = 0;
+    std::vector<uint32_t> source_;  // mesh vertex of each stream vertex (set_vertex_scalar)
     GLsizei index_count_ = 0;
     std::vector<Range> ranges_;
     std::vector<Material> materials_;              // names, colours and MToon values; no pixels

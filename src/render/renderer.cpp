@@ -123,6 +123,7 @@ struct Renderer::Impl {
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values,
                                     const render::SurfaceLines& lines, bool textured) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
+        if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
             const ParamValue& v = value_or_default(spec, values);
@@ -252,6 +253,10 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         }
     }
 
+    if (model.radial_curvature) {
+        PassTimer t(timings, "radial-curvature");
+        impl_->mesh->set_vertex_scalar(impl_->line_extractor->radial_curvature(camera));
+    }
     {
         PassTimer t(timings, "shading");
         fb.bind();

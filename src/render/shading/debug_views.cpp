@@ -1,7 +1,8 @@
 #include "inkshade/shading.hpp"
 
 namespace inkshade {
-// Seed 000's intermediate passes for suggestive contours (fig. 8), as debug views.
+// Seed 000's intermediate passes for suggestive contours (fig. 8), as debug views, and the
+// radial curvature they approximate (SPEC.md section 2).
 static const ShadingModelRegistration normal_view{{
     .name = "normal", .summary = "world-space normal, 0.5*n + 0.5", .fragment = "debug/normal.frag",
     .debug_view = true}};
@@ -13,4 +14,13 @@ static const ShadingModelRegistration w_view{{
     .debug_view = true}};
 static const ShadingModelRegistration ndotv_view{{
     .name = "ndotv", .summary = "grey level n.v", .fragment = "debug/ndotv.frag", .debug_view = true}};
+static const ShadingModelRegistration kr_view{{
+    .name = "kr",
+    .summary = "radial curvature kr (DeCarlo et al. 2003): red > 0, white 0, blue < 0; suggestive contours "
+               "lie on kr = 0 where it grows towards the contour",
+    .fragment = "debug/kr.frag",
+    .debug_view = true,
+    .radial_curvature = true,
+    .params = {float_param("range", 0.15f, 1e-5f, 100.0f,
+                           "kr x feature size (1% of the bounding-box diagonal) shown at full colour")}}};
 }  // namespace inkshade
