@@ -360,6 +360,15 @@ void Viewer::draw_gui() {
         ImGui::TextColored(message_is_error_ ? ImVec4(1, 0.35f, 0.3f, 1) : ImVec4(0.5f, 1, 0.5f, 1), "%s",
                            message_.c_str());
 
+    if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Text("%.1f FPS, last render %.1f ms at %dx%d", double(ImGui::GetIO().Framerate), frame_ms_, fb_width_,
+                    fb_height_);
+        ImGui::TextDisabled("  pass           wall ms   GPU ms");
+        for (const PassTiming& t : timings_)
+            ImGui::Text("  %-12s %8.2f %8.2f", t.pass.c_str(), t.milliseconds, t.gpu_milliseconds);
+        ImGui::TextDisabled("%s", renderer_->gl_renderer().c_str());
+        ImGui::TextDisabled("F: next model  1-9: lines  S: save  H: hide  R: reset  O: ortho");
+    }
     if (ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::InputText("path", &model_field_);
         if (ImGui::Button("Open")) open_model(model_field_);
@@ -443,13 +452,6 @@ void Viewer::draw_gui() {
         if (ImGui::Button("Save style")) save_style_file(style_path_);
     }
 
-    if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Text("%.1f FPS, last render %.1f ms at %dx%d", double(ImGui::GetIO().Framerate), frame_ms_, fb_width_,
-                    fb_height_);
-        for (const PassTiming& t : timings_) ImGui::Text("  %-12s %7.2f ms", t.pass.c_str(), t.milliseconds);
-        ImGui::TextDisabled("%s", renderer_->gl_renderer().c_str());
-        ImGui::TextDisabled("F: next model  1-9: lines  S: save  H: hide  R: reset  O: ortho");
-    }
     ImGui::End();
 }
 

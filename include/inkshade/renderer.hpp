@@ -29,7 +29,8 @@ struct ShadingSelection {
 
 struct PassTiming {
     std::string pass;
-    double milliseconds = 0.0;
+    double milliseconds = 0.0;      // wall time, the pass finished (glFinish) before and after
+    double gpu_milliseconds = 0.0;  // GL timestamp queries around the pass (CPU work excluded)
 };
 
 class Renderer {

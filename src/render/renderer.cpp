@@ -35,22 +35,31 @@ std::string uniform_name(const std::string& param) {
 class PassTimer {
 public:
     PassTimer(std::vector<PassTiming>* out, std::string name) : out_(out), name_(std::move(name)) {
-        if (out_) {
-            glFinish();
-            start_ = std::chrono::steady_clock::now();
-        }
+        if (!out_) return;
+        glFinish();
+        start_ = std::chrono::steady_clock::now();
+        // GPU time from timestamp queries (ARB_timer_query, core since 3.3) around the pass.
+        glGenQueries(2, queries_);
+        glQueryCounter(queries_[0], GL_TIMESTAMP);
     }
     ~PassTimer() {
         if (!out_) return;
+        glQueryCounter(queries_[1], GL_TIMESTAMP);
         glFinish();
         auto end = std::chrono::steady_clock::now();
-        out_->push_back({name_, std::chrono::duration<double, std::milli>(end - start_).count()});
+        GLuint64 t0 = 0, t1 = 0;
+        glGetQueryObjectui64v(queries_[0], GL_QUERY_RESULT, &t0);  // available: finished above
+        glGetQueryObjectui64v(queries_[1], GL_QUERY_RESULT, &t1);
+        glDeleteQueries(2, queries_);
+        out_->push_back({name_, std::chrono::duration<double, std::milli>(end - start_).count(),
+                         t1 >= t0 ? double(t1 - t0) * 1e-6 : 0.0});
     }
 
 private:
     std::vector<PassTiming>* out_;
     std::string name_;
     std::chrono::steady_clock::time_point start_;
+    GLuint queries_[2] = {0, 0};
 };
 
 // Sets u_NAME for every parameter of the model (the value given, else the default).
