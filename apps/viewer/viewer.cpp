@@ -13,7 +13,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 
 #include "geometry/mesh_stats.hpp"
@@ -38,15 +37,7 @@ Image read_window(int width, int height) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadBuffer(GL_BACK);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    const size_t row = size_t(width) * 4;
-    std::vector<uint8_t> tmp(row);
-    for (int y = 0; y < height / 2; ++y) {
-        uint8_t* a = image.rgba.data() + size_t(y) * row;
-        uint8_t* b = image.rgba.data() + size_t(height - 1 - y) * row;
-        std::memcpy(tmp.data(), a, row);
-        std::memcpy(a, b, row);
-        std::memcpy(b, tmp.data(), row);
-    }
+    flip_vertically(image);
     return image;
 }
 

@@ -17,6 +17,9 @@ struct Image {
     const uint8_t* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
 
+// Reverses the row order in place (OpenGL reads pixels bottom row first).
+void flip_vertically(Image& image);
+
 // Writes a PNG atomically (temp file in the same directory, then rename).
 // Throws RuntimeError with "FILE: reason" when it cannot.
 void write_png(const std::string& path, const Image& image);

@@ -82,24 +82,26 @@ EGLContext create_core_context(EGLDisplay display) {
     return context;
 }
 
-// Sanitizer builds only: eglTerminate unloads Mesa's driver, after which LeakSanitizer
-// cannot name the module of the driver's known teardown leak and tests/lsan.supp cannot
-// match it. Marking the loaded driver modules RTLD_NODELETE keeps them mapped until exit.
+}  // namespace
+
+// Sanitizer builds only: eglTerminate (or a window toolkit's teardown) unloads Mesa's driver,
+// after which LeakSanitizer cannot name the module of the driver's known teardown leak and
+// tests/lsan.supp cannot match it. Marking the loaded driver modules RTLD_NODELETE keeps them
+// mapped until exit.
 void pin_driver_modules_for_leak_reports() {
 #ifdef INKSHADE_SANITIZE
     dl_iterate_phdr(
         [](dl_phdr_info* info, size_t, void*) {
             const char* name = info->dlpi_name;
             if (name && (std::strstr(name, "_dri.so") || std::strstr(name, "libEGL_mesa") ||
-                         std::strstr(name, "libgallium") || std::strstr(name, "libglapi")))
+                         std::strstr(name, "libGLX_mesa") || std::strstr(name, "libgallium") ||
+                         std::strstr(name, "libglapi")))
                 dlopen(name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
             return 0;
         },
         nullptr);
 #endif
 }
-
-}  // namespace
 
 std::unique_ptr<GlContext> create_headless_context() {
     // Without a GPU, Mesa picks its software rasteriser from GALLIUM_DRIVER: make it llvmpipe

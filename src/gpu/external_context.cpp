@@ -19,7 +19,10 @@ private:
 }  // namespace
 
 std::unique_ptr<GlContext> wrap_external_context(std::function<void()> make_current) {
-    return std::make_unique<ExternalContext>(std::move(make_current));
+    auto context = std::make_unique<ExternalContext>(std::move(make_current));
+    context->make_current();
+    pin_driver_modules_for_leak_reports();  // the window's driver is loaded by now
+    return context;
 }
 
 }  // namespace inkshade::gpu

@@ -1,7 +1,6 @@
 #include "gpu/framebuffer.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 
 #include "inkshade/error.hpp"
@@ -67,16 +66,7 @@ Image Framebuffer::read(bool unpremultiply) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    // GL's first row is the bottom one; images are stored top row first.
-    const size_t row = size_t(width_) * 4;
-    std::vector<uint8_t> tmp(row);
-    for (int y = 0; y < height_ / 2; ++y) {
-        uint8_t* a = image.rgba.data() + size_t(y) * row;
-        uint8_t* b = image.rgba.data() + size_t(height_ - 1 - y) * row;
-        std::memcpy(tmp.data(), a, row);
-        std::memcpy(a, b, row);
-        std::memcpy(b, tmp.data(), row);
-    }
+    flip_vertically(image);  // GL's first row is the bottom one; images are stored top row first
     if (unpremultiply) {
         for (size_t i = 0; i < image.rgba.size(); i += 4) {
             unsigned a = image.rgba[i + 3];

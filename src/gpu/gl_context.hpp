@@ -20,6 +20,10 @@ public:
 // RuntimeError with one line saying what is missing and which package provides it.
 std::unique_ptr<GlContext> create_headless_context();
 
+// Sanitizer builds: keeps the loaded GL driver modules mapped until exit, so leak reports of
+// their teardown name them (tests/lsan.supp). Does nothing in other builds.
+void pin_driver_modules_for_leak_reports();
+
 // A context owned by someone else (a window), made current by `make_current`.
 std::unique_ptr<GlContext> wrap_external_context(std::function<void()> make_current);
 

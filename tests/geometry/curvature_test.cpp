@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/builtin_models.hpp"
+#include "geometry/analytic_meshes.hpp"
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {
@@ -19,25 +20,7 @@ constexpr float kPi = std::numbers::pi_v<float>;
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool finite(const glm::vec4& v) { return finite(glm::vec3(v)) && std::isfinite(v.w); }
 
-// Open cylinder of radius r around the z axis: `around` segments, `rows` rings from z = 0 to
-// `height`, counter-clockwise seen from outside, analytic normals.
-Mesh cylinder(float r, int around, int rows, float height) {
-    Mesh m;
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < around; ++i) {
-            const float a = 2.0f * kPi * float(i) / float(around);
-            const glm::vec3 n(std::cos(a), std::sin(a), 0.0f);
-            m.positions.push_back(r * n + glm::vec3(0.0f, 0.0f, height * float(j) / float(rows - 1)));
-            m.normals.push_back(n);
-        }
-    const auto idx = [&](int i, int j) { return uint32_t(j * around + i % around); };
-    for (int j = 0; j + 1 < rows; ++j)
-        for (int i = 0; i < around; ++i) {
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
-        }
-    return m;
-}
+using test::cylinder;
 
 void expect_frame(const Curvature& c, const std::vector<glm::vec3>& normals, size_t v) {
     EXPECT_NEAR(glm::length(c.pdir1[v]), 1.0f, 1e-4f) << v;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/builtin_models.hpp"
+#include "geometry/analytic_meshes.hpp"
 #include "geometry/chaining.hpp"
 #include "geometry/normals.hpp"
 
@@ -63,24 +64,7 @@ struct Wave {
     }
 };
 
-// Open cylinder of radius r around the z axis, z ∈ [0, height], analytic normals.
-Mesh cylinder(float r, int around, int rows, float height) {
-    Mesh m;
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < around; ++i) {
-            const float a = 2.0f * kPi * float(i) / float(around);
-            const glm::vec3 n(std::cos(a), std::sin(a), 0.0f);
-            m.positions.push_back(r * n + glm::vec3(0.0f, 0.0f, height * float(j) / float(rows - 1)));
-            m.normals.push_back(n);
-        }
-    const auto idx = [&](int i, int j) { return uint32_t(j * around + i % around); };
-    for (int j = 0; j + 1 < rows; ++j)
-        for (int i = 0; i < around; ++i) {
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
-        }
-    return m;
-}
+using test::cylinder;
 
 std::vector<LineSegment> suggestive(const Mesh& m, const Camera& camera,
                                     const SuggestiveOptions& options = {}) {
