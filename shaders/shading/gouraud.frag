@@ -1,5 +1,13 @@
 #version 450 core
-// gouraud: the vertex stage already lit the vertices; interpolate their colours.
+// gouraud: the vertex stage already lit the vertices; interpolate their colours. A base-colour
+// texture modulates the interpolated colour per pixel (lighting per vertex, texture per pixel,
+// as fixed-function Gouraud with GL_MODULATE did).
 #include "common/surface.glsl"
 
-void main() { o_color = encode_output(v_color); }
+void main() {
+    vec3 c = v_color;
+#ifdef INKSHADE_BASE_TEXTURE
+    c *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;
+#endif
+    o_color = encode_output(c);
+}

@@ -5,6 +5,10 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
+#ifdef INKSHADE_BASE_TEXTURE
+layout(location = 5) in vec2 a_uv;  // the texture modulates per pixel (gouraud.frag)
+out vec2 v_uv;
+#endif
 
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
@@ -23,5 +27,8 @@ void main() {
     v_world_normal = n;
     v_color = u_base_color * a_color * (u_light_color * lambert(n, l) + u_ambient);
     v_object_pos = a_position;
+#ifdef INKSHADE_BASE_TEXTURE
+    v_uv = a_uv;
+#endif
     gl_Position = u_view_proj * world;
 }

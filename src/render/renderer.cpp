@@ -242,9 +242,9 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     const ParamSpec* shadows_spec = model.param("shadows");
     const bool shadows =
         model.shadow_map && shadows_spec && value_or_default(*shadows_spec, shading.params).at(0) != 0.0f;
-    // Models on the shared vertex stage sample the texture in common/surface.glsl (gouraud
-    // lights per vertex in its own stage and does not).
-    const bool textured = impl_->mesh->textured() && model.vertex == "mesh.vert" && !model.debug_view;
+    // Every shading model samples the base-colour texture (common/surface.glsl; gouraud in its
+    // own fragment stage); debug views show geometry only.
+    const bool textured = impl_->mesh->textured() && !model.debug_view;
     const ParamSpec* material_params_spec = model.param("use-material-params");
     const bool material_params = impl_->mesh->has_material_params() && material_params_spec &&
                                  value_or_default(*material_params_spec, shading.params).at(0) != 0.0f;
