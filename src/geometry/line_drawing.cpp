@@ -2,6 +2,7 @@
 // (world space) → split by visibility (ray casting, visibility.hpp) → chain into polylines →
 // project to image pixels → drop short chains and smooth (in pixels) → one layer.
 #include <chrono>
+#include <future>
 #include <map>
 
 #include "geometry/chaining.hpp"
@@ -120,13 +121,19 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
     if (object_lines.empty()) return drawing;
 
     Impl& m = *impl_;
-    if (!m.scene) m.scene = timer("ray scene", [&] { return std::make_unique<RayScene>(m.data.mesh()); });
+    // The ray scene (first view only) is built on its own thread while the segments are
+    // extracted: both only read the mesh, and the serial parts of extraction (adjacency,
+    // chaining setup) leave a core free for Embree's build.
+    std::future<std::unique_ptr<RayScene>> pending_scene;
+    if (!m.scene)
+        pending_scene = std::async(std::launch::async, [&m] { return std::make_unique<RayScene>(m.data.mesh()); });
     const ImageProjection view(camera, width, height);
 
+    std::vector<std::vector<LineSegment>> segments_per_type;
     for (const LineSettings* settings : object_lines) {
         const ExtractLineSegments extract = object_line_extractor(settings->type);
         const auto start = Clock::now();
-        std::vector<LineSegment> segments = extract(m.data, camera, *settings);
+        segments_per_type.push_back(extract(m.data, camera, *settings));
         double extract_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         // Lazy mesh-wide work done inside extract() (curvature, adjacency) is reported on its
         // own stage, not as per-view extraction.
@@ -135,6 +142,13 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
             extract_ms -= ms;
         }
         timer.add("extract", extract_ms);
+    }
+    // What is left of the scene build after the overlap (an Embree error is rethrown here).
+    if (pending_scene.valid()) m.scene = timer("ray scene", [&] { return pending_scene.get(); });
+
+    for (size_t i = 0; i < object_lines.size(); ++i) {
+        const LineSettings* settings = object_lines[i];
+        const std::vector<LineSegment>& segments = segments_per_type[i];
         const bool want_hidden = line_number(*settings, "hidden") != 0.0f;
         VisibilitySplit split =
             timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments); });
