@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "geometry/face_segments.hpp"
+
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {
@@ -67,41 +69,28 @@ std::vector<LineSegment> extract_contours(const Mesh& mesh, const std::vector<gl
     const std::vector<float> g = view_dot_normal(mesh, normals, camera);
     const auto& tris = mesh.triangles;
     const size_t n = mesh.positions.size();
-    const size_t blocks = (tris.size() + kGrain - 1) / kGrain;
-    std::vector<std::vector<LineSegment>> found(blocks);
-
-    tbb::parallel_for(size_t(0), blocks, [&](size_t block) {
-        const size_t end = std::min(tris.size(), (block + 1) * kGrain);
-        for (size_t f = block * kGrain; f < end; ++f) {
-            const glm::uvec3 t = tris[f];
-            if (!valid(t, n)) continue;
-            const bool pos[3] = {g[t.x] >= 0.0f, g[t.y] >= 0.0f, g[t.z] >= 0.0f};
-            if (pos[0] == pos[1] && pos[1] == pos[2]) continue;
-            // k: the vertex whose sign differs from the other two.
-            const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);
-            const uint32_t vk = t[k], vnext = t[(k + 1) % 3], vprev = t[(k + 2) % 3];
-            LineSegment s;
-            s.face = uint32_t(f);
-            s.edge_a = edge_key(vk, vnext);
-            s.edge_b = edge_key(vprev, vk);
-            if (s.edge_a == s.edge_b) continue;  // repeated index: no segment
-            s.a = edge_zero_crossing(mesh, g, vk, vnext).p;
-            s.b = edge_zero_crossing(mesh, g, vprev, vk).p;
-            // Triangle (k, a, b) is counter-clockwise, so k lies left of a → b: keep g ≥ 0 left.
-            if (!pos[k]) {
-                std::swap(s.a, s.b);
-                std::swap(s.edge_a, s.edge_b);
-            }
-            found[block].push_back(s);
+    return collect_face_segments(tris.size(), [&](size_t f, std::vector<LineSegment>& out) {
+        const glm::uvec3 t = tris[f];
+        if (!valid(t, n)) return;
+        const bool pos[3] = {g[t.x] >= 0.0f, g[t.y] >= 0.0f, g[t.z] >= 0.0f};
+        if (pos[0] == pos[1] && pos[1] == pos[2]) return;
+        // k: the vertex whose sign differs from the other two.
+        const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);
+        const uint32_t vk = t[k], vnext = t[(k + 1) % 3], vprev = t[(k + 2) % 3];
+        LineSegment s;
+        s.face = uint32_t(f);
+        s.edge_a = edge_key(vk, vnext);
+        s.edge_b = edge_key(vprev, vk);
+        if (s.edge_a == s.edge_b) return;  // repeated index: no segment
+        s.a = edge_zero_crossing(mesh, g, vk, vnext).p;
+        s.b = edge_zero_crossing(mesh, g, vprev, vk).p;
+        // Triangle (k, a, b) is counter-clockwise, so k lies left of a → b: keep g ≥ 0 left.
+        if (!pos[k]) {
+            std::swap(s.a, s.b);
+            std::swap(s.edge_a, s.edge_b);
         }
+        out.push_back(s);
     });
-
-    size_t total = 0;
-    for (const auto& list : found) total += list.size();
-    std::vector<LineSegment> out;
-    out.reserve(total);
-    for (const auto& list : found) out.insert(out.end(), list.begin(), list.end());
-    return out;
 }
 
 std::vector<SilhouetteEdge> mesh_silhouette_edges(const Mesh& mesh, const Camera& camera) {

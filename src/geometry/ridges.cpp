@@ -2,20 +2,17 @@
 // derivative, each found from its edge alone; faces in fixed-size blocks (TBB), joined in order.
 #include "geometry/ridges.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
+#include "geometry/face_segments.hpp"
 #include "geometry/suggestive_contours.hpp"
 
 namespace inkshade::geometry {
 namespace {
-
-constexpr size_t kGrain = 16384;  // faces per TBB task, as in contours.cpp
 
 struct Family {
     const std::vector<glm::vec3>& dir;  // pdir1 or pdir2
@@ -47,35 +44,27 @@ std::vector<LineSegment> extract(const Mesh& mesh, const Curvature& c, const Fam
                                  double threshold) {
     const auto& tris = mesh.triangles;
     const size_t n = mesh.positions.size();
-    const size_t blocks = (tris.size() + kGrain - 1) / kGrain;
-    std::vector<std::vector<LineSegment>> found(blocks);
-    tbb::parallel_for(size_t(0), blocks, [&](size_t block) {
-        const size_t end = std::min(tris.size(), (block + 1) * kGrain);
-        for (size_t f = block * kGrain; f < end; ++f) {
-            const glm::uvec3 t = tris[f];
-            if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x)
-                continue;
-            glm::vec3 p[3];
-            uint64_t key[3];
-            int count = 0;
-            for (int s = 0; s < 3; ++s)
-                if (const auto x = crossing(mesh, c, fam, threshold, t[s], t[(s + 1) % 3])) {
-                    p[count] = *x;
-                    key[count++] = edge_key(t[s], t[(s + 1) % 3]);
-                }
-            if (count != 2) continue;
-            LineSegment seg;
-            seg.a = p[0];
-            seg.b = p[1];
-            seg.edge_a = key[0];
-            seg.edge_b = key[1];
-            seg.face = uint32_t(f);
-            found[block].push_back(seg);
-        }
+    return collect_face_segments(tris.size(), [&](size_t f, std::vector<LineSegment>& out) {
+        const glm::uvec3 t = tris[f];
+        if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x)
+            return;
+        glm::vec3 p[3];
+        uint64_t key[3];
+        int count = 0;
+        for (int s = 0; s < 3; ++s)
+            if (const auto x = crossing(mesh, c, fam, threshold, t[s], t[(s + 1) % 3])) {
+                p[count] = *x;
+                key[count++] = edge_key(t[s], t[(s + 1) % 3]);
+            }
+        if (count != 2) return;
+        LineSegment seg;
+        seg.a = p[0];
+        seg.b = p[1];
+        seg.edge_a = key[0];
+        seg.edge_b = key[1];
+        seg.face = uint32_t(f);
+        out.push_back(seg);
     });
-    std::vector<LineSegment> out;
-    for (const auto& list : found) out.insert(out.end(), list.begin(), list.end());
-    return out;
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "geometry/face_segments.hpp"
+
 namespace inkshade::geometry {
 namespace {
 
@@ -147,67 +149,55 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh,
     };
 
     const auto& tris = mesh.triangles;
-    const size_t blocks = (tris.size() + kGrain - 1) / kGrain;
-    std::vector<std::vector<LineSegment>> found(blocks);
-    tbb::parallel_for(size_t(0), blocks, [&](size_t block) {
-        const size_t end = std::min(tris.size(), (block + 1) * kGrain);
-        for (size_t f = block * kGrain; f < end; ++f) {
-            const glm::uvec3 t = tris[f];
-            if (t.x >= n || t.y >= n || t.z >= n) continue;
-            const bool pos[3] = {krs[t.x] >= 0.0f, krs[t.y] >= 0.0f, krs[t.z] >= 0.0f};
-            if (pos[0] == pos[1] && pos[1] == pos[2]) continue;
-            const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);
-            const uint32_t vk = t[k], vnext = t[(k + 1) % 3], vprev = t[(k + 2) % 3];
-            uint64_t key_a = edge_key(vk, vnext), key_b = edge_key(vprev, vk);
-            if (key_a == key_b) continue;  // repeated index
-            TestPoint a = on_edge(vk, vnext), b = on_edge(vprev, vk);
-            // As in extract_contours: keep krs ≥ 0 on the left of a → b.
-            if (!pos[k]) {
-                std::swap(a, b);
-                std::swap(key_a, key_b);
-            }
-
-            // The part of a → b where both num and den are positive, both linear along it.
-            double lo = 0.0, hi = 1.0;
-            for (const auto& [h0, h1] : {std::pair{a.num, b.num}, std::pair{a.den, b.den}}) {
-                if (h0 > 0.0 && h1 > 0.0) continue;
-                if (h0 <= 0.0 && h1 <= 0.0) {
-                    lo = 1.0;
-                    hi = 0.0;
-                    break;
-                }
-                const double s = h0 / (h0 - h1);
-                if (h0 > 0.0) hi = std::min(hi, s);
-                else lo = std::max(lo, s);
-            }
-            if (!(lo < hi)) continue;
-
-            auto at = [&](double s) {
-                TestPoint tp;
-                tp.p = glm::vec3(glm::dvec3(a.p) + s * (glm::dvec3(b.p) - glm::dvec3(a.p)));
-                tp.num = std::max(0.0, a.num + s * (b.num - a.num));
-                tp.den = std::max(0.0, a.den + s * (b.den - a.den));
-                return tp;
-            };
-            LineSegment seg;
-            seg.face = uint32_t(f);
-            const TestPoint pa = lo > 0.0 ? at(lo) : a, pb = hi < 1.0 ? at(hi) : b;
-            seg.a = pa.p;
-            seg.b = pb.p;
-            seg.edge_a = lo > 0.0 ? face_interior_key(uint32_t(f), 0) : key_a;
-            seg.edge_b = hi < 1.0 ? face_interior_key(uint32_t(f), 1) : key_b;
-            seg.strength_a = strength(pa.num, pa.den, fade);
-            seg.strength_b = strength(pb.num, pb.den, fade);
-            found[block].push_back(seg);
+    return collect_face_segments(tris.size(), [&](size_t f, std::vector<LineSegment>& out) {
+        const glm::uvec3 t = tris[f];
+        if (t.x >= n || t.y >= n || t.z >= n) return;
+        const bool pos[3] = {krs[t.x] >= 0.0f, krs[t.y] >= 0.0f, krs[t.z] >= 0.0f};
+        if (pos[0] == pos[1] && pos[1] == pos[2]) return;
+        const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);
+        const uint32_t vk = t[k], vnext = t[(k + 1) % 3], vprev = t[(k + 2) % 3];
+        uint64_t key_a = edge_key(vk, vnext), key_b = edge_key(vprev, vk);
+        if (key_a == key_b) return;  // repeated index
+        TestPoint a = on_edge(vk, vnext), b = on_edge(vprev, vk);
+        // As in extract_contours: keep krs ≥ 0 on the left of a → b.
+        if (!pos[k]) {
+            std::swap(a, b);
+            std::swap(key_a, key_b);
         }
-    });
 
-    size_t total = 0;
-    for (const auto& list : found) total += list.size();
-    std::vector<LineSegment> out;
-    out.reserve(total);
-    for (const auto& list : found) out.insert(out.end(), list.begin(), list.end());
-    return out;
+        // The part of a → b where both num and den are positive, both linear along it.
+        double lo = 0.0, hi = 1.0;
+        for (const auto& [h0, h1] : {std::pair{a.num, b.num}, std::pair{a.den, b.den}}) {
+            if (h0 > 0.0 && h1 > 0.0) continue;
+            if (h0 <= 0.0 && h1 <= 0.0) {
+                lo = 1.0;
+                hi = 0.0;
+                break;
+            }
+            const double s = h0 / (h0 - h1);
+            if (h0 > 0.0) hi = std::min(hi, s);
+            else lo = std::max(lo, s);
+        }
+        if (!(lo < hi)) return;
+
+        auto at = [&](double s) {
+            TestPoint tp;
+            tp.p = glm::vec3(glm::dvec3(a.p) + s * (glm::dvec3(b.p) - glm::dvec3(a.p)));
+            tp.num = std::max(0.0, a.num + s * (b.num - a.num));
+            tp.den = std::max(0.0, a.den + s * (b.den - a.den));
+            return tp;
+        };
+        LineSegment seg;
+        seg.face = uint32_t(f);
+        const TestPoint pa = lo > 0.0 ? at(lo) : a, pb = hi < 1.0 ? at(hi) : b;
+        seg.a = pa.p;
+        seg.b = pb.p;
+        seg.edge_a = lo > 0.0 ? face_interior_key(uint32_t(f), 0) : key_a;
+        seg.edge_b = hi < 1.0 ? face_interior_key(uint32_t(f), 1) : key_b;
+        seg.strength_a = strength(pa.num, pa.den, fade);
+        seg.strength_b = strength(pb.num, pb.den, fade);
+        out.push_back(seg);
+    });
 }
 
 }  // namespace inkshade::geometry
