@@ -1,7 +1,5 @@
 // `inkshade lines MODEL -o out.svg`: the object-space line drawing of a model (contours,
 // suggestive contours, creases, borders, ...) with hidden lines removed, as layered SVG.
-#include <sys/resource.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +13,9 @@
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "io/atomic_file.hpp"
+#include "output_path.hpp"
 #include "scene_options.hpp"
+#include "timing_report.hpp"
 
 namespace inkshade::cli {
 
@@ -24,23 +24,6 @@ namespace {
 // Drawn when neither --lines nor the style names an object-space type (SPEC §3 vector output).
 const std::vector<std::string> kDefaultLines = {"contour", "suggestive", "crease", "border"};
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
-// Fails early (before loading and extracting) when the output cannot be written there.
-void check_output_path(const std::string& option, const std::string& path) {
-    namespace fs = std::filesystem;
-    fs::path p(path);
-    std::error_code ec;
-    if (path.empty()) throw InputError(option + ": empty path");
-    if (fs::is_directory(p, ec)) throw InputError(path + ": output is a directory");
-    fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    if (!fs::is_directory(dir, ec)) throw InputError(path + ": directory " + dir.string() + " does not exist");
-    if (::access(dir.c_str(), W_OK) != 0) throw InputError(path + ": directory " + dir.string() + " is not writable");
-}
 
 struct LinesArgs {
     SceneOptions scene;
@@ -119,10 +102,8 @@ void print_timing(const LinesArgs& args, const Mesh& mesh, const LineDrawing& dr
             std::snprintf(buf, sizeof buf, "%s%s %.0f ms", once.empty() ? "" : ", ", t.stage.c_str(), t.milliseconds);
             once += buf;
         }
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
     std::printf("  once per mesh: %s; load %.0f ms, peak RSS %.0f MiB\n", once.empty() ? "none" : once.c_str(),
-                load_ms, double(usage.ru_maxrss) / 1024.0);
+                load_ms, peak_rss_mib());
 }
 
 int run_lines(const LinesArgs& args) {

@@ -1,37 +1,20 @@
 // `inkshade render MODEL -o out.png`: one image of a model with a shading model.
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <map>
 
 #include "commands.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "output_path.hpp"
 #include "scene_options.hpp"
+#include "timing_report.hpp"
 
 namespace inkshade::cli {
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
-// Fails early (before loading and rendering) when the output cannot be written there.
-void check_output_path(const std::string& path) {
-    namespace fs = std::filesystem;
-    fs::path p(path);
-    std::error_code ec;
-    if (fs::is_directory(p, ec)) throw InputError(path + ": output is a directory");
-    fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    if (!fs::is_directory(dir, ec)) throw InputError(path + ": directory " + dir.string() + " does not exist");
-}
 
 // What the load got past (a texture not found, skipped primitives): one line each on stderr,
 // not an error.
@@ -50,7 +33,7 @@ struct RenderArgs {
 };
 
 int run_render(const RenderArgs& args) {
-    check_output_path(args.output);
+    check_output_path("-o", args.output);
     const Style style = args.scene.resolved_style();
     const RenderOptions options = args.scene.render_options(style);
     const ShadingSelection& shading = style.shading;
@@ -85,9 +68,7 @@ int run_render(const RenderArgs& args) {
                     renderer.gl_renderer().c_str());
         for (const auto& pass : order) std::printf("  %-10s median %8.2f ms\n", pass.c_str(), median(per_pass[pass]));
         std::printf("  %-10s median %8.2f ms\n", "total", median(totals));
-        rusage usage{};
-        getrusage(RUSAGE_SELF, &usage);
-        std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, double(usage.ru_maxrss) / 1024.0);
+        std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, peak_rss_mib());
     }
     write_png(args.output, image);
     if (!args.save_style.empty()) save_style(args.save_style, style);
