@@ -55,6 +55,17 @@ TEST(RenderCommand, FailedRunLeavesNoPartialFile) {
         EXPECT_EQ(e.path().filename().string().find("a.png"), std::string::npos) << e.path();
 }
 
+// The output path is checked before any work (the check `lines` uses too).
+TEST(RenderCommand, BadOutputPathIsExit2BeforeRendering) {
+    TempDir dir;
+    for (const std::string& out : {std::string("''"), dir.path().string(), dir.file("missing/a.png")}) {
+        auto r = run_cli("render builtin:sphere -o " + out);
+        EXPECT_EQ(r.status, 2) << out << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << r.err;
+    }
+    EXPECT_NE(run_cli("render builtin:sphere -o ''").err.find("-o: empty path"), std::string::npos);
+}
+
 TEST(RenderCommand, UnknownShadingModelIsExit2) {
     TempDir dir;
     auto r = run_cli("render builtin:sphere --shading glossy -o " + dir.file("a.png"));
