@@ -9,6 +9,7 @@
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "output_path.hpp"
+#include "scene_file.hpp"
 #include "scene_options.hpp"
 #include "timing_report.hpp"
 
@@ -30,10 +31,13 @@ struct RenderArgs {
     std::string output;
     int timing = 0;
     std::string save_style;
+    std::string scene_file;  // --scene
 };
 
-int run_render(const RenderArgs& args) {
+int run_render(RenderArgs& args, const CLI::App& cmd) {
     check_output_path("-o", args.output);
+    if (!args.scene_file.empty()) apply_scene_file(args.scene_file, cmd, args.scene);
+    if (args.scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     const Style style = args.scene.resolved_style();
     const RenderOptions options = args.scene.render_options(style);
     const ShadingSelection& shading = style.shading;
@@ -80,13 +84,16 @@ int run_render(const RenderArgs& args) {
 Command add_render_command(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "render a model to a PNG image");
-    args->scene.add_to(*cmd);
+    args->scene.add_to(*cmd, /*model_required=*/false);  // --scene may name it
     cmd->add_option("-o,--output", args->output, "output PNG file (written atomically)")->required();
     cmd->add_option("--timing", args->timing, "render N extra frames and print median ms per pass and total")
         ->check(CLI::Range(0, 100000));
     cmd->add_option("--save-style", args->save_style,
                     "also write the style used (with every --set applied) to a .toml file");
-    return [args] { return run_render(*args); };
+    cmd->add_option("--scene", args->scene_file,
+                    "three.js-like scene JSON (mesh, material, lights, camera, background; docs/threejs.md); "
+                    "options given here override its values");
+    return [args, cmd] { return run_render(*args, *cmd); };
 }
 
 }  // namespace inkshade::cli

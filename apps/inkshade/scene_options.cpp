@@ -42,7 +42,12 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--up", up, "camera up vector x,y,z")->capture_default_str();
     cmd.add_option("--fov", fov, "vertical field of view in degrees")->capture_default_str();
     cmd.add_flag("--ortho", ortho, "orthographic projection");
+    cmd.add_option("--ortho-height", ortho_height, "orthographic view height in world units (default: framed to the model)");
+    cmd.add_option("--near", near, "near clipping plane distance (default: fitted to the model)");
+    cmd.add_option("--far", far, "far clipping plane distance (default: fitted to the model)");
     cmd.add_option("--light-pos", light_pos, "light position x,y,z (world; default above-left of the camera)");
+    cmd.add_option("--light-target", light_target,
+                   "point a directional light shines towards, x,y,z (default: the model centre)");
     cmd.add_option("--light-type", light_type, "directional (from position to the model centre) or point")
         ->capture_default_str();
     cmd.add_option("--light-color", light_color, "light colour E (default 0.9 grey)");
@@ -83,8 +88,20 @@ Style SceneOptions::resolved_style() const {
 Style SceneOptions::loaded_style() const {
     if (!style.empty() && !shading.empty())
         throw InputError("--style and --shading are alternatives: use one (a style names its shading model)");
-    if (!shading.empty()) return load_style(shading_model(shading).name);  // validates the model name
-    return load_style(style.empty() ? "lambert" : style);
+    if (scene_style && style.empty() && shading.empty()) return *scene_style;
+    Style s = !shading.empty() ? load_style(shading_model(shading).name)  // validates the model name
+                               : load_style(style.empty() ? "lambert" : style);
+    if (scene_style) {
+        // The scene's lights and background stay the scene's whatever the look.
+        s.light_color = scene_style->light_color;
+        s.ambient = scene_style->ambient;
+        s.background = scene_style->background;
+        const ShadingModel& model = shading_model(s.shading.model);
+        for (const char* name : {"light-intensity", "ambient-intensity", "light-decay", "light-distance"})
+            if (auto it = scene_style->shading.params.find(name); it != scene_style->shading.params.end() && model.param(name))
+                s.shading.params[name] = it->second;
+    }
+    return s;
 }
 
 void SceneOptions::apply_overrides(Style& s) const {
@@ -128,6 +145,14 @@ CameraOptions SceneOptions::camera_options() const {
     if (!(fov > 0.0f && fov < 180.0f)) throw InputError("--fov: expected degrees in (0, 180)");
     o.fov_degrees = fov;
     o.orthographic = ortho;
+    if (near && !(*near > 0.0f && std::isfinite(*near)) && !ortho) throw InputError("--near: must be a positive number");
+    if (near && !std::isfinite(*near)) throw InputError("--near: must be a finite number");
+    if (far && !(std::isfinite(*far) && *far > near.value_or(0.0f))) throw InputError("--far: must be greater than --near");
+    if (ortho_height && !(*ortho_height > 0.0f && std::isfinite(*ortho_height)))
+        throw InputError("--ortho-height: must be a positive number");
+    o.near_plane = near;
+    o.far_plane = far;
+    o.ortho_height = ortho_height;
     return o;
 }
 
@@ -137,6 +162,9 @@ Light SceneOptions::light(const BoundingBox& box, const Camera& camera, const St
     else if (light_type != "directional")
         throw InputError("--light-type: expected directional or point, got '" + light_type + "'");
     if (!light_pos.empty()) l.position = parse_vec3("--light-pos", light_pos);
+    if (!light_target.empty()) l.target = parse_vec3("--light-target", light_target);
+    if (l.type == LightType::Directional && l.position == l.target)
+        throw InputError("--light-pos: equals the light's target, so a directional light has no direction");
     apply_style_light(style, l);
     return l;
 }

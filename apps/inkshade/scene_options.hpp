@@ -22,10 +22,15 @@ struct SceneOptions {
     std::string eye, target, up;
     float fov = 30.0f;
     bool ortho = false;
-    std::string light_pos, light_type = "directional", light_color, ambient, base_color;
+    std::optional<float> near, far, ortho_height;  // unset: fitted to the model
+    std::string light_pos, light_target, light_type = "directional", light_color, ambient, base_color;
     std::string background;  // empty: the style's
     int samples = 4;
     bool srgb = false;
+    // A three.js scene (render --scene, scene_file.hpp): its material, lines, light colours and
+    // background when neither --style nor --shading is given. With one of them, the scene still
+    // gives that style its light colours, background and light parameters (light-intensity, ...).
+    std::optional<Style> scene_style;
 
     // MODEL is a required positional unless model_required is false (`view` opens a default).
     void add_to(CLI::App& cmd, bool model_required = true);

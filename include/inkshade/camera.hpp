@@ -30,6 +30,9 @@ struct CameraOptions {
     std::optional<glm::vec3> eye, target, up;
     float fov_degrees = 30.0f;
     bool orthographic = false;
+    // Fixed instead of fitted to the model (a three.js camera's near, far, top - bottom).
+    std::optional<float> near_plane, far_plane;
+    std::optional<float> ortho_height;
 };
 
 // Default view angles of auto-framing: a three-quarter view from slightly above.

@@ -10,4 +10,11 @@ namespace inkshade {
 // Throws InputError("bad colour 'x' (use #rrggbb, r,g,b in [0,1] or a name)").
 glm::vec4 parse_color(const std::string& text);
 
+// The sRGB transfer function (IEC 61966-2-1) with three.js's ColorManagement constants:
+// sRGB-encoded components (as in "#ff8800") to linear light and back.
+float srgb_to_linear(float c);
+glm::vec3 srgb_to_linear(const glm::vec3& c);
+float linear_to_srgb(float c);
+glm::vec3 linear_to_srgb(const glm::vec3& c);
+
 }  // namespace inkshade

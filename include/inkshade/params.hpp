@@ -36,6 +36,9 @@ struct ParamSpec {
     // `#define INKSHADE_NAME value` (NAME upper-case, '-' -> '_') instead of a uniform, since
     // llvmpipe runs a switched-off branch anyway. Each value used gets its own program.
     bool compile_time = false;
+    // Color typed as sRGB-encoded components, as three.js users write colours (0xff8800): the
+    // uniform receives the linear value (decoded once on the CPU, not per pixel).
+    bool srgb = false;
 };
 
 // Marks a Bool or Choice parameter as compile-time (see ParamSpec::compile_time).
@@ -46,6 +49,8 @@ ParamSpec float_param(std::string name, float value, float min, float max, std::
 ParamSpec int_param(std::string name, int value, int min, int max, std::string doc);
 ParamSpec bool_param(std::string name, bool value, std::string doc);
 ParamSpec color_param(std::string name, glm::vec3 value, std::string doc);
+// A Color whose value is sRGB-encoded (ParamSpec::srgb).
+ParamSpec srgb_color_param(std::string name, glm::vec3 value, std::string doc);
 ParamSpec choice_param(std::string name, std::vector<std::string> choices, int value, std::string doc);
 ParamSpec list_param(std::string name, std::vector<float> values, int max_count, float min, float max,
                      std::string doc);

@@ -53,8 +53,9 @@ public:
                  const RenderOptions& options, std::vector<PassTiming>* timings = nullptr);
 
     // Renders the current mesh with the image-space line types among `lines` (LineSpace::Image:
-    // hull, rim-contour, edges, suggestive-image; docs/lines-raster.md); object-space types are
-    // skipped here. Passes: shading (with the rim-contour test), hull, then when edges or
+    // hull, rim-contour, edges, suggestive-image, threejs-outline; docs/lines-raster.md,
+    // docs/threejs.md); object-space types are skipped here. Passes: shading (with the
+    // rim-contour test), hull, threejs-outline, then when edges or
     // suggestive-image are on a G-buffer pass and one full-screen image-lines pass; resolve,
     // readback.
     Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,

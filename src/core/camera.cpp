@@ -70,8 +70,10 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect
     }
     if (!o.eye && !o.distance && !o.target) cam.eye = cam.target + dir * std::min(fit, 1.08f * need);
     // Orthographic: the box's projected extent with a 5% margin.
-    cam.ortho_height = 2.1f * std::max({half_y, half_x / aspect, 1e-6f});
+    cam.ortho_height = o.ortho_height.value_or(2.1f * std::max({half_y, half_x / aspect, 1e-6f}));
     fit_clip_planes(cam, box);
+    if (o.near_plane) cam.near_plane = *o.near_plane;
+    if (o.far_plane) cam.far_plane = *o.far_plane;
     return cam;
 }
 

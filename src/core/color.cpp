@@ -57,4 +57,14 @@ glm::vec4 parse_color(const std::string& text) {
     bad(text);
 }
 
+float srgb_to_linear(float c) {
+    return c < 0.04045f ? c * 0.0773993808f : std::pow(c * 0.9478672986f + 0.0521327014f, 2.4f);
+}
+
+glm::vec3 srgb_to_linear(const glm::vec3& c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)}; }
+
+float linear_to_srgb(float c) { return c < 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 0.41666f) - 0.055f; }
+
+glm::vec3 linear_to_srgb(const glm::vec3& c) { return {linear_to_srgb(c.r), linear_to_srgb(c.g), linear_to_srgb(c.b)}; }
+
 }  // namespace inkshade

@@ -58,6 +58,11 @@ ParamSpec bool_param(std::string name, bool value, std::string doc) {
 ParamSpec color_param(std::string name, glm::vec3 value, std::string doc) {
     return {std::move(name), ParamType::Color, {value.r, value.g, value.b}, 0.0f, 1.0f, std::move(doc)};
 }
+ParamSpec srgb_color_param(std::string name, glm::vec3 value, std::string doc) {
+    ParamSpec spec = color_param(std::move(name), value, std::move(doc));
+    spec.srgb = true;
+    return spec;
+}
 ParamSpec choice_param(std::string name, std::vector<std::string> choices, int value, std::string doc) {
     float max = float(choices.size()) - 1.0f;
     return {std::move(name), ParamType::Choice, {float(value)}, 0.0f, max, std::move(doc), std::move(choices)};

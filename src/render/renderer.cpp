@@ -10,12 +10,14 @@
 #include "gpu/framebuffer.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/shader_program.hpp"
+#include "inkshade/color.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "render/gbuffer.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/lines/hull.hpp"
 #include "render/lines/image_lines_pass.hpp"
+#include "render/lines/threejs_outline.hpp"
 #include "render/shadow_pass.hpp"
 #include "render/stroke_pass.hpp"
 #include "render/surface_lines.hpp"
@@ -73,7 +75,11 @@ void upload_params(gpu::ShaderProgram& program, const ShadingModel& model, const
             case ParamType::Int:
             case ParamType::Bool:
             case ParamType::Choice: program.set(u, int(v.at(0))); break;
-            case ParamType::Color: program.set(u, glm::vec3(v.at(0), v.at(1), v.at(2))); break;
+            case ParamType::Color: {
+                const glm::vec3 c(v.at(0), v.at(1), v.at(2));
+                program.set(u, spec.srgb ? srgb_to_linear(c) : c);  // three.js colours: decoded once here
+                break;
+            }
             case ParamType::FloatList: {
                 std::vector<float> padded(size_t(spec.max_count), v.empty() ? 0.0f : v.back());
                 std::copy_n(v.begin(), std::min(v.size(), padded.size()), padded.begin());
@@ -118,6 +124,7 @@ struct Renderer::Impl {
     // Line passes, created on first use.
     std::unique_ptr<render::GBuffer> gbuffer;  // the image's size
     std::unique_ptr<render::HullPass> hull;
+    std::unique_ptr<render::ThreejsOutlinePass> threejs_outline;
     std::unique_ptr<render::ImageLinesPass> image_lines;
     // Object-space lines: extracted on the CPU (ray-cast visibility), drawn as strokes. The
     // extractor keeps its own copy of positions, triangles and normals (set_mesh), since the
@@ -169,11 +176,19 @@ Renderer::Renderer(std::function<void()> make_current) : impl_(std::make_unique<
 
 Renderer::~Renderer() {
     if (!impl_ || !impl_->context) return;
-    impl_->context->make_current();
+    try {
+        impl_->context->make_current();
+    } catch (const std::exception&) {
+        // The context is gone (a window closed first): its GL objects went with it, and GL calls
+        // without a context must not be made. Nothing may throw out of a destructor.
+        (void)impl_.release();
+        return;
+    }
     // GL objects go before the context that owns them.
     impl_->gbuffer.reset();
     impl_->strokes.reset();
     impl_->hull.reset();
+    impl_->threejs_outline.reset();
     impl_->image_lines.reset();
     impl_->framebuffer.reset();
     impl_->shadow.reset();
@@ -181,7 +196,10 @@ Renderer::~Renderer() {
     impl_->mesh.reset();
 }
 
-std::string Renderer::gl_renderer() const { return impl_->context->renderer(); }
+std::string Renderer::gl_renderer() const {
+    impl_->context->make_current();
+    return impl_->context->renderer();
+}
 
 void Renderer::set_mesh(const Mesh& mesh) {
     if (mesh.triangles.empty()) throw InputError("mesh has no triangles");
@@ -220,7 +238,8 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     if (!impl_->mesh) throw RuntimeError("no mesh to render (set_mesh first)");
     // The image-space line types of the style get GPU passes; object-space ones are extracted
     // on the CPU and drawn as strokes.
-    const LineSettings *hull = nullptr, *rim = nullptr, *edges = nullptr, *suggestive = nullptr;
+    const LineSettings *hull = nullptr, *rim = nullptr, *edges = nullptr, *suggestive = nullptr,
+                       *threejs_outline = nullptr;
     std::vector<LineSettings> vector_lines;
     for (const LineSettings& l : lines) {
         if (line_type(l.type).space == LineSpace::Object) vector_lines.push_back(l);
@@ -229,6 +248,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         else if (l.type == "rim-contour") rim = &l;
         else if (l.type == "edges") edges = &l;
         else if (l.type == "suggestive-image") suggestive = &l;
+        else if (l.type == "threejs-outline") threejs_outline = &l;
     }
     render::SurfaceLines surface_lines;
     surface_lines.rim = rim;
@@ -290,6 +310,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         const glm::mat4 model_matrix(1.0f);
         program.set("u_model", model_matrix);
         program.set("u_view_proj", camera.projection(aspect) * camera.view());
+        program.set("u_view", camera.view());
         program.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model_matrix))));
         program.set("u_eye", camera.eye);
         program.set("u_view_dir", glm::normalize(camera.target - camera.eye));
@@ -328,6 +349,12 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         fb.bind();
         if (!impl_->hull) impl_->hull = std::make_unique<render::HullPass>();
         impl_->hull->draw(*impl_->mesh, camera, options.width, options.height, *hull);
+    }
+    if (threejs_outline) {
+        PassTimer t(timings, "threejs-outline");
+        fb.bind();
+        if (!impl_->threejs_outline) impl_->threejs_outline = std::make_unique<render::ThreejsOutlinePass>();
+        impl_->threejs_outline->draw(*impl_->mesh, camera, options.width, options.height, *threejs_outline);
     }
     if (edges || suggestive) {
         {
