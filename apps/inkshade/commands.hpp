@@ -15,5 +15,6 @@ Command add_view_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
 Command add_styles_command(CLI::App& app);
 Command add_demo_command(CLI::App& app);
+Command add_batch_command(CLI::App& app);
 
 }  // namespace inkshade::cli

@@ -129,6 +129,15 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         pending_scene = std::async(std::launch::async, [&m] { return std::make_unique<RayScene>(m.data.mesh()); });
     const ImageProjection view(camera, width, height);
 
+    MeshLineNeeds needs;
+    for (const LineSettings* settings : object_lines) {
+        const MeshLineNeeds n = object_line_needs(settings->type);
+        needs.adjacency |= n.adjacency;
+        needs.curvature |= n.curvature;
+    }
+    m.data.prepare(needs);
+    for (const auto& [stage, ms] : m.data.take_setup_timings()) timer.add(stage, ms);
+
     std::vector<std::vector<LineSegment>> segments_per_type;
     for (const LineSettings* settings : object_lines) {
         const ExtractLineSegments extract = object_line_extractor(settings->type);

@@ -8,6 +8,8 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <vector>
 
 #include "gpu/gl_context.hpp"
@@ -30,13 +32,35 @@ constexpr const char* kInstallHint =
     "install Mesa's EGL and software rasteriser: apt-get install libegl1 libegl-mesa0 "
     "libgl1-mesa-dri";
 
+// One EGLDisplay per platform/device is shared by every context of the process, and
+// eglTerminate is not reference-counted (EGL 1.5 section 3.2): count the renderers using each
+// display so one renderer going away does not pull the display from under another.
+std::mutex display_mutex;
+std::map<EGLDisplay, int> display_users;
+
+bool acquire_display(EGLDisplay display) {
+    std::lock_guard lock(display_mutex);
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(display, &major, &minor)) return false;
+    ++display_users[display];
+    return true;
+}
+
+void release_display(EGLDisplay display) {
+    std::lock_guard lock(display_mutex);
+    if (--display_users[display] > 0) return;
+    display_users.erase(display);
+    eglTerminate(display);
+}
+
 class EglContext final : public GlContext {
 public:
     EglContext(EGLDisplay display, EGLContext context) : display_(display), context_(context) {}
     ~EglContext() override {
-        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (eglGetCurrentContext() == context_)
+            eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
-        eglTerminate(display_);
+        release_display(display_);
     }
     void make_current() override {
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
@@ -57,9 +81,11 @@ bool has_client_extension(const char* name) {
 
 // Creates a GL 4.5 core context on display, or returns EGL_NO_CONTEXT.
 EGLContext create_core_context(EGLDisplay display) {
-    EGLint major = 0, minor = 0;
-    if (!eglInitialize(display, &major, &minor)) return EGL_NO_CONTEXT;
-    if (!eglBindAPI(EGL_OPENGL_API)) return EGL_NO_CONTEXT;
+    if (!acquire_display(display)) return EGL_NO_CONTEXT;
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        release_display(display);
+        return EGL_NO_CONTEXT;
+    }
     const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint count = 0;
@@ -71,12 +97,12 @@ EGLContext create_core_context(EGLDisplay display) {
                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
     if (context == EGL_NO_CONTEXT) {
-        eglTerminate(display);
+        release_display(display);
         return EGL_NO_CONTEXT;
     }
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         eglDestroyContext(display, context);
-        eglTerminate(display);
+        release_display(display);
         return EGL_NO_CONTEXT;
     }
     return context;

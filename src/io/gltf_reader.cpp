@@ -55,6 +55,9 @@ constexpr size_t kMaxVertices = size_t(1) << 28;
 constexpr size_t kMaxTriangles = size_t(1) << 28;
 constexpr size_t kMaxBufferFileBytes = size_t(4) << 30;  // GLB lengths are 32-bit anyway
 constexpr size_t kMaxNodeDepth = 1024;
+// tinygltf copies `extensions` and `extras` into its Value type recursively (and destroys them
+// recursively): JSON nested 100000 deep overflowed the stack. glTF itself nests about 8 deep.
+constexpr size_t kMaxJsonDepth = 512;
 // Accessors without a bufferView are zeros (plus sparse values): no bytes back their count.
 constexpr size_t kMaxDatalessElements = size_t(1) << 22;
 
@@ -138,6 +141,27 @@ bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::st
     if (image->bufferView < 0 && bytes != nullptr && size > 0) image->image.assign(bytes, bytes + size);
     image->as_is = true;
     return true;
+}
+
+// Refuses JSON nested deeper than kMaxJsonDepth (arrays and objects; brackets inside strings
+// do not count) before tinygltf recurses through it.
+void check_json_depth(std::string_view json, const std::string& path) {
+    size_t depth = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth)
+                throw InputError(path, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels at byte " + std::to_string(i));
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
 }
 
 // --- GLB container (glTF 2.0 section 4.4) -------------------------------------------------
@@ -900,10 +924,12 @@ Mesh read_gltf(const std::string& path) {
     try {
         if (binary) {
             const size_t length = check_glb(bytes, path);
+            check_json_depth(bytes.substr(20, le32(bytes.data() + 12)), path);
             ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                              unsigned(length), base_dir);
         } else {
             if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError(path, "JSON larger than 4 GiB");
+            check_json_depth(bytes, path);
             ok = loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
         }
     } catch (const InputError&) {

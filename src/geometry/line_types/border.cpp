@@ -13,7 +13,8 @@ const ObjectLineRegistration registration{
     {.name = "border",
      .summary = "borders: mesh boundary edges (edges of exactly one face)",
      .params = object_line_params(glm::vec3(0.0f), 1.5f, {}, 0.0f)},
-    extract};
+    extract,
+    {.adjacency = true}};
 
 }  // namespace
 

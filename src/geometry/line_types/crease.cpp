@@ -24,7 +24,8 @@ const ObjectLineRegistration registration{
                       "dihedral threshold in degrees between the two face normals (60°: about Blender's and "
                       "trimesh2's sharp-edge angle, above the facets of a tessellated curved surface)")},
          0.0f)},
-    extract};
+    extract,
+    {.adjacency = true}};
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <utility>
 
+#include <tbb/parallel_invoke.h>
+
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {
@@ -24,6 +26,23 @@ MeshLineData::MeshLineData(const Mesh& mesh) {
     mesh_.triangles = mesh.triangles;
     mesh_.normals = mesh.normals;
     ensure_vertex_normals(mesh_);
+}
+
+void MeshLineData::prepare(MeshLineNeeds needs) {
+    if (needs.adjacency && !adjacency_ && needs.curvature && !curvature_) {
+        // Each task logs into its own list; the two are merged afterwards.
+        std::vector<std::pair<std::string, double>> adjacency_log, curvature_log;
+        tbb::parallel_invoke(
+            [&] { adjacency_ = timed(adjacency_log, "adjacency", [&] { return build_edge_adjacency(mesh_); }); },
+            [&] {
+                curvature_ = timed(curvature_log, "curvature", [&] { return compute_curvature(mesh_, mesh_.normals); });
+            });
+        for (auto* log : {&curvature_log, &adjacency_log})
+            setup_timings_.insert(setup_timings_.end(), log->begin(), log->end());
+        return;
+    }
+    if (needs.adjacency) adjacency();
+    if (needs.curvature) curvature();
 }
 
 const EdgeAdjacency& MeshLineData::adjacency() {

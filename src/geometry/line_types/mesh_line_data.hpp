@@ -15,6 +15,12 @@
 
 namespace inkshade::geometry {
 
+// The mesh-wide data a line type reads besides positions and normals.
+struct MeshLineNeeds {
+    bool adjacency = false;  // creases, borders
+    bool curvature = false;  // suggestive contours, ridges, valleys
+};
+
 class MeshLineData {
 public:
     // Copies positions and triangles (so the caller's mesh may go away); keeps the mesh's
@@ -24,6 +30,11 @@ public:
     // Positions, triangles and unit normals (no colours or uvs).
     const Mesh& mesh() const { return mesh_; }
     const std::vector<glm::vec3>& normals() const { return mesh_.normals; }
+
+    // Computes what `needs` asks for and is not cached yet, the two at once when both are
+    // missing: adjacency is a serial counting sort and curvature a parallel loop, so on a
+    // first view the sort runs beside the curvature threads instead of after them.
+    void prepare(MeshLineNeeds needs);
 
     const EdgeAdjacency& adjacency();
     const Curvature& curvature();  // Rusinkiewicz 2004, from normals()

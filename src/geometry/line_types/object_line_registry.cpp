@@ -6,22 +6,32 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::map<std::string, ExtractLineSegments>& extractors() {
-    static std::map<std::string, ExtractLineSegments> map;
+struct Registered {
+    ExtractLineSegments extract = nullptr;
+    MeshLineNeeds needs;
+};
+
+std::map<std::string, Registered>& extractors() {
+    static std::map<std::string, Registered> map;
     return map;
 }
 
 }  // namespace
 
-ObjectLineRegistration::ObjectLineRegistration(LineType type, ExtractLineSegments extract) {
+ObjectLineRegistration::ObjectLineRegistration(LineType type, ExtractLineSegments extract, MeshLineNeeds needs) {
     type.space = LineSpace::Object;
-    extractors()[type.name] = extract;
+    extractors()[type.name] = {extract, needs};
     LineTypeRegistration{std::move(type)};
 }
 
 ExtractLineSegments object_line_extractor(const std::string& type_name) {
     auto it = extractors().find(type_name);
-    return it == extractors().end() ? nullptr : it->second;
+    return it == extractors().end() ? nullptr : it->second.extract;
+}
+
+MeshLineNeeds object_line_needs(const std::string& type_name) {
+    auto it = extractors().find(type_name);
+    return it == extractors().end() ? MeshLineNeeds{} : it->second.needs;
 }
 
 std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::vector<ParamSpec> own,

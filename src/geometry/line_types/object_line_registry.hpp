@@ -18,11 +18,15 @@ using ExtractLineSegments = std::vector<LineSegment> (*)(MeshLineData& data, con
                                                          const LineSettings& settings);
 
 struct ObjectLineRegistration {
-    ObjectLineRegistration(LineType type, ExtractLineSegments extract);
+    // `needs`: the mesh-wide data extract() reads, so LineExtractor can compute what a drawing
+    // needs up front and concurrently (MeshLineData::prepare).
+    ObjectLineRegistration(LineType type, ExtractLineSegments extract, MeshLineNeeds needs = {});
 };
 
 // The extractor of an object-space type, or nullptr.
 ExtractLineSegments object_line_extractor(const std::string& type_name);
+// What the type's extractor reads (nothing for unknown types).
+MeshLineNeeds object_line_needs(const std::string& type_name);
 
 // The parameters of an object-space type: stroke_params(color, width), then `own`, then the
 // clean-up and output parameters every object-space type has (min-length, smooth, taper,

@@ -22,7 +22,8 @@ const ObjectLineRegistration registration{
                       "world length making threshold dimensionless; 0 = 1% of the bounding-box diagonal, as for "
                       "suggestive contours")},
          2.0f)},
-    extract};
+    extract,
+    {.curvature = true}};
 
 }  // namespace
 

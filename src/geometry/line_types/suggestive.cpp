@@ -29,7 +29,8 @@ const ObjectLineRegistration registration{
                       "world length making threshold and fade dimensionless; 0 = 1% of the bounding-box "
                       "diagonal (about rtsc's median edge length on its scans)")},
          4.0f)},
-    extract};
+    extract,
+    {.curvature = true}};
 
 }  // namespace
 

@@ -1,0 +1,160 @@
+// Dataset rendering: jobs (one model, view and style -> STEM.png / STEM.svg + STEM.json),
+// manifests (CSV or JSON Lines), named view sets, deterministic shards and the runner behind
+// `inkshade batch` (docs/cli.md#batch). Everything but run_batch needs no OpenGL.
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "inkshade/camera.hpp"
+
+namespace inkshade {
+
+// One camera placement; what CameraOptions leaves unset is auto-framed as `inkshade render`
+// does (so a batch image equals the render of the same options).
+struct BatchView {
+    std::string name;  // the file-name part of the job's stem: "az045_el30", "cam1", "front"
+    CameraOptions camera;
+};
+
+struct BatchOutputs {
+    bool png = true;   // the style rendered by the GPU, as `inkshade render`
+    bool svg = false;  // object-space lines with hidden parts removed, as `inkshade lines`
+};
+
+struct BatchJob {
+    std::string model;  // mesh file or builtin:NAME, as load_mesh takes it
+    std::string style;  // built-in style name or .toml style file
+    BatchView view;
+    int width = 512, height = 512;
+    BatchOutputs outputs;
+    std::string stem;    // outputs without extension, relative to the output directory
+    std::string source;  // where the job comes from, for messages: "jobs.csv:7", "--models"
+};
+
+// What a manifest line (or --models) leaves out.
+struct BatchDefaults {
+    std::string views = "35:20";      // parse_views; the auto-framing default view
+    std::string styles = "lambert";   // comma-separated
+    int width = 512, height = 512;
+    BatchOutputs outputs;
+    float fov_degrees = 30.0f;
+    bool orthographic = false;
+};
+
+// A view list: items separated by ',' or ';' —
+//   orbitAxE          A azimuths i*360/A (from 0) at each of E elevations k*90/E (from 0):
+//                     orbit8x3 = 24 views at elevations 0, 30, 60
+//   turntable:N[:EL]  N azimuths i*360/N at elevation EL (default 20)
+//   AZ:EL[:DIST]      one orbit view (degrees; distance in world units, default auto-framed)
+// and, separated from other items by ';' only (its vectors hold commas), an explicit camera
+//   eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]   (target default: the model centre)
+// Views are named azAAA_elEE[_dD] (azimuth zero-padded to 3 digits), explicit cameras camN
+// (N counts them from 1) unless named. Throws InputError("view 'ITEM': problem") for a bad
+// item, and for a duplicate name or an empty list.
+std::vector<BatchView> parse_views(const std::string& text);
+
+// The name of a model in output stems: the file name without extension, or the builtin name
+// with its options ("builtin:teapot:subdivisions=4" -> "teapot-subdivisions=4").
+std::string model_name(const std::string& model);
+
+// Manifest text, one job group per line: CSV with a header line (comma-separated, fields may
+// be double-quoted) or JSON Lines (one object per line). The format is chosen by the extension
+// of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
+// Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
+// name, views (or view), styles (or style), size, format, fov, ortho, output; docs/cli.md#batch.
+// Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
+// Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two
+// jobs share.
+std::vector<BatchJob> parse_manifest(std::string_view text, const std::string& source,
+                                     const BatchDefaults& defaults = {});
+
+// Reads a manifest file and parses it (InputError when it cannot be read).
+std::vector<BatchJob> load_manifest(const std::string& path, const BatchDefaults& defaults = {});
+
+struct BatchModel {
+    std::string path;  // as load_mesh takes it
+    std::string name;  // the model part of the stems
+};
+
+// The mesh files (.obj .stl .ply .off .gltf .glb .vrm) under `directory`, recursively, sorted
+// by path; named by their path relative to the directory without extension ("chairs/a").
+// Throws InputError when the directory cannot be read.
+std::vector<BatchModel> find_models(const std::string& directory);
+
+// models x views x styles (defaults.views, defaults.styles), stems NAME/STYLE/VIEW. Throws
+// InputError for a bad view list or style list, or a stem that two jobs share.
+std::vector<BatchJob> expand_jobs(const std::vector<BatchModel>& models, const BatchDefaults& defaults,
+                                  const std::string& source = "--models");
+
+// The canonical job order: grouped by model (sorted by model path), in the given order
+// within a model. run_batch renders in this order, so each model is loaded once.
+std::vector<BatchJob> batch_order(std::vector<BatchJob> jobs);
+
+// Shard k of n (1 <= k <= n): the k-th of n contiguous blocks of batch_order(jobs), block
+// sizes differing by at most one (jobs [floor((k-1)*J/n), floor(k*J/n))). Contiguous, so a
+// model's jobs stay in as few shards as possible and each shard loads few models. The shards
+// of one job list partition it. Throws InputError for k or n out of range.
+std::vector<BatchJob> shard(const std::vector<BatchJob>& jobs, int k, int n);
+
+// "K/N" as --shard takes it. Throws InputError naming the problem.
+void parse_shard(const std::string& text, int& k, int& n);
+
+// 16 hex digits (FNV-1a 64) over everything that decides a job's files: model path and size
+// in bytes (-1 when unknown), the style's full TOML text, view, image size, samples, outputs.
+// Stored in the metadata: a changed style file, view or size gives a new hash, and the job is
+// rendered again on resume.
+std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t model_bytes, int samples);
+
+enum class BatchStatus { Done, Skipped, Failed };
+
+// What run_batch reports after each job (and once per model that fails to load).
+struct BatchEvent {
+    BatchStatus status = BatchStatus::Done;
+    // The job (for a model that failed to load, its first job); valid during the callback only.
+    const BatchJob* job = nullptr;
+    size_t jobs = 1;                // jobs this event settles (a failed model: all of its jobs)
+    std::string reason;             // Failed: one line
+    bool model_failed = false;      // the model could not be loaded (or drawn at all)
+    size_t finished = 0;            // jobs settled so far, this event included
+    size_t total = 0;               // jobs in the batch
+    size_t rendered = 0;            // jobs rendered so far (Done)
+    size_t to_render = 0;           // jobs that needed rendering when the batch started
+    double seconds = 0.0;           // since the batch started
+};
+using BatchProgress = std::function<void(const BatchEvent&)>;
+
+struct BatchOptions {
+    std::string output_dir;  // created when missing
+    bool force = false;      // render complete jobs again
+    int samples = 4;         // MSAA samples
+    // Checked between jobs: once true, run_batch returns after the job in progress (a signal
+    // handler may set it). Nothing partial is left: every file is written atomically.
+    const std::atomic<bool>* stop = nullptr;
+};
+
+struct BatchFailure {
+    std::string stem, model, reason;
+};
+
+struct BatchSummary {
+    size_t total = 0, done = 0, skipped = 0, failed = 0;
+    bool interrupted = false;  // options.stop ended it; total - done - skipped - failed not run
+    double seconds = 0.0;
+    std::vector<BatchFailure> failures;
+};
+
+// Renders the jobs into options.output_dir: per job STEM.png and/or STEM.svg, then STEM.json
+// (metadata; docs/cli.md#batch), each written atomically. A job is complete when its metadata
+// and all its outputs exist and the metadata's job hash is the job's: complete jobs are
+// skipped unless options.force. One renderer (one GL context) for the whole batch; each model
+// is loaded once, the next one on a worker thread while the current one renders. A model that
+// cannot be loaded fails its jobs and the batch goes on; so does a job that fails. Throws
+// RuntimeError only when no OpenGL context can be made or the output directory cannot be.
+BatchSummary run_batch(const std::vector<BatchJob>& jobs, const BatchOptions& options,
+                       const BatchProgress& progress = {});
+
+}  // namespace inkshade

@@ -1,0 +1,176 @@
+// Batch jobs from models x views x styles (inkshade/batch.hpp): names, stems, shared values.
+#include "core/batch_jobs.hpp"
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "inkshade/error.hpp"
+#include "io/text_scanner.hpp"
+
+namespace inkshade {
+
+namespace batch {
+
+namespace {
+
+// Characters kept in names derived from model and style names; others become '-', so a stem
+// is a portable file name whatever the model path holds.
+std::string file_safe(std::string_view text) {
+    std::string out;
+    for (char c : text) {
+        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                          c == '_' || c == '-' || c == '=' || c == '+';
+        out += keep ? c : '-';
+    }
+    return out;
+}
+
+// A style file is named by its file name without ".toml"; a built-in style by its name.
+std::string style_stem_name(const std::string& style) {
+    const std::filesystem::path p(style);
+    if (style.find('/') != std::string::npos || p.extension() == ".toml") return file_safe(p.stem().string());
+    return file_safe(style);
+}
+
+}  // namespace
+
+std::string trim(std::string_view text) {
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+    while (!text.empty() && space(text.front())) text.remove_prefix(1);
+    while (!text.empty() && space(text.back())) text.remove_suffix(1);
+    return std::string(text);
+}
+
+std::vector<std::string> split_list(std::string_view text, std::string_view separators) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    for (size_t i = 0; i <= text.size(); ++i) {
+        if (i < text.size() && separators.find(text[i]) == std::string_view::npos) continue;
+        std::string item = trim(text.substr(start, i - start));
+        if (!item.empty()) items.push_back(item);
+        start = i + 1;
+    }
+    return items;
+}
+
+BatchOutputs parse_formats(const std::string& text) {
+    BatchOutputs o{false, false};
+    for (const std::string& f : split_list(text, ",;+")) {
+        if (f == "png") o.png = true;
+        else if (f == "svg") o.svg = true;
+        else throw InputError("format: unknown output format " + io::quote_token(f) + " (choose png, svg or png,svg)");
+    }
+    if (!o.png && !o.svg) throw InputError("format: no output format given (choose png, svg or png,svg)");
+    return o;
+}
+
+void parse_size(const std::string& text, int& width, int& height) {
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w <= 0 || h <= 0 || w > 16384 || h > 16384)
+        throw InputError("size: expected WxH with each side in 1..16384, got " + io::quote_token(text));
+    width = w;
+    height = h;
+}
+
+void check_relative_stem(const std::string& what, const std::string& stem) {
+    if (stem.empty()) throw InputError(what + ": empty");
+    if (stem.front() == '/') throw InputError(what + ": " + io::quote_token(stem) + " must be relative to the output directory");
+    for (const std::string& part : split_list(stem, "/"))
+        if (part == "..") throw InputError(what + ": " + io::quote_token(stem) + " must stay inside the output directory");
+    if (stem.back() == '/' || stem.find("//") != std::string::npos)
+        throw InputError(what + ": " + io::quote_token(stem) + " has an empty path component");
+    for (char c : stem)
+        if (static_cast<unsigned char>(c) < 0x20) throw InputError(what + ": control character in the name");
+}
+
+void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
+    if (group.model.empty()) throw InputError("model: empty");
+    const std::vector<BatchView> views = parse_views(group.views);
+    const std::vector<std::string> styles = split_list(group.styles, ",;");
+    if (styles.empty()) throw InputError("styles: no style given");
+    std::map<std::string, std::string> style_names;  // stem name -> style, to catch a clash
+    for (const std::string& s : styles) {
+        auto [it, fresh] = style_names.emplace(style_stem_name(s), s);
+        if (!fresh) throw InputError("styles: " + io::quote_token(s) + " and " + io::quote_token(it->second) +
+                                     " would write the same files (" + it->first + ")");
+    }
+    const std::string name = group.name.empty() ? model_name(group.model) : group.name;
+    check_relative_stem("name", name);
+    if (!group.output.empty()) {
+        check_relative_stem("output", group.output);
+        if (views.size() * styles.size() != 1)
+            throw InputError("output: names one job, but the line gives " + std::to_string(views.size()) +
+                             " views x " + std::to_string(styles.size()) + " styles (drop output or use name)");
+    }
+    for (const std::string& style : styles) {
+        for (BatchView view : views) {
+            view.camera.fov_degrees = group.fov_degrees;
+            view.camera.orthographic = group.orthographic;
+            BatchJob job;
+            job.model = group.model;
+            job.style = style;
+            job.width = group.width;
+            job.height = group.height;
+            job.outputs = group.outputs;
+            job.stem = group.output.empty() ? name + "/" + style_stem_name(style) + "/" + view.name : group.output;
+            job.view = std::move(view);
+            job.source = group.source;
+            out.push_back(std::move(job));
+        }
+    }
+}
+
+void check_unique_stems(const std::vector<BatchJob>& jobs) {
+    std::map<std::string, const BatchJob*> seen;
+    for (const BatchJob& job : jobs) {
+        auto [it, fresh] = seen.emplace(job.stem, &job);
+        if (!fresh)
+            throw InputError(job.source + ": output " + job.stem + " (" + job.model + ", " + job.style +
+                             ") is also written by " + it->second->source + " (" + it->second->model + ", " +
+                             it->second->style + "); give the models different names");
+    }
+}
+
+}  // namespace batch
+
+std::string model_name(const std::string& model) {
+    constexpr std::string_view kBuiltin = "builtin:";
+    if (model.starts_with(kBuiltin)) {
+        std::string name = model.substr(kBuiltin.size());
+        for (char& c : name)
+            if (c == ':' || c == ',') c = '-';
+        return batch::file_safe(name);
+    }
+    const std::string stem = std::filesystem::path(model).stem().string();
+    return batch::file_safe(stem.empty() ? model : stem);
+}
+
+std::vector<BatchJob> expand_jobs(const std::vector<BatchModel>& models, const BatchDefaults& defaults,
+                                  const std::string& source) {
+    std::vector<BatchJob> jobs;
+    for (const BatchModel& model : models) {
+        batch::JobGroup group;
+        group.model = model.path;
+        group.name = model.name;
+        group.views = defaults.views;
+        group.styles = defaults.styles;
+        group.width = defaults.width;
+        group.height = defaults.height;
+        group.outputs = defaults.outputs;
+        group.fov_degrees = defaults.fov_degrees;
+        group.orthographic = defaults.orthographic;
+        group.source = source;
+        try {
+            batch::expand_group(group, jobs);
+        } catch (const InputError& e) {
+            throw InputError(source + ": " + model.path + ": " + e.what());
+        }
+    }
+    batch::check_unique_stems(jobs);
+    return jobs;
+}
+
+}  // namespace inkshade

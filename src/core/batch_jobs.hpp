@@ -1,0 +1,45 @@
+// Building batch jobs from one group (a manifest line, or one model of --models): the pieces
+// that parse_manifest and expand_jobs share, so both spell values and stems the same way.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "inkshade/batch.hpp"
+
+namespace inkshade::batch {
+
+// One manifest line's worth of jobs before expansion; empty strings take the defaults.
+struct JobGroup {
+    std::string model;
+    std::string name;    // model part of the stems; empty = model_name(model)
+    std::string views;   // parse_views text
+    std::string styles;  // comma- or semicolon-separated style names / files
+    std::string output;  // the stem of the one job, instead of NAME/STYLE/VIEW
+    int width = 0, height = 0;
+    BatchOutputs outputs;
+    float fov_degrees = 30.0f;
+    bool orthographic = false;
+    std::string source;
+};
+
+// Appends the group's views x styles jobs (style-major). Throws InputError(problem) without
+// the source: the caller knows where the group came from.
+void expand_group(const JobGroup& group, std::vector<BatchJob>& out);
+
+// Throws InputError("SOURCE: output STEM is also written by SOURCE2") for a shared stem.
+void check_unique_stems(const std::vector<BatchJob>& jobs);
+
+// Non-empty trimmed items of `text` split at any of `separators`.
+std::vector<std::string> split_list(std::string_view text, std::string_view separators);
+
+std::string trim(std::string_view text);
+
+// "png", "svg", "png,svg" (also '+' or ';' between). Throws InputError.
+BatchOutputs parse_formats(const std::string& text);
+// "WxH", each side 1..16384. Throws InputError.
+void parse_size(const std::string& text, int& width, int& height);
+// A relative path inside the output directory: no root, no "..", no empty components.
+void check_relative_stem(const std::string& what, const std::string& stem);
+
+}  // namespace inkshade::batch

@@ -1,0 +1,337 @@
+// run_batch (inkshade/batch.hpp): the jobs of a batch in model order through one renderer,
+// the next model loaded on a worker thread while the current one renders.
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <map>
+#include <memory>
+
+#include "inkshade/batch.hpp"
+#include "inkshade/error.hpp"
+#include "inkshade/image.hpp"
+#include "inkshade/io.hpp"
+#include "inkshade/line_drawing.hpp"
+#include "inkshade/renderer.hpp"
+#include "inkshade/style.hpp"
+#include "io/atomic_file.hpp"
+#include "io/batch_metadata.hpp"
+
+namespace inkshade {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Drawn in the SVG when the style has no object-space line type: what `inkshade lines` draws
+// without --lines (lines_command.cpp), so the SVG of a batch job equals that command's.
+const std::vector<std::string> kDefaultSvgLines = {"contour", "suggestive", "crease", "border"};
+
+struct ResolvedStyle {
+    Style style;
+    std::string toml;  // format_style: hashed and recorded, so an edited style file re-renders
+    std::vector<LineSettings> svg_lines;
+    std::string error;  // load_style failed: every job of the style fails with this
+};
+
+ResolvedStyle resolve_style(const std::string& name) {
+    ResolvedStyle r;
+    try {
+        r.style = load_style(name);
+        r.toml = format_style(r.style);
+        for (const LineSettings& l : r.style.lines)
+            if (line_type(l.type).space == LineSpace::Object) r.svg_lines.push_back(l);
+        if (r.svg_lines.empty())
+            for (const std::string& type : kDefaultSvgLines) r.svg_lines.push_back({type, {}});
+    } catch (const std::exception& e) {
+        r.error = e.what();
+    }
+    return r;
+}
+
+// A model ready to render: loaded, and with its line extractor when a job writes SVG (its
+// construction copies and checks the mesh: CPU work that overlaps the previous model's renders).
+struct LoadedModel {
+    std::unique_ptr<Mesh> mesh;
+    std::unique_ptr<LineExtractor> extractor;
+    std::string error;
+    double milliseconds = 0.0;
+};
+
+LoadedModel load_model(const std::string& path, bool lines) {
+    LoadedModel m;
+    const auto start = Clock::now();
+    try {
+        m.mesh = std::make_unique<Mesh>(load_mesh(path));
+        if (m.mesh->triangles.empty()) throw InputError(path, "the mesh has no triangles");
+        if (lines) m.extractor = std::make_unique<LineExtractor>(*m.mesh);
+    } catch (const std::bad_alloc&) {
+        m.mesh.reset();
+        m.error = "out of memory";
+    } catch (const std::exception& e) {
+        m.mesh.reset();
+        m.error = e.what();
+    }
+    if (!m.error.empty() && !m.error.starts_with(path)) m.error = path + ": " + m.error;
+    m.milliseconds = ms_since(start);
+    return m;
+}
+
+int64_t model_bytes(const std::string& path) {
+    if (path.starts_with("builtin:")) return -1;
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    return ec ? -1 : int64_t(size);
+}
+
+// The jobs of one model, in batch order.
+struct ModelGroup {
+    std::string model;
+    int64_t bytes = -1;
+    std::vector<size_t> jobs;     // indices into the ordered job list
+    std::vector<size_t> pending;  // those to render
+    bool svg = false;             // a pending job writes SVG
+    bool png = false;             // a pending job writes PNG
+};
+
+class BatchRun {
+public:
+    BatchRun(const std::vector<BatchJob>& jobs, const BatchOptions& options, const BatchProgress& progress)
+        : jobs_(batch_order(jobs)), options_(options), progress_(progress) {}
+
+    BatchSummary run() {
+        summary_.total = jobs_.size();
+        plan();
+        std::error_code ec;
+        std::filesystem::create_directories(options_.output_dir, ec);
+        std::error_code dir_ec;
+        if (!std::filesystem::is_directory(options_.output_dir, dir_ec))
+            throw RuntimeError(options_.output_dir + ": cannot create the output directory" +
+                               (ec ? " (" + ec.message() + ")" : ""));
+
+        // One load ahead: while the current model renders, the next one with work loads.
+        std::future<LoadedModel> next;
+        size_t next_group = groups_.size();
+        auto prefetch_after = [&](size_t g) {
+            for (size_t n = g + 1; n < groups_.size(); ++n) {
+                if (groups_[n].pending.empty()) continue;
+                next_group = n;
+                next = std::async(std::launch::async, load_model, groups_[n].model, groups_[n].svg);
+                return;
+            }
+        };
+        for (size_t g = 0; g < groups_.size() && !stopping(); ++g) {
+            ModelGroup& group = groups_[g];
+            report_settled(group);
+            if (group.pending.empty()) continue;
+            LoadedModel model;
+            if (next.valid() && next_group == g) model = next.get();
+            else model = load_model(group.model, group.svg);
+            prefetch_after(g);
+            render_model(group, model);
+        }
+        summary_.interrupted = stopping() && settled_ < jobs_.size();
+        summary_.seconds = ms_since(start_) / 1000.0;
+        return summary_;  // `next` waits here for a load still running (interrupted)
+    }
+
+private:
+    bool stopping() const { return options_.stop && options_.stop->load(); }
+
+    // Styles, groups, hashes and which jobs are complete, before any work.
+    void plan() {
+        for (const BatchJob& job : jobs_)
+            if (!styles_.count(job.style)) styles_.emplace(job.style, resolve_style(job.style));
+        hashes_.resize(jobs_.size());
+        complete_.assign(jobs_.size(), false);
+        for (size_t i = 0; i < jobs_.size(); ++i) {
+            const BatchJob& job = jobs_[i];
+            if (groups_.empty() || groups_.back().model != job.model) {
+                groups_.emplace_back();
+                groups_.back().model = job.model;
+                groups_.back().bytes = model_bytes(job.model);
+            }
+            ModelGroup& group = groups_.back();
+            group.jobs.push_back(i);
+            const ResolvedStyle& style = styles_.at(job.style);
+            if (!style.error.empty()) continue;  // reported as failed when the group comes up
+            hashes_[i] = job_hash(job, style.toml, group.bytes, options_.samples);
+            complete_[i] = !options_.force && batch::job_complete(options_.output_dir, job, hashes_[i]);
+            if (complete_[i]) continue;
+            group.pending.push_back(i);
+            group.svg |= job.outputs.svg;
+            group.png |= job.outputs.png;
+            ++to_render_;
+        }
+    }
+
+    void emit(BatchStatus status, size_t job, size_t count, const std::string& reason, bool model_failed) {
+        settled_ += count;
+        BatchEvent e;
+        e.status = status;
+        e.job = &jobs_[job];
+        e.jobs = count;
+        e.reason = reason;
+        e.model_failed = model_failed;
+        e.finished = settled_;
+        e.total = jobs_.size();
+        e.rendered = summary_.done;
+        e.to_render = to_render_;
+        e.seconds = ms_since(start_) / 1000.0;
+        if (progress_) progress_(e);
+    }
+
+    void fail(size_t job, const std::string& reason) {
+        ++summary_.failed;
+        summary_.failures.push_back({jobs_[job].stem, jobs_[job].model, reason});
+        emit(BatchStatus::Failed, job, 1, reason, false);
+    }
+
+    // Complete jobs and jobs whose style could not be loaded, as the group comes up.
+    void report_settled(const ModelGroup& group) {
+        for (size_t i : group.jobs) {
+            const ResolvedStyle& style = styles_.at(jobs_[i].style);
+            if (!style.error.empty()) {
+                fail(i, style.error);
+            } else if (complete_[i]) {
+                ++summary_.skipped;
+                emit(BatchStatus::Skipped, i, 1, "", false);
+            }
+        }
+    }
+
+    void fail_model(const ModelGroup& group, const std::string& reason) {
+        summary_.failed += group.pending.size();
+        for (size_t i : group.pending) summary_.failures.push_back({jobs_[i].stem, jobs_[i].model, reason});
+        emit(BatchStatus::Failed, group.pending.front(), group.pending.size(), reason, true);
+    }
+
+    void render_model(const ModelGroup& group, LoadedModel& model) {
+        if (!model.mesh) return fail_model(group, model.error);
+        if (group.png) {
+            try {
+                if (!renderer_) renderer_ = std::make_unique<Renderer>();  // throws without OpenGL
+                renderer_->set_mesh(*model.mesh);
+            } catch (const InputError& e) {
+                return fail_model(group, group.model + ": " + e.what());
+            }
+            gl_renderer_ = renderer_->gl_renderer();
+        }
+        const BoundingBox bounds = model.mesh->bounds();
+        // Job i's files are encoded and written on a worker while job i+1 renders; its event
+        // follows once they are (the metadata last), always from this thread.
+        std::future<void> writing;
+        size_t written = 0;
+        auto finish_write = [&] {
+            if (!writing.valid()) return;
+            try {
+                writing.get();
+                ++summary_.done;
+                emit(BatchStatus::Done, written, 1, "", false);
+            } catch (const std::bad_alloc&) {
+                fail(written, "out of memory");
+            } catch (const std::exception& e) {
+                fail(written, e.what());
+            }
+        };
+        for (size_t i : group.pending) {
+            if (stopping()) break;
+            try {
+                auto files = std::make_shared<JobFiles>(render_job(i, group, model, bounds));
+                finish_write();
+                written = i;
+                writing = std::async(std::launch::async, [this, files] { write_job(*files); });
+            } catch (const std::bad_alloc&) {
+                finish_write();
+                fail(i, "out of memory");
+            } catch (const std::exception& e) {
+                finish_write();
+                fail(i, e.what());
+            }
+        }
+        finish_write();
+    }
+
+    // What one job writes, made on the GL thread, written by write_job.
+    struct JobFiles {
+        batch::JobRecord record;
+        Image image;          // when the job writes PNG
+        LineDrawing drawing;  // when it writes SVG
+        glm::vec4 background{1.0f};
+    };
+
+    JobFiles render_job(size_t i, const ModelGroup& group, LoadedModel& model, const BoundingBox& bounds) {
+        const BatchJob& job = jobs_[i];
+        const ResolvedStyle& rs = styles_.at(job.style);
+        const Camera camera = frame_camera(bounds, job.view.camera, float(job.width) / float(job.height));
+        JobFiles files;
+        batch::JobRecord& record = files.record;
+        record.job = &job;
+        record.hash = hashes_[i];
+        record.model_bytes = group.bytes;
+        record.vertices = model.mesh->vertex_count();
+        record.triangles = model.mesh->triangle_count();
+        record.camera = camera;
+        record.samples = options_.samples;
+        record.style_toml = rs.toml;
+        for (const LineSettings& l : rs.style.lines) record.lines.push_back(l.type);
+        for (const LineSettings& l : rs.svg_lines) record.svg_lines.push_back(l.type);
+        record.timings_ms.emplace_back("load", model.milliseconds);
+        files.background = rs.style.background;
+        if (job.outputs.png) {
+            // As `inkshade render` with the same options: the default light and the style's.
+            Light light = default_light(bounds, camera);
+            apply_style_light(rs.style, light);
+            RenderOptions ro;
+            ro.width = job.width;
+            ro.height = job.height;
+            ro.samples = options_.samples;
+            ro.background = rs.style.background;
+            const auto start = Clock::now();
+            files.image = renderer_->render(camera, light, rs.style.shading, rs.style.lines, ro);
+            record.timings_ms.emplace_back("render", ms_since(start));
+            record.gl_renderer = gl_renderer_;
+        }
+        if (job.outputs.svg) {
+            const auto start = Clock::now();
+            files.drawing = model.extractor->draw(camera, job.width, job.height, rs.svg_lines);
+            record.timings_ms.emplace_back("svg", ms_since(start));
+        }
+        return files;
+    }
+
+    void write_job(JobFiles& files) const {
+        const BatchJob& job = *files.record.job;
+        const auto start = Clock::now();
+        std::filesystem::create_directories(std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
+        if (job.outputs.png) write_png(batch::job_file(options_.output_dir, job, ".png"), files.image);
+        if (job.outputs.svg) write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
+        files.record.timings_ms.emplace_back("write", ms_since(start));
+        // Last: the metadata marks the job complete (batch::job_complete).
+        io::write_file_atomic(batch::job_file(options_.output_dir, job, ".json"), batch::format_metadata(files.record));
+    }
+
+    const std::vector<BatchJob> jobs_;
+    const BatchOptions& options_;
+    const BatchProgress& progress_;
+    const Clock::time_point start_ = Clock::now();
+    std::map<std::string, ResolvedStyle> styles_;
+    std::vector<ModelGroup> groups_;
+    std::vector<std::string> hashes_;
+    std::vector<bool> complete_;
+    size_t to_render_ = 0, settled_ = 0;
+    std::unique_ptr<Renderer> renderer_;
+    std::string gl_renderer_;
+    BatchSummary summary_;
+};
+
+}  // namespace
+
+BatchSummary run_batch(const std::vector<BatchJob>& jobs, const BatchOptions& options, const BatchProgress& progress) {
+    return BatchRun(jobs, options, progress).run();
+}
+
+}  // namespace inkshade

@@ -1,0 +1,193 @@
+// Batch manifests: CSV and JSON Lines into jobs, defaults, stems, and one-line errors that
+// name SOURCE:LINE; find_models for --models DIR.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "inkshade/batch.hpp"
+#include "inkshade/error.hpp"
+#include "support/temp_dir.hpp"
+
+namespace inkshade {
+namespace {
+
+std::vector<std::string> stems(const std::vector<BatchJob>& jobs) {
+    std::vector<std::string> s;
+    for (const BatchJob& j : jobs) s.push_back(j.stem);
+    return s;
+}
+
+// The message of the InputError that `f` throws ("" when it throws none).
+template <class F>
+std::string input_error(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(BatchManifest, CsvLineGivesViewsTimesStylesJobs) {
+    const auto jobs = parse_manifest("model,views,styles\nbuiltin:teapot,orbit2x1,\"anime,toon\"\n", "m.csv");
+    EXPECT_EQ(stems(jobs), (std::vector<std::string>{"teapot/anime/az000_el00", "teapot/anime/az180_el00",
+                                                      "teapot/toon/az000_el00", "teapot/toon/az180_el00"}));
+    for (const BatchJob& j : jobs) {
+        EXPECT_EQ(j.model, "builtin:teapot");
+        EXPECT_EQ(j.source, "m.csv:2");
+        EXPECT_EQ(j.width, 512);
+        EXPECT_TRUE(j.outputs.png);
+        EXPECT_FALSE(j.outputs.svg);
+    }
+    EXPECT_EQ(jobs[1].view.camera.azimuth_degrees.value(), 180.0f);
+    EXPECT_EQ(jobs[1].view.camera.elevation_degrees.value(), 0.0f);
+}
+
+TEST(BatchManifest, CsvQuotingKeepsCommasAndQuotes) {
+    const auto jobs = parse_manifest(
+        "model , name, views\n"
+        "\"builtin:torus:major=1,minor=0.3\", \"ring \"\"a\"\"\", \"eye=0,0,5 target=0,0,0 name=front\"\n",
+        "m.csv");
+    ASSERT_EQ(jobs.size(), 1u);
+    EXPECT_EQ(jobs[0].model, "builtin:torus:major=1,minor=0.3");
+    EXPECT_EQ(jobs[0].stem, "ring \"a\"/lambert/front");
+    EXPECT_EQ(jobs[0].view.camera.eye.value(), glm::vec3(0, 0, 5));
+    EXPECT_EQ(jobs[0].view.camera.target.value(), glm::vec3(0, 0, 0));
+}
+
+TEST(BatchManifest, JsonLinesTakesStringsListsNumbersAndBooleans) {
+    const auto jobs = parse_manifest(
+        "{\"model\": \"a/chair.obj\", \"views\": [\"0:0\", \"eye=1,2,3\"], \"styles\": [\"ink\"], "
+        "\"size\": [64, 32], \"format\": \"png,svg\", \"fov\": 45, \"ortho\": true}\n"
+        "{\"model\": \"b/lamp.ply\", \"style\": \"toon\", \"size\": \"16x16\", \"format\": [\"svg\"]}\n",
+        "jobs.jsonl");
+    ASSERT_EQ(jobs.size(), 3u);
+    EXPECT_EQ(stems(jobs), (std::vector<std::string>{"chair/ink/az000_el00", "chair/ink/cam1", "lamp/toon/az035_el20"}));
+    EXPECT_EQ(jobs[0].width, 64);
+    EXPECT_EQ(jobs[0].height, 32);
+    EXPECT_TRUE(jobs[0].outputs.png && jobs[0].outputs.svg);
+    EXPECT_EQ(jobs[0].view.camera.fov_degrees, 45.0f);
+    EXPECT_TRUE(jobs[1].view.camera.orthographic);
+    EXPECT_EQ(jobs[1].view.camera.eye.value(), glm::vec3(1, 2, 3));
+    EXPECT_FALSE(jobs[2].outputs.png);
+    EXPECT_TRUE(jobs[2].outputs.svg);
+    EXPECT_EQ(jobs[2].source, "jobs.jsonl:2");
+}
+
+TEST(BatchManifest, DefaultsFillWhatALineLeavesOut) {
+    BatchDefaults d;
+    d.views = "turntable:3";
+    d.styles = "anime";
+    d.width = 100;
+    d.height = 50;
+    d.outputs = {false, true};
+    const auto jobs = parse_manifest("model,styles\nx.stl,\ny.stl,toon\n", "m.csv", d);
+    EXPECT_EQ(stems(jobs), (std::vector<std::string>{"x/anime/az000_el20", "x/anime/az120_el20", "x/anime/az240_el20",
+                                                      "y/toon/az000_el20", "y/toon/az120_el20", "y/toon/az240_el20"}));
+    EXPECT_EQ(jobs[0].width, 100);
+    EXPECT_EQ(jobs[0].height, 50);
+    EXPECT_TRUE(jobs[0].outputs.svg);
+    EXPECT_FALSE(jobs[0].outputs.png);
+}
+
+TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
+    // No extension: '{' means JSON Lines, anything else CSV.
+    EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);
+    EXPECT_EQ(parse_manifest("# jobs\n\nmodel\na.obj\n", "-").size(), 1u);
+    // A .csv whose line starts with '{' is still CSV (and here a bad header).
+    EXPECT_NE(input_error([] { parse_manifest("{\"model\": \"a.obj\"}\n", "m.csv"); }).find("m.csv:1: quote inside"),
+              std::string::npos);
+}
+
+TEST(BatchManifest, CommentsBlankLinesAndCrLfKeepLineNumbers) {
+    const auto jobs = parse_manifest("\xEF\xBB\xBF# dataset\r\nmodel,output\r\n\r\n# skip\r\na.obj,x/one\r\n", "m.csv");
+    ASSERT_EQ(jobs.size(), 1u);
+    EXPECT_EQ(jobs[0].stem, "x/one");
+    EXPECT_EQ(jobs[0].source, "m.csv:5");
+}
+
+TEST(BatchManifest, EveryBadLineIsAnInputErrorNamingSourceAndLine) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"model,views\na.obj,0:0\nb.obj,sideways\n", "m.csv:3: view 'sideways'"},
+        {"model,colour\na.obj,red\n", "m.csv:1: unknown column 'colour'"},
+        {"views\n0:0\n", "m.csv:1: the header line has no 'model' column"},
+        {"model,model\na.obj,b.obj\n", "m.csv:1: column 'model' is given twice"},
+        {"model,views\na.obj,0:0,1:1\n", "m.csv:2: expected 2 fields"},
+        {"model,views\na.obj,\"0:0\n", "m.csv:2: unterminated quoted field"},
+        {"model,views\na.obj,0:0\"x\"\n", "m.csv:2: quote inside an unquoted field"},
+        {"model,size\na.obj,big\n", "m.csv:2: size: expected WxH"},
+        {"model,size\na.obj,0x10\n", "m.csv:2: size:"},
+        {"model,format\na.obj,gif\n", "m.csv:2: format: unknown output format 'gif'"},
+        {"model,fov\na.obj,180\n", "m.csv:2: fov:"},
+        {"model,ortho\na.obj,maybe\n", "m.csv:2: ortho:"},
+        {"model,output\na.obj,/abs\n", "m.csv:2: output: '/abs' must be relative"},
+        {"model,output\na.obj,x/../../y\n", "m.csv:2: output: 'x/../../y' must stay inside"},
+        {"model,views,output\na.obj,orbit2x1,x\n", "m.csv:2: output: names one job"},
+        {"model,name\na.obj,..\n", "m.csv:2: name:"},
+        {"model,views\n,0:0\n", "m.csv:2: model: empty"},
+        {"model,styles\na.obj,\"anime,anime\"\n", "m.csv:2: styles: 'anime' and 'anime'"},
+        {"model,views\na.obj,\"0:0,0:0\"\n", "m.csv:2: view az000_el00 is listed twice"},
+        {"model\na.obj\na.obj\n", "m.csv:3: output a/lambert/az035_el20 (a.obj, lambert) is also written by m.csv:2"},
+        {"model\n", "m.csv: no jobs"},
+        {"", "m.csv: no jobs"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const std::string what = input_error([&] { parse_manifest(text, "m.csv"); });
+        EXPECT_NE(what.find(expected), std::string::npos) << "manifest:\n" << text << "\ngave: " << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    const std::vector<std::pair<std::string, std::string>> json_cases = {
+        {"{\"model\": \"a.obj\"}\n{\"model\": \"b.obj\",\n", "j.jsonl:2: not valid JSON"},
+        {"[\"a.obj\"]\n", "j.jsonl:1: expected a JSON object"},
+        {"{\"views\": \"0:0\"}\n", "j.jsonl:1: no \"model\" given"},
+        {"{\"model\": 7}\n", "j.jsonl:1: model: unexpected JSON number"},
+        {"{\"model\": \"a.obj\", \"size\": [1, 2, 3]}\n", "j.jsonl:1: size: expected"},
+        {"{\"model\": \"a.obj\", \"views\": [1]}\n", "j.jsonl:1: views: expected a list of strings"},
+        {"{\"model\": \"a.obj\", \"camera\": 1}\n", "j.jsonl:1: unknown column 'camera'"},
+        {"{\"model\": \"a.obj\", \"view\": \"0:0\", \"views\": \"1:1\"}\n", "j.jsonl:1: column 'views' is given twice"},
+    };
+    for (const auto& [text, expected] : json_cases) {
+        const std::string what = input_error([&] { parse_manifest(text, "j.jsonl"); });
+        EXPECT_NE(what.find(expected), std::string::npos) << "manifest:\n" << text << "\ngave: " << what;
+    }
+}
+
+TEST(BatchManifest, LoadManifestReportsAMissingFile) {
+    EXPECT_NE(input_error([] { load_manifest("/nonexistent/jobs.csv"); }).find("/nonexistent/jobs.csv: cannot open"),
+              std::string::npos);
+    test::TempDir dir;
+    const std::string path = dir.write("jobs.jsonl", "{\"model\": \"builtin:sphere\"}\n");
+    const auto jobs = load_manifest(path);
+    ASSERT_EQ(jobs.size(), 1u);
+    EXPECT_EQ(jobs[0].source, path + ":1");
+}
+
+TEST(BatchManifest, FindModelsListsMeshFilesRecursivelyInPathOrder) {
+    test::TempDir dir;
+    std::filesystem::create_directories(dir.path() / "chairs");
+    dir.write("b.PLY", "x");
+    dir.write("a.obj", "x");
+    dir.write("chairs/c.stl", "x");
+    dir.write("chairs/c.mtl", "x");
+    dir.write("texture.png", "x");
+    const auto models = find_models(dir.path().string());
+    ASSERT_EQ(models.size(), 3u);
+    EXPECT_EQ(models[0].name, "a");
+    EXPECT_EQ(models[1].name, "b");
+    EXPECT_EQ(models[2].name, "chairs/c");
+    EXPECT_EQ(models[2].path, (dir.path() / "chairs" / "c.stl").string());
+    BatchDefaults d;
+    d.views = "0:0";
+    d.styles = "ink,toon";
+    EXPECT_EQ(stems(expand_jobs(models, d)),
+              (std::vector<std::string>{"a/ink/az000_el00", "a/toon/az000_el00", "b/ink/az000_el00",
+                                        "b/toon/az000_el00", "chairs/c/ink/az000_el00", "chairs/c/toon/az000_el00"}));
+    // The same name from two files is refused, not silently overwritten.
+    dir.write("a.stl", "x");
+    EXPECT_NE(input_error([&] { expand_jobs(find_models(dir.path().string()), d); }).find("is also written by"),
+              std::string::npos);
+    EXPECT_NE(input_error([&] { find_models(dir.file("a.obj")); }).find("not a directory"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace inkshade

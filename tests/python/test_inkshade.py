@@ -1,0 +1,151 @@
+"""The Python module against the CLI: same pictures, same lines, clear errors.
+
+Run by ctest with PYTHONPATH at the built module and INKSHADE_BIN at the CLI; needs only
+Debian's python3 and python3-numpy (the PNG reader below is the standard library's zlib).
+"""
+import os
+import struct
+import subprocess
+import tempfile
+import unittest
+import zlib
+
+import numpy as np
+
+import inkshade
+
+INKSHADE_BIN = os.environ["INKSHADE_BIN"]
+
+
+def read_png(path):
+    """RGBA8, non-interlaced PNG (what inkshade writes) -> (h, w, 4) uint8, independent of inkshade."""
+    with open(path, "rb") as f:
+        data = f.read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, width = 8, b"", 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
+            assert (depth, colour) == (8, 6), "expected RGBA8"
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    raw = zlib.decompress(idat)
+    stride = width * 4
+    out = np.zeros((height, stride), dtype=np.int32)
+    prev = np.zeros(stride, dtype=np.int32)
+    for y in range(height):
+        f = raw[y * (stride + 1)]
+        line = np.frombuffer(raw, dtype=np.uint8, count=stride, offset=y * (stride + 1) + 1).astype(np.int32)
+        row = np.zeros(stride, dtype=np.int32)
+        for x in range(stride):  # the five PNG filters (RFC 2083 section 6)
+            a = row[x - 4] if x >= 4 else 0
+            b = prev[x]
+            c = prev[x - 4] if x >= 4 else 0
+            if f == 0:
+                p = 0
+            elif f == 1:
+                p = a
+            elif f == 2:
+                p = b
+            elif f == 3:
+                p = (a + b) // 2
+            else:
+                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                p = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            row[x] = (line[x] + p) & 255
+        out[y] = row
+        prev = row
+    return out.reshape(height, width, 4).astype(np.uint8)
+
+
+class ModuleTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.mesh = inkshade.load_mesh("builtin:torus")
+        cls.renderer = inkshade.Renderer()
+        cls.renderer.set_mesh(cls.mesh)
+
+    def cli(self, *args):
+        result = subprocess.run([INKSHADE_BIN, *args], capture_output=True, text=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+
+    def test_render_equals_the_cli_png(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "a.png")
+            self.cli("render", "builtin:torus", "--style", "anime", "--size", "96x64", "--azimuth", "60",
+                     "--elevation", "30", "--set", "cel.shade-color=0.2,0.1,0.3", "-o", png)
+            image = self.renderer.render("anime", set=["cel.shade-color=0.2,0.1,0.3"], size=(96, 64),
+                                         azimuth=60, elevation=30)
+            self.assertEqual(image.shape, (64, 96, 4))
+            self.assertEqual(image.dtype, np.uint8)
+            np.testing.assert_array_equal(image, read_png(png))
+            # Not a blank picture: the torus covers a good part of it.
+            self.assertGreater(int((image[:, :, :3] != 255).any(axis=2).sum()), 96 * 64 // 8)
+
+    def test_lines_are_the_cli_json(self):
+        import json
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "l.json")
+            self.cli("lines", "builtin:torus", "--lines", "contour", "--size", "128x128", "--elevation", "50",
+                     "-o", os.path.join(tmp, "l.svg"), "--lines-json", path)
+            with open(path) as f:
+                expected = json.load(f)
+        lines = self.renderer.lines(["contour"], size=(128, 128), elevation=50)
+        self.assertTrue(lines)
+        self.assertTrue(all(l["type"] == "contour" for l in lines))
+        want = [p for layer in expected["layers"] for p in layer["paths"]]
+        self.assertEqual(len(lines), len(want))
+        for got, exp in zip(lines, want):
+            np.testing.assert_allclose(got["points"], np.array(exp["points"]), atol=1e-3)
+            self.assertEqual(got["closed"], exp["closed"])
+
+    def test_svg_has_layers(self):
+        svg = self.renderer.svg(["contour", "crease"], size=(64, 64))
+        self.assertIn('id="contour"', svg)
+        self.assertTrue(svg.startswith("<?xml"))
+
+    def test_listings(self):
+        self.assertIn("anime", inkshade.styles())
+        self.assertIn("suggestive", inkshade.line_types())
+        self.assertIn("shininess", inkshade.shading_models()["phong"]["params"])
+        self.assertEqual(self.mesh.triangle_count > 0, True)
+
+    def test_batch_renders_resumes_and_matches_render(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            manifest = os.path.join(tmp, "jobs.csv")
+            with open(manifest, "w") as f:
+                f.write("model,views,styles,size\nbuiltin:torus,0:0;90:30,lambert,48x32\n")
+            events = []
+            summary = inkshade.batch(os.path.join(tmp, "out"), manifest=manifest, progress=events.append)
+            self.assertEqual((summary["total"], summary["done"], summary["failed"]), (2, 2, 0))
+            self.assertEqual(len(events), 2)
+            self.assertEqual({e["status"] for e in events}, {"done"})
+            pngs = sorted(os.path.join(root, n) for root, _, names in os.walk(os.path.join(tmp, "out"))
+                          for n in names if n.endswith(".png"))
+            self.assertEqual(len(pngs), 2)
+            view = [p for p in pngs if "az090" in p][0]
+            np.testing.assert_array_equal(read_png(view), self.renderer.render("lambert", size=(48, 32),
+                                                                               azimuth=90, elevation=30))
+            again = inkshade.batch(os.path.join(tmp, "out"), manifest=manifest)
+            self.assertEqual((again["done"], again["skipped"]), (0, 2))
+        with self.assertRaisesRegex(ValueError, "exactly one of"):
+            inkshade.batch("/tmp/x")
+
+    def test_bad_input_raises_value_error(self):
+        with self.assertRaisesRegex(ValueError, "nope.obj"):
+            inkshade.load_mesh("/nope.obj")
+        with self.assertRaisesRegex(ValueError, "unknown keyword 'szie'"):
+            self.renderer.render("lambert", szie=(8, 8))
+        with self.assertRaisesRegex(ValueError, "no-such-style"):
+            self.renderer.render("no-such-style")
+        with self.assertRaisesRegex(ValueError, "size"):
+            self.renderer.render("lambert", size=(0, 8))
+        with self.assertRaisesRegex(ValueError, "no mesh"):
+            inkshade.Renderer().render("lambert")
+
+
+if __name__ == "__main__":
+    unittest.main()
