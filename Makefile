@@ -1,10 +1,13 @@
 # The two commands a new user runs: `make run` and `make test` (see README.md).
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?=
 JOBS       ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: setup configure build run test test-asan bench gallery clean
+.PHONY: setup configure build run test test-asan update-goldens fuzz bench gallery clean
 
 setup:
 	@scripts/setup
@@ -22,9 +25,21 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 test-asan: setup
-	@cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINKSHADE_SANITIZE=ON -DINKSHADE_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINKSHADE_SANITIZE=ON -DINKSHADE_BUILD_BENCH=OFF -DINKSHADE_BUILD_PYTHON=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Rewrites the golden images tests/golden/STYLE--MODEL.png from the current renderer (only those
+# whose pixels changed; goldens of removed styles go). Look at them, then commit (docs/testing.md).
+update-goldens: build
+	@MESA_SHADER_CACHE_DISABLE=true INKSHADE_UPDATE_GOLDENS=1 $(BUILD)/tests/inkshade_gl_tests --gtest_filter='Golden*' --gtest_brief=1
+
+# libFuzzer targets (clang), each run FUZZ_SECONDS with its seed corpus (docs/testing.md#fuzzing).
+fuzz:
+	@scripts/setup --fuzz
+	@cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINKSHADE_FUZZ=ON -DINKSHADE_BUILD_TESTS=OFF -DINKSHADE_BUILD_BENCH=OFF -DINKSHADE_BUILD_PYTHON=OFF >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
+	@scripts/fuzz $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 bench: build
 	@scripts/bench $(BUILD)
@@ -33,4 +48,4 @@ gallery: build
 	@scripts/gallery $(BUILD)/inkshade docs/gallery
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) out

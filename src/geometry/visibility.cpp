@@ -405,7 +405,8 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             int steps = 1;
             if (!view.clipped(s.a) && !view.clipped(s.b)) {
                 const double px = pixel_distance(view, s.a, s.b);
-                steps = int(std::clamp(std::ceil(px / spacing), 1.0, 16384.0));
+                // NaN (a degenerate camera) keeps one step instead of an undefined conversion.
+                if (std::isfinite(px)) steps = int(std::clamp(std::ceil(px / spacing), 1.0, 16384.0));
             }
             sights.resize(size_t(steps) + 1);
             sights[0] = ends[2 * i];

@@ -26,6 +26,15 @@ std::string lowercase(std::string s) {
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// Largest accepted coordinate magnitude. Cameras, bounding boxes and line projection work in
+// float: a squared distance across a model spanning +-1e34 overflows, and auto-framing would
+// put the eye at infinity. 1e15 leaves those products 7 orders of magnitude of headroom and is
+// far beyond any real model (the Earth's orbit is 1.5e14 mm).
+constexpr float kMaxCoordinate = 1e15f;
+bool in_range(glm::vec3 v) {
+    return std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate && std::abs(v.z) <= kMaxCoordinate;
+}
+
 // What every reader's result must satisfy before anything downstream trusts it. Binary
 // formats have no line numbers, so the vertex or triangle index names the culprit.
 void validate(Mesh& mesh, const std::string& path) {
@@ -36,9 +45,12 @@ void validate(Mesh& mesh, const std::string& path) {
     if (mesh.uvs.size() != n) mesh.uvs.clear();
     if (mesh.face_materials.size() != mesh.triangles.size()) mesh.face_materials.clear();
 
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < n; ++i) {
         if (!finite(mesh.positions[i]))
             throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        if (!in_range(mesh.positions[i]))
+            throw InputError(path, "vertex " + std::to_string(i) + " has a coordinate beyond +-1e15 (too large to draw)");
+    }
     for (size_t i = 0; i < mesh.colors.size(); ++i)
         if (!finite(mesh.colors[i])) throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite colour");
     for (size_t i = 0; i < mesh.uvs.size(); ++i)

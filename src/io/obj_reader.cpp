@@ -1,10 +1,11 @@
 // Wavefront OBJ through tinyobjloader (MTL Kd colours and map_Kd textures, relative indices,
 // triangulation).
-// tinyobj is lenient by design: it reads garbage as zeros, skips faces with bad indices and
-// can be made to allocate per `t` line, so a strict pre-scan of our own runs first. It
-// rejects binary data, non-numeric and non-finite values and out-of-range indices with a line
-// number, and records each polygon's corner count; tinyobj then only sees text it handles
-// well, and its results are still checked against the attribute counts.
+// tinyobj is lenient by design: it reads garbage as zeros, skips faces with bad indices, can be
+// made to allocate per `t` line and converts `vw` weights unchecked, so a strict pre-scan of our
+// own runs first, on the lines tinyobj sees (a lone '\r' ends a line for both). It rejects
+// binary data, non-numeric and non-finite values and out-of-range indices with a line number,
+// and records each polygon's corner count; `t` and `vw` lines are dropped. tinyobj then only
+// sees text it handles well, and its results are still checked against the attribute counts.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <streambuf>
 #include <string>
 #include <vector>
@@ -36,7 +38,7 @@ struct Prescan {
     size_t positions = 0, texcoords = 0, normals = 0;
     std::vector<uint32_t> corners;  // per face with >= 3 corners, in file order
     uint32_t max_corners = 0;
-    bool has_tags = false;          // `t` lines: tinyobj allocates per tag count, drop them
+    bool has_dropped = false;       // `t` or `vw` lines, which are removed before tinyobj sees them
     std::vector<std::string> mtllibs;  // as named on `mtllib` lines, for finding their textures
 };
 
@@ -106,8 +108,8 @@ Prescan prescan(std::string_view text, const std::string& path) {
                 s.corners.push_back(n);
                 s.max_corners = std::max(s.max_corners, n);
             }
-        } else if (key == "t") {
-            s.has_tags = true;
+        } else if (key == "t" || key == "vw") {
+            s.has_dropped = true;
         } else if (key == "mtllib") {
             // tinyobj reads a library line by line with no size limit: a device (or a link to
             // one) would never end, so only regular files may be named.
@@ -140,6 +142,71 @@ struct MemoryBuffer : std::streambuf {
     }
 };
 
+// tinyobj's number parser (tryParseDouble) overflows an int while reading an exponent of ten
+// digits or more, such as 1e2147483648 (undefined behaviour; found by fuzzing). No real file
+// holds one, so such a number in the OBJ or an MTL file is refused before tinyobj reads it.
+// Lines tinyobj skips as comments ('#' first) are skipped; a line ends at '\n' or '\r' for
+// both.
+void check_exponents(std::string_view text, const std::string& path, const std::string& where) {
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t line = 1;
+    bool line_start = true;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n' || c == '\r') {
+            line += c == '\n' || i + 1 == text.size() || text[i + 1] != '\n';
+            line_start = true;
+            continue;
+        }
+        if (line_start && c == '#') {
+            while (i + 1 < text.size() && text[i + 1] != '\n' && text[i + 1] != '\r') ++i;
+            continue;
+        }
+        if (c != ' ' && c != '\t') line_start = false;
+        if ((c == 'e' || c == 'E') && i > 0 && (digit(text[i - 1]) || text[i - 1] == '.')) {
+            size_t j = i + 1;
+            if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+            const size_t first = j;
+            while (j < text.size() && digit(text[j])) ++j;
+            if (j - first >= 10)
+                throw InputError(path, where + "number with a " + std::to_string(j - first) + "-digit exponent at line " +
+                                           std::to_string(line));
+        }
+    }
+}
+
+// Material libraries for tinyobj, read through FileBytes (regular files only, like the OBJ) and
+// checked by check_exponents before tinyobj's LoadMtl parses them. Names are relative to the
+// OBJ's directory. A library that is missing or cannot be read is a warning, as in tinyobj.
+class MtlReader : public tinyobj::MaterialReader {
+public:
+    MtlReader(std::string obj_path, std::string dir) : obj_path_(std::move(obj_path)), dir_(std::move(dir)) {}
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
+                    std::string* warn, std::string* err) override {
+        const std::string path = dir_.empty() ? name : dir_ + "/" + name;
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec) || std::filesystem::is_empty(path, ec)) {
+            if (warn) *warn += "Material file [ " + name + " ] not found or empty.\n";
+            return false;
+        }
+        std::optional<FileBytes> bytes;
+        try {
+            bytes.emplace(path);
+        } catch (const InputError& e) {
+            if (warn) *warn += std::string(e.what()) + "\n";
+            return false;
+        }
+        check_exponents(bytes->view(), obj_path_, "material library " + quote_token(name) + ": ");
+        MemoryBuffer buffer(bytes->data(), bytes->size());
+        std::istream stream(&buffer);
+        tinyobj::LoadMtl(names, materials, &stream, warn, err);
+        return true;
+    }
+
+private:
+    std::string obj_path_, dir_;
+};
+
 std::string first_line(const std::string& s) {
     std::string line = s.substr(0, s.find('\n'));
     return line.empty() ? "unknown error" : line;
@@ -162,21 +229,39 @@ bool positions_repeat(const std::vector<float>& v) {
     return repeats * 4 >= n;  // a quarter or more
 }
 
+// Lines tinyobj must not see, by its own test of a keyword (after spaces and tabs): `t` (tags:
+// it allocates per claimed tag count) and `vw` (skin weights: it converts any number to an int
+// joint id, undefined behaviour for 1e40). Inkshade uses neither.
+bool dropped_line(std::string_view line) {
+    const size_t b = line.find_first_not_of(" \t");
+    if (b == std::string_view::npos) return false;
+    auto blank = [&](size_t i) { return i < line.size() && (line[i] == ' ' || line[i] == '\t'); };
+    return (line[b] == 't' && blank(b + 1)) || (line.substr(b, 2) == "vw" && blank(b + 2));
+}
+
 }  // namespace
 
 Mesh read_obj(const std::string& path, bool& is_soup) {
     FileBytes file(path);
-    Prescan scan = prescan(file.view(), path);
-
-    std::string filtered;  // the text without `t` lines, only when it has any
     std::string_view text = file.view();
-    if (scan.has_tags) {
+    // tinyobj ends a line at '\r' too (old Mac files): a lone '\r' becomes '\n' first, so the
+    // pre-scan sees the same lines as tinyobj (a face after "#...\r" would otherwise pass unchecked).
+    std::string unix_text;
+    for (size_t i = text.find('\r'); i != std::string_view::npos; i = text.find('\r', i + 1)) {
+        if (i + 1 < text.size() && text[i + 1] == '\n') continue;
+        if (unix_text.empty()) unix_text.assign(text);
+        unix_text[i] = '\n';
+    }
+    if (!unix_text.empty()) text = unix_text;
+    Prescan scan = prescan(text, path);
+    check_exponents(text, path, "");
+
+    std::string filtered;  // the text without dropped lines, only when it has any
+    if (scan.has_dropped) {
         for (size_t pos = 0; pos < text.size();) {
             size_t nl = std::min(text.find('\n', pos), text.size());
             std::string_view line = text.substr(pos, nl - pos);
-            size_t b = line.find_first_not_of(" \t");
-            bool tag = b != std::string_view::npos && line[b] == 't' && b + 1 < line.size() && (line[b + 1] == ' ' || line[b + 1] == '\t');
-            if (!tag) filtered.append(line).push_back('\n');
+            if (!dropped_line(line)) filtered.append(line).push_back('\n');
             pos = nl + 1;
         }
         text = filtered;
@@ -185,7 +270,7 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
     MemoryBuffer buffer(text.data(), text.size());
     std::istream stream(&buffer);
     std::string dir = std::filesystem::path(path).parent_path().string();
-    tinyobj::MaterialFileReader mtl_reader(dir.empty() ? dir : dir + "/");
+    MtlReader mtl_reader(path, dir);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;

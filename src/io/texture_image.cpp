@@ -1,12 +1,13 @@
 // Texture decoding through stb_image (Debian libstb, the same library png.cpp uses). The header
-// is read first (stbi_info_from_memory) so an image claiming 100000 x 100000 pixels is refused
-// before anything is allocated.
+// is read first (stbi_info_from_memory) so an image claiming 100000 x 100000 pixels, or more
+// pixels than its bytes can encode, is refused before anything is allocated.
 #include "io/texture_image.hpp"
 
 #include <stb_image.h>
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cstring>
 #include <system_error>
 
@@ -22,6 +23,25 @@ std::string printable(const std::string& name) {
     for (char c : name.substr(0, 160)) s += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
     if (name.size() > 160) s += "...";
     return s;
+}
+
+// stb_image's PNG reader grows its IDAT buffer to the length a chunk header claims before it
+// checks that the bytes are there (2 GiB for a 40-byte file). Every chunk must lie inside the
+// data, so nothing it allocates for chunks exceeds twice the encoded size.
+bool png_chunks_fit(const unsigned char* bytes, size_t size, std::string& problem) {
+    static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size < 8 || std::memcmp(bytes, kSignature, 8) != 0) return true;  // not PNG
+    for (size_t pos = 8; pos + 8 <= size;) {
+        const uint32_t length = uint32_t(bytes[pos]) << 24 | uint32_t(bytes[pos + 1]) << 16 | uint32_t(bytes[pos + 2]) << 8 | bytes[pos + 3];
+        if (length > size - pos - 8 || size - pos - 8 - length < 4) {  // data and CRC
+            problem = "corrupt image data (PNG chunk of " + std::to_string(length) + " bytes at offset " + std::to_string(pos) +
+                      " runs past the end of the " + std::to_string(size) + "-byte image)";
+            return false;
+        }
+        if (std::memcmp(bytes + pos + 4, "IEND", 4) == 0) break;
+        pos += 12 + size_t(length);
+    }
+    return true;
 }
 
 }  // namespace
@@ -51,6 +71,14 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
                   std::to_string(kMaxTextureSide) + " per side";
         return nullptr;
     }
+    // The decoder allocates what the header claims before it finds the data missing: a claim
+    // the encoded bytes cannot back is refused before anything is allocated.
+    if (uint64_t(w) * uint64_t(h) > uint64_t(size) * kMaxPixelsPerEncodedByte) {
+        problem = std::to_string(w) + " x " + std::to_string(h) + " pixels cannot be encoded in " + std::to_string(size) +
+                  " bytes (corrupt header?)";
+        return nullptr;
+    }
+    if (!png_chunks_fit(bytes, size, problem)) return nullptr;
     int dw = 0, dh = 0;
     unsigned char* pixels = stbi_load_from_memory(bytes, int(size), &dw, &dh, &comp, 4);
     if (pixels == nullptr) {

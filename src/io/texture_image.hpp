@@ -3,6 +3,7 @@
 // and the mesh keeps its base colour (Mesh::warnings tells the user).
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -15,6 +16,11 @@ namespace inkshade::io {
 // Largest accepted side: 16384 is the GL_MAX_TEXTURE_SIZE of current desktop GPUs, and caps a
 // decoded texture at 1 GiB whatever a header claims.
 constexpr int kMaxTextureSide = 16384;
+// Most pixels one encoded byte can stand for: deflate packs at most 1032 bytes into one, and a
+// 1-bit PNG holds 8 pixels per byte (JPEG, GIF, BMP/TGA/PSD run lengths pack fewer). An image
+// claiming more pixels than its size allows is corrupt and refused before decoding: a 1 KiB
+// file may claim at most 8.4 million pixels, not 16384 x 16384.
+constexpr uint64_t kMaxPixelsPerEncodedByte = 8 * 1032;
 // Largest encoded image file read (a 16384^2 PNG is far smaller in practice).
 constexpr size_t kMaxTextureFileBytes = size_t(1) << 30;
 

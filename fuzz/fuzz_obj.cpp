@@ -1,0 +1,7 @@
+// OBJ + MTL (+ a map_Kd texture) through load_mesh; see obj_input in mesh_targets.hpp.
+#include "mesh_targets.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    inkshade::fuzz::obj_input({reinterpret_cast<const char*>(data), size});
+    return 0;
+}

@@ -1,0 +1,7 @@
+// OFF (COFF, NOFF, STOFF, ...) through load_mesh; see off_input in mesh_targets.hpp.
+#include "mesh_targets.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    inkshade::fuzz::off_input({reinterpret_cast<const char*>(data), size});
+    return 0;
+}

@@ -1,0 +1,118 @@
+// What each mesh fuzz target does with one input, as functions: the fuzz_*.cpp files call them
+// from LLVMFuzzerTestOneInput, and tests/io/fuzz_regressions_test.cpp replays the inputs the
+// fuzzers found through the very same code. Each returns normally, throws ContractBroken when a
+// promise is broken, or lets an unexpected exception escape.
+#pragma once
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fuzz_common.hpp"
+#include "inkshade/camera.hpp"
+#include "inkshade/line_drawing.hpp"
+
+namespace inkshade::fuzz {
+
+// Cuts a model from the files next to it (MTL, textures, glTF buffers).
+inline constexpr std::string_view kPartMarker = "\n#%%\n";
+
+// OBJ + MTL (+ a map_Kd texture): the input is cut at "\n#%%\n" lines into up to three files
+// side by side, input.obj, m.mtl (for `mtllib m.mtl`) and t.png (for `map_Kd t.png`; any image
+// format); parts the input lacks are absent.
+inline void obj_input(std::string_view data) {
+    const auto parts = split(data, kPartMarker, 3);
+    const std::string path = write_file("input.obj", parts[0]);
+    if (parts.size() > 1) write_file("m.mtl", parts[1]);
+    else remove_file("m.mtl");
+    if (parts.size() > 2) write_file("t.png", parts[2]);
+    else remove_file("t.png");
+    Mesh mesh;
+    load_checked(path, mesh);
+}
+
+// STL, ASCII and binary (the reader picks by size and content).
+inline void stl_input(std::string_view data) {
+    Mesh mesh;
+    load_checked(write_file("input.stl", data), mesh);
+}
+
+// OFF (and COFF, NOFF, STOFF, ...).
+inline void off_input(std::string_view data) {
+    Mesh mesh;
+    load_checked(write_file("input.off", data), mesh);
+}
+
+// PLY, ascii and binary of both byte orders; a part after "\n#%%\n" becomes t.png next to the
+// file, for `comment TextureFile t.png`.
+inline void ply_input(std::string_view data) {
+    const auto parts = split(data, kPartMarker, 2);
+    const std::string path = write_file("input.ply", parts[0]);
+    if (parts.size() > 1) write_file("t.png", parts[1]);
+    else remove_file("t.png");
+    Mesh mesh;
+    load_checked(path, mesh);
+}
+
+// glTF 2.0 JSON and GLB: byte 0 picks the extension (even: .gltf, odd: .glb; the reader also
+// decides by content); the rest is cut at "\n#%%\n" into the file and b.bin next to it (for
+// "uri": "b.bin" buffers and images).
+inline void gltf_input(std::string_view data) {
+    if (data.empty()) return;
+    const char* name = static_cast<unsigned char>(data[0]) % 2 == 0 ? "input.gltf" : "input.glb";
+    const auto parts = split(data.substr(1), kPartMarker, 2);
+    const std::string path = write_file(name, parts[0]);
+    if (parts.size() > 1) write_file("b.bin", parts[1]);
+    else remove_file("b.bin");
+    Mesh mesh;
+    load_checked(path, mesh);
+}
+
+// The mesh pipeline after loading, on whatever a loader accepts: welding and normals (load_mesh),
+// then adjacency, curvature and object-space line extraction with visibility (LineExtractor) for
+// contour, suggestive, crease, border, ridge and valley lines, and the SVG and JSON writers.
+// Byte 0 picks the format, byte 1 the view and options; the rest is the file. Meshes over
+// kMaxPipelineTriangles are skipped to keep executions fast.
+inline constexpr size_t kMaxPipelineTriangles = 5000;
+inline void mesh_pipeline_input(std::string_view data) {
+    static constexpr const char* kExtensions[] = {".obj", ".stl", ".ply", ".off", ".gltf", ".glb"};
+    if (data.size() < 2) return;
+    const std::string ext = kExtensions[static_cast<unsigned char>(data[0]) % std::size(kExtensions)];
+    const unsigned options = static_cast<unsigned char>(data[1]);
+    Mesh mesh;
+    if (!load_checked(write_file("input" + ext, data.substr(2)), mesh) || mesh.triangle_count() > kMaxPipelineTriangles) return;
+
+    // Eight views around the model, auto-framed as `inkshade lines` does, from above or below,
+    // sometimes orthographic; sometimes hidden lines too, every piece kept and smoothed.
+    CameraOptions view;
+    view.azimuth_degrees = float(options % 8) * 45.0f;
+    view.elevation_degrees = (options & 8) ? -30.0f : 20.0f;
+    view.orthographic = (options & 16) != 0;
+    const int width = 48, height = 32;
+    const Camera camera = frame_camera(mesh.bounds(), view, float(width) / float(height));
+    std::vector<LineSettings> lines;
+    for (const char* type : {"contour", "suggestive", "crease", "border", "ridge", "valley"}) {
+        LineSettings settings{type, {}};
+        if (options & 32) {
+            settings.params["hidden"] = {1.0f};
+            settings.params["min-length"] = {0.0f};
+            settings.params["smooth"] = {2.0f};
+        }
+        lines.push_back(settings);
+    }
+    if (options & 64) lines[0].params["silhouette-edges"] = {1.0f};
+
+    LineExtractor extractor(mesh);
+    const LineDrawing drawing = extractor.draw(camera, width, height, lines);
+    if (drawing.layers.size() != lines.size()) broken("a line layer is missing");
+    for (const LineLayer& layer : drawing.layers)
+        for (const auto* paths : {&layer.visible, &layer.hidden})
+            for (const LinePath& p : *paths)
+                if (p.depth.size() != p.points.size() || p.strength.size() != p.points.size())
+                    broken("path attributes do not match its points");
+    if (options & 128) extractor.radial_curvature(camera);
+    (void)format_svg(drawing, glm::vec4(1.0f));
+    (void)format_lines_json(drawing);
+}
+
+}  // namespace inkshade::fuzz
