@@ -164,16 +164,21 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         mesh = io::read_off(path);
     } else if (ext == ".gltf" || ext == ".glb" || ext == ".vrm") {
         mesh = io::read_gltf(path);
+    } else if (io::assimp_reads(ext)) {
+        mesh = io::read_with_assimp(path);
     } else {
+        const bool assimp = !io::assimp_extensions().empty();
         throw InputError(path, (ext.empty() ? std::string("no file extension") : "unknown file extension " + io::quote_token(ext)) +
-                                   " (supported: .obj .stl .ply .off .gltf .glb .vrm)");
+                                   " (supported: .obj .stl .ply .off .gltf .glb .vrm" +
+                                   (assimp ? ", and through assimp .fbx .dae .3ds .blend .x and more)" : ")"));
     }
 
     validate(mesh, path);
-    // Not for OBJ or glTF with per-corner normals or uvs: those vertices are split on purpose
-    // (hard edges, texture seams; the renderer welds positions itself where lines need it).
-    bool split_on_purpose = (ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".vrm") &&
-                            (!mesh.normals.empty() || !mesh.uvs.empty());
+    // Not for OBJ, glTF or assimp's formats with per-corner normals or uvs: those vertices are
+    // split on purpose (hard edges, texture seams; the renderer welds positions itself where
+    // lines need it). STL, PLY and OFF store one attribute set per vertex.
+    const bool per_vertex_format = ext == ".stl" || ext == ".ply" || ext == ".off";
+    bool split_on_purpose = !per_vertex_format && (!mesh.normals.empty() || !mesh.uvs.empty());
     if (soup || (!split_on_purpose && shares_no_vertex(mesh))) {
         // Per-corner normals of a soup are facet normals; after merging, the first one of each
         // cluster would win, so recompute smooth ones instead.

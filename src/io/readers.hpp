@@ -13,6 +13,13 @@ Mesh read_ply(const std::string& path);  // ascii, binary_little_endian, binary_
 Mesh read_off(const std::string& path);  // OFF, with optional vertex colours (COFF)
 Mesh read_gltf(const std::string& path);  // glTF 2.0 .gltf, GLB .glb and VRM .vrm (default scene, flattened)
 
+// Any other format assimp reads (FBX, COLLADA .dae, 3DS, .blend, .x, ...), when Inkshade is
+// built with it (INKSHADE_WITH_ASSIMP); without it assimp_reads is false and read_with_assimp
+// throws. The scene is flattened with its node transforms; base colours and textures as for OBJ.
+Mesh read_with_assimp(const std::string& path);
+bool assimp_reads(const std::string& extension);  // ".fbx": true when assimp has an importer for it
+std::string assimp_extensions();                   // ".3ds .ac ...", space-separated; empty without assimp
+
 // read_obj that also reports whether the file is a soup anyway: exporters that write each
 // face's corners as fresh `v` lines repeat most positions exactly, and need welding too.
 Mesh read_obj(const std::string& path, bool& is_soup);

@@ -35,8 +35,8 @@ public:
 
     void only_keys(const json& object, const std::string& field, std::initializer_list<const char*> allowed) const {
         if (!object.is_object()) fail(field, "expected an object {...}");
-        for (const auto& [key, value] : object.items()) {
-            (void)value;
+        for (const auto& item : object.items()) {
+            const std::string& key = item.key();  // a plain reference: clang 14 cannot capture bindings
             if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
                 std::string list;
                 for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);

@@ -23,8 +23,8 @@ TEST(LoadMesh, DirectoryIsNotAFile) {
 
 TEST(LoadMesh, UnknownExtensionListsTheSupportedOnes) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("mesh.xyz", "1 2 3\n"), "unknown file extension '.xyz' (supported: .obj .stl .ply .off .gltf .glb .vrm)"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("mesh", "1 2 3\n"), "no file extension (supported: .obj .stl .ply .off .gltf .glb .vrm)"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("mesh.xyz", "1 2 3\n"), "unknown file extension '.xyz' (supported: .obj .stl .ply .off .gltf .glb .vrm"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("mesh", "1 2 3\n"), "no file extension (supported: .obj .stl .ply .off .gltf .glb .vrm"));
 }
 
 TEST(LoadMesh, ExtensionIsCaseInsensitive) {
