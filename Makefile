@@ -45,6 +45,7 @@ bench: build
 	@scripts/bench $(BUILD)
 
 gallery: build
+	@scripts/setup --gallery
 	@scripts/gallery $(BUILD)/inkshade docs/gallery
 
 clean:
