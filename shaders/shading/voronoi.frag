@@ -15,12 +15,11 @@
 #include "common/surface.glsl"
 #include "common/cell_hash.glsl"
 uniform float u_scale;
-uniform int u_mode;  // 0 cells, 1 distance, 2 isolines
+// INKSHADE_MODE (0 cells, 1 distance, 2 isolines) and INKSHADE_LIT are compile-time parameters.
 uniform float u_color_mix;
 uniform float u_edge_width;
 uniform vec3 u_edge_color;
 uniform float u_isoline_spacing;
-uniform int u_lit;
 
 // Colour of a cell: a cosine palette (Quilez) over a hashed hue, with hashed brightness. The
 // three phase-shifted cosines come from one cos/sin pair (cos(a + 2pi/3) etc.).
@@ -58,22 +57,23 @@ void main() {
             }
     float f1 = sqrt(d1), f2 = sqrt(d2);
 
-    vec3 p;
-    if (u_mode == 0) {
-        p = mix(s.albedo, cell_color(id), u_color_mix);
-    } else if (u_mode == 1) {
-        p = vec3(f1);
-    } else {
-        float t = f1 / u_isoline_spacing;
-        float d = abs(fract(t + 0.5) - 0.5);  // distance to the nearest isoline, in spacings
-        float w = max(fwidth(t), 1e-6);
-        p = mix(u_edge_color, s.albedo, smoothstep(0.5 * w, 1.5 * w, d));
-    }
+#if INKSHADE_MODE == 0
+    vec3 p = mix(s.albedo, cell_color(id), u_color_mix);
+#elif INKSHADE_MODE == 1
+    vec3 p = vec3(f1);
+#else
+    float t = f1 / u_isoline_spacing;
+    float d = abs(fract(t + 0.5) - 0.5);  // distance to the nearest isoline, in spacings
+    float w = max(fwidth(t), 1e-6);
+    vec3 p = mix(u_edge_color, s.albedo, smoothstep(0.5 * w, 1.5 * w, d));
+#endif
     if (u_edge_width > 0.0) {
         float e = f2 - f1;
         float w = max(fwidth(e), 1e-6);
         p = mix(u_edge_color, p, smoothstep(u_edge_width - 0.5 * w, u_edge_width + 0.5 * w, e));
     }
-    if (u_lit == 1) p *= u_light_color * lambert(s.n, s.l) + u_ambient;
+#if INKSHADE_LIT
+    p *= u_light_color * lambert(s.n, s.l) + u_ambient;
+#endif
     o_color = encode_output(p);
 }

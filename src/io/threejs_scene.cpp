@@ -29,8 +29,13 @@ class Reader {
 public:
     explicit Reader(std::string source) : source_(std::move(source)) {}
 
+    // Field names and values come from the file and may hold line breaks ("\ntialias" is a
+    // valid JSON key; found by fuzzing): control characters become '?', so the error stays one line.
     [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw InputError(source_, field.empty() ? problem : field + ": " + problem);
+        std::string what = field.empty() ? problem : field + ": " + problem;
+        for (char& c : what)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+        throw InputError(source_, what);
     }
 
     void only_keys(const json& object, const std::string& field, std::initializer_list<const char*> allowed) const {

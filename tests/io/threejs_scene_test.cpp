@@ -131,6 +131,9 @@ TEST(ThreejsScene, ErrorsNameTheFileAndTheField) {
              {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "size": [0, 10]})", "size"},
              {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "outline": {"width": 2}})", "outline.width"},
              {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "fog": true})", "fog"},
+             // Keys and values with line breaks are quoted with '?' (found by fuzzing).
+             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "\nfog": true})", "?fog: unknown field"},
+             {"{" + m + R"("material": {"type": "Mesh\r\nMaterial"}})", "'Mesh??Material'"},
          }) {
         const std::string what = error_of(c.json);
         EXPECT_EQ(what.rfind("scene.json: ", 0), 0u) << c.json << " -> " << what;

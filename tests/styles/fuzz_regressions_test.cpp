@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../../fuzz/scene_target.hpp"
 #include "../../fuzz/style_target.hpp"
 
 namespace inkshade {
@@ -41,6 +42,28 @@ TEST(StyleFuzzRegressions, ReplaySavedInputs) {
             ADD_FAILURE() << file.string() << ": " << e.what();
         }
     }
+}
+
+// The scene target's seed corpus (fuzz/corpus/scene) and the inputs it found (a JSON key with a
+// line break, quoted in an error).
+TEST(SceneFuzzRegressions, ReplaySavedInputs) {
+    const std::filesystem::path root(INKSHADE_SOURCE_DIR);
+    size_t n = 0;
+    for (const auto& dir : {root / "tests/styles/scene_fuzz_regressions", root / "fuzz/corpus/scene"}) {
+        if (!std::filesystem::exists(dir)) continue;
+        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+            std::ifstream in(entry.path(), std::ios::binary);
+            std::ostringstream bytes;
+            bytes << in.rdbuf();
+            ++n;
+            try {
+                fuzz::scene_input(bytes.str());
+            } catch (const std::exception& e) {
+                ADD_FAILURE() << entry.path().string() << ": " << e.what();
+            }
+        }
+    }
+    EXPECT_GE(n, 6u);
 }
 
 // toml++ 3.3 reaches __builtin_unreachable when it tests a non-ASCII character for whitespace

@@ -10,14 +10,16 @@ static const ShadingModelRegistration voronoi_model{{
     .params =
         {
             float_param("scale", 8.0f, 0.25f, 256.0f, "cells per longest side of the model's bounding box"),
-            choice_param("mode", {"cells", "distance", "isolines"}, 0,
-                         "cells: flat colour per cell; distance: grey F1; isolines: lines of equal F1 (seed 004)"),
+            // Compile-time: llvmpipe evaluates both sides of a uniform branch, so the isolines'
+            // and the cell colours' work would be paid in every mode.
+            compile_time(choice_param("mode", {"cells", "distance", "isolines"}, 0,
+                                      "cells: flat colour per cell; distance: grey F1; isolines: lines of equal F1 (seed 004)")),
             float_param("color-mix", 0.8f, 0.0f, 1.0f, "cells mode: 0 = base colour C, 1 = the cell's hashed colour"),
             float_param("edge-width", 0.05f, 0.0f, 1.0f,
                         "cell borders where F2 - F1 < width, in cell units (0 = none); anti-aliased"),
             color_param("edge-color", glm::vec3(0.0f), "colour of cell borders and isolines"),
             float_param("isoline-spacing", 0.2f, 0.01f, 1.0f, "isolines mode: F1 between lines, in cell units"),
-            bool_param("lit", true, "multiply by E*max(n.l,0) + A"),
+            compile_time(bool_param("lit", true, "multiply by E*max(n.l,0) + A")),
         },
 }};
 }  // namespace inkshade
