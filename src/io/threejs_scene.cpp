@@ -304,9 +304,9 @@ ThreejsScene parse_threejs_scene(std::string_view text, const std::string& sourc
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond double (found by fuzzing)
         std::string what = e.what();
-        if (size_t p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+        if (size_t p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);  // drop "[json.exception.x.N]"
         r.fail("", "not valid JSON (" + what + ")");
     }
     r.only_keys(root, "", {"mesh", "material", "lights", "camera", "background", "outline", "size", "antialias"});

@@ -116,6 +116,7 @@ TEST(ThreejsScene, ErrorsNameTheFileAndTheField) {
     const std::string m = R"("mesh": "m.obj", )";
     for (const Case& c : std::vector<Case>{
              {"{", "not valid JSON"},
+             {R"({"mesh": "m.obj", "size": [1e400, 1]})", "not valid JSON (number overflow"},  // found by fuzzing
              {R"({"material": {"type": "MeshBasicMaterial"}})", "mesh"},
              {"{" + m + R"("material": {"type": "MeshStandardMaterial"}})", "material.type"},
              {"{" + m + R"("material": {"type": "MeshLambertMaterial", "colour": "#fff"}})", "material.colour"},
