@@ -69,7 +69,7 @@ std::vector<LineSettings> select_lines(const Style& style, const std::string& op
     return out;
 }
 
-void print_timing(const LinesArgs& args, const Mesh& mesh, const LineDrawing& drawing, const Style& style,
+void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& drawing, const Style& style,
                   const std::vector<LineTiming>& setup, LineExtractor& extractor, const Camera& camera,
                   double load_ms) {
     std::map<std::string, std::vector<double>> per_stage;
@@ -91,7 +91,7 @@ void print_timing(const LinesArgs& args, const Mesh& mesh, const LineDrawing& dr
     size_t paths = 0;
     for (const LineLayer& l : drawing.layers) paths += l.visible.size() + l.hidden.size();
     std::printf("timing: lines %s, %zu triangles, %dx%d, %zu paths, %d views\n", names.c_str(),
-                mesh.triangle_count(), drawing.width, drawing.height, paths, args.timing);
+                triangles, drawing.width, drawing.height, paths, args.timing);
     for (const auto& stage : order)
         std::printf("  %-10s median %8.2f ms\n", stage.c_str(), median(per_stage[stage]));
     std::printf("  %-10s median %8.2f ms\n", "total", median(totals));
@@ -117,15 +117,16 @@ int run_lines(const LinesArgs& args) {
     const glm::ivec2 size = args.scene.image_size();
 
     const auto load_start = std::chrono::steady_clock::now();
-    const Mesh mesh = load_mesh(args.scene.model);
+    Mesh mesh = load_mesh(args.scene.model);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const Camera camera = args.scene.camera(mesh.bounds(), float(size.x) / float(size.y));
 
-    LineExtractor extractor(mesh);
+    const size_t triangles = mesh.triangle_count();
+    LineExtractor extractor(std::move(mesh));  // takes the mesh's arrays: no copy
     std::vector<LineTiming> first;
     const LineDrawing drawing = extractor.draw(camera, size.x, size.y, style.lines, &first);
-    if (args.timing > 0) print_timing(args, mesh, drawing, style, first, extractor, camera, load_ms);
+    if (args.timing > 0) print_timing(args, triangles, drawing, style, first, extractor, camera, load_ms);
     if (args.lines_json.empty()) {
         write_svg(args.output, drawing, style.background);
         return 0;

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
     // llvmpipe allocates and frees large per-draw buffers every frame; glibc would mmap each
     // one afresh and page-fault it in again. Keeping them in the heap halved the per-frame
     // time of a 1M-triangle render here (docs/benchmarks.md).
-    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_MMAP_THRESHOLD, 64 << 20);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
     CLI::App app{"inkshade: non-photorealistic rendering of triangle meshes (toon, technical, lines)"};
     app.require_subcommand(1);

@@ -42,7 +42,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const RenderOptions options = args.scene.render_options(style);
     const ShadingSelection& shading = style.shading;
     const auto load_start = std::chrono::steady_clock::now();
-    const Mesh mesh = load_mesh(args.scene.model);
+    Mesh mesh = load_mesh(args.scene.model);
     print_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
@@ -50,8 +50,9 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const Camera camera = args.scene.camera(box, float(options.width) / float(options.height));
     const Light light = args.scene.light(box, camera, style);
 
+    const size_t triangles = mesh.triangle_count();
     Renderer renderer;
-    renderer.set_mesh(mesh);
+    renderer.set_mesh(std::move(mesh));  // the renderer keeps what lines need: no second copy
     Image image = renderer.render(camera, light, shading, style.lines, options);
     if (args.timing > 0) {
         std::map<std::string, std::vector<double>> per_pass;
@@ -68,7 +69,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
             }
         }
         std::printf("timing: %s, %zu triangles, %dx%d, %d samples, %d frames on %s\n", shading.model.c_str(),
-                    mesh.triangle_count(), options.width, options.height, options.samples, args.timing,
+                    triangles, options.width, options.height, options.samples, args.timing,
                     renderer.gl_renderer().c_str());
         for (const auto& pass : order) std::printf("  %-10s median %8.2f ms\n", pass.c_str(), median(per_pass[pass]));
         std::printf("  %-10s median %8.2f ms\n", "total", median(totals));

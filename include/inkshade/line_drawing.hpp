@@ -46,6 +46,8 @@ public:
     // Copies positions, triangles and normals (the mesh's when sane, else angle-weighted), so
     // `mesh` may go away; mesh-wide data is computed on the first draw that needs it.
     explicit LineExtractor(const Mesh& mesh);
+    // Takes positions, triangles and normals from `mesh` instead of copying them.
+    explicit LineExtractor(Mesh&& mesh);
     ~LineExtractor();
     LineExtractor(const LineExtractor&) = delete;
     LineExtractor& operator=(const LineExtractor&) = delete;

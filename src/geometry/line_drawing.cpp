@@ -21,9 +21,11 @@ struct LineExtractor::Impl {
     MeshLineData data;
     std::unique_ptr<RayScene> scene;  // built on the first draw (timed there)
     explicit Impl(const Mesh& mesh) : data(mesh) {}
+    explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
 };
 
 LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
+LineExtractor::LineExtractor(Mesh&& mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
 LineExtractor::~LineExtractor() = default;
 
 std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {

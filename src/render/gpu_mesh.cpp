@@ -79,27 +79,49 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
         }
     }
 
+    // Each CPU-side array is uploaded and freed before the next one is built: at 10 M
+    // triangles they add up to about 500 MB beside the GL driver's own copies (docs/benchmarks.md).
     std::vector<GpuVertex> vertices;
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> source;
     build_vertex_stream(mesh, vertices, triangles, &source);
     index_count_ = GLsizei(triangles.size() * 3);
-    const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
-    std::vector<glm::vec3> hull_normals(vertices.size());
-    for (size_t i = 0; i < vertices.size(); ++i) hull_normals[i] = welded[source[i]];
-    // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
-    bool identity = source.size() == mesh.positions.size();
-    for (size_t i = 0; identity && i < source.size(); ++i) identity = source[i] == i;
-    if (!identity) source_ = source;
+    const size_t stream_size = vertices.size();
+    glCreateBuffers(1, &vbo_);
+    glNamedBufferStorage(vbo_, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), 0);
+    std::vector<GpuVertex>().swap(vertices);
+
+    {
+        const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
+        std::vector<glm::vec3> hull_normals(stream_size);
+        for (size_t i = 0; i < stream_size; ++i) hull_normals[i] = welded[source[i]];
+        glCreateBuffers(1, &hull_normal_vbo_);
+        glNamedBufferStorage(hull_normal_vbo_, GLsizeiptr(hull_normals.size() * sizeof(glm::vec3)), hull_normals.data(), 0);
+    }
     // Object id per stream vertex: every face using a vertex has the same id (components are
     // unions over shared positions; the stream splits vertices by material when faces have
     // materials), except for meshes with both vertex colours and several materials, where
     // the last face wins.
-    const std::vector<uint32_t> face_ids = face_object_ids(mesh);
-    std::vector<uint32_t> vertex_ids(vertices.size(), 0);
-    for (size_t f = 0; f < triangles.size(); ++f)
-        for (int k = 0; k < 3; ++k)
-            if (triangles[f][k] < vertex_ids.size()) vertex_ids[triangles[f][k]] = face_ids[f];
+    {
+        const std::vector<uint32_t> face_ids = face_object_ids(mesh);
+        std::vector<uint32_t> vertex_ids(stream_size, 0);
+        for (size_t f = 0; f < triangles.size(); ++f)
+            for (int k = 0; k < 3; ++k)
+                if (triangles[f][k] < vertex_ids.size()) vertex_ids[triangles[f][k]] = face_ids[f];
+        glCreateBuffers(1, &object_id_vbo_);
+        glNamedBufferStorage(object_id_vbo_, GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data(), 0);
+    }
+    if (textured()) {
+        std::vector<glm::vec2> uvs(stream_size);
+        for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source[i]];
+        glCreateBuffers(1, &uv_vbo_);
+        glNamedBufferStorage(uv_vbo_, GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data(), 0);
+    }
+    // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
+    bool identity = source.size() == mesh.positions.size();
+    for (size_t i = 0; identity && i < source.size(); ++i) identity = source[i] == i;
+    if (!identity) source_ = std::move(source);
+    std::vector<uint32_t>().swap(source);
 
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
@@ -123,18 +145,9 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     } else {
         ranges_.push_back({0, index_count_, kNoMaterial});
     }
-
-    if (textured()) {
-        std::vector<glm::vec2> uvs(vertices.size());
-        for (size_t i = 0; i < vertices.size(); ++i) uvs[i] = mesh.uvs[source[i]];
-        glCreateBuffers(1, &uv_vbo_);
-        glNamedBufferStorage(uv_vbo_, GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data(), 0);
-    }
-
-    glCreateBuffers(1, &vbo_);
-    glNamedBufferStorage(vbo_, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), 0);
     glCreateBuffers(1, &ibo_);
     glNamedBufferStorage(ibo_, GLsizeiptr(triangles.size() * sizeof(glm::uvec3)), triangles.data(), 0);
+    std::vector<glm::uvec3>().swap(triangles);
 
     glCreateVertexArrays(1, &vao_);
     glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(GpuVertex));
@@ -146,15 +159,11 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
         glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao_, a, 0);
     }
-    glCreateBuffers(1, &hull_normal_vbo_);
-    glNamedBufferStorage(hull_normal_vbo_, GLsizeiptr(hull_normals.size() * sizeof(glm::vec3)), hull_normals.data(), 0);
     glVertexArrayVertexBuffer(vao_, 1, hull_normal_vbo_, 0, sizeof(glm::vec3));
     glEnableVertexArrayAttrib(vao_, 3);
     glVertexArrayAttribFormat(vao_, 3, 3, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(vao_, 3, 1);
 
-    glCreateBuffers(1, &object_id_vbo_);
-    glNamedBufferStorage(object_id_vbo_, GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data(), 0);
     glVertexArrayVertexBuffer(vao_, 2, object_id_vbo_, 0, sizeof(uint32_t));
     glEnableVertexArrayAttrib(vao_, 4);
     glVertexArrayAttribIFormat(vao_, 4, 1, GL_UNSIGNED_INT, 0);
@@ -199,9 +208,29 @@ void GpuMesh::set_vertex_scalar(const std::vector<float>& per_mesh_vertex) {
     glBindVertexArray(0);
 }
 
+namespace {
+
+// llvmpipe bins a whole draw call before it rasterises any of it: one draw of 10 M triangles
+// held about 700 MB of binned triangle data at once. Draws of at most kChunk triangles with a
+// flush after each keep that to one chunk's worth; the triangles are drawn in the same order,
+// so the image is the same. Meshes below the size draw in one call, as before.
+constexpr GLsizei kChunkIndices = 3 * (GLsizei(1) << 20);
+
+void draw_indices(size_t first, GLsizei count) {
+    while (count > 0) {
+        const GLsizei n = std::min(count, kChunkIndices);
+        glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * sizeof(uint32_t)));
+        first += size_t(n);
+        count -= n;
+        if (count > 0) glFinish();
+    }
+}
+
+}  // namespace
+
 void GpuMesh::draw() const {
     glBindVertexArray(vao_);
-    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    draw_indices(0, index_count_);
 }
 
 void GpuMesh::draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const {
@@ -210,8 +239,7 @@ void GpuMesh::draw_by_material(GLuint texture_unit, const std::function<void(con
         const bool known = r.material < materials_.size();
         if (textured()) textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit);
         if (before) before(known ? &materials_[r.material] : nullptr);
-        glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(r.first * sizeof(uint32_t)));
+        draw_indices(r.first, r.count);
     }
 }
 

@@ -127,10 +127,14 @@ struct Renderer::Impl {
     std::unique_ptr<render::ThreejsOutlinePass> threejs_outline;
     std::unique_ptr<render::ImageLinesPass> image_lines;
     // Object-space lines: extracted on the CPU (ray-cast visibility), drawn as strokes. The
-    // extractor keeps its own copy of positions, triangles and normals (set_mesh), since the
-    // caller's mesh need not outlive set_mesh; curvature and the ray scene come on first use.
+    // extractor keeps its own positions, triangles and normals (copied or moved in by
+    // set_mesh), since the caller's mesh need not outlive set_mesh; curvature and the ray
+    // scene come on first use.
     std::unique_ptr<LineExtractor> line_extractor;
     std::unique_ptr<render::StrokePass> strokes;
+
+    // set_mesh's GPU part: buffers, bounds, closedness; the previous mesh is released first.
+    void upload(const Mesh& m);
 
     // One compiled variant per model and compile-time parameter values (#defines, not
     // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
@@ -201,14 +205,28 @@ std::string Renderer::gl_renderer() const {
     return impl_->context->renderer();
 }
 
+void Renderer::Impl::upload(const Mesh& m) {
+    if (m.triangles.empty()) throw InputError("mesh has no triangles");
+    context->make_current();
+    // The previous mesh's buffers and lines go first, so two meshes are never held at once.
+    line_extractor.reset();
+    mesh.reset();
+    // Before the upload: its edge keys (24 bytes a triangle) and the GL buffers are never
+    // held at once.
+    closed = geometry::is_closed_outward(m);
+    mesh = std::make_unique<render::GpuMesh>(m);
+    bounds = m.bounds();
+    shadow_valid = false;
+}
+
 void Renderer::set_mesh(const Mesh& mesh) {
-    if (mesh.triangles.empty()) throw InputError("mesh has no triangles");
-    impl_->context->make_current();
-    impl_->mesh = std::make_unique<render::GpuMesh>(mesh);
-    impl_->bounds = mesh.bounds();
-    impl_->closed = geometry::is_closed_outward(mesh);
-    impl_->shadow_valid = false;
+    impl_->upload(mesh);
     impl_->line_extractor = std::make_unique<LineExtractor>(mesh);
+}
+
+void Renderer::set_mesh(Mesh&& mesh) {
+    impl_->upload(mesh);
+    impl_->line_extractor = std::make_unique<LineExtractor>(std::move(mesh));
 }
 
 namespace {

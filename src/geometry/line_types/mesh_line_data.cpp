@@ -28,6 +28,14 @@ MeshLineData::MeshLineData(const Mesh& mesh) {
     ensure_vertex_normals(mesh_);
 }
 
+MeshLineData::MeshLineData(Mesh&& mesh) {
+    mesh_.positions = std::move(mesh.positions);
+    mesh_.triangles = std::move(mesh.triangles);
+    mesh_.normals = std::move(mesh.normals);
+    mesh = Mesh();  // colours, uvs and materials are not needed here
+    ensure_vertex_normals(mesh_);
+}
+
 void MeshLineData::prepare(MeshLineNeeds needs) {
     if (needs.adjacency && !adjacency_ && needs.curvature && !curvature_) {
         // Each task logs into its own list; the two are merged afterwards.

@@ -26,6 +26,8 @@ public:
     // Copies positions and triangles (so the caller's mesh may go away); keeps the mesh's
     // normals when sane (renormalised), else computes angle-weighted ones.
     explicit MeshLineData(const Mesh& mesh);
+    // The same, taking positions, triangles and normals from `mesh` (the rest is dropped).
+    explicit MeshLineData(Mesh&& mesh);
 
     // Positions, triangles and unit normals (no colours or uvs).
     const Mesh& mesh() const { return mesh_; }
