@@ -86,6 +86,18 @@ void check_relative_stem(const std::string& what, const std::string& stem) {
         if (static_cast<unsigned char>(c) < 0x20) throw InputError(what + ": control character in the name");
 }
 
+JobGroup default_group(const BatchDefaults& d) {
+    JobGroup g;
+    g.views = d.views;
+    g.styles = d.styles;
+    g.width = d.width;
+    g.height = d.height;
+    g.outputs = d.outputs;
+    g.fov_degrees = d.fov_degrees;
+    g.orthographic = d.orthographic;
+    return g;
+}
+
 void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
     if (group.model.empty()) throw InputError("model: empty");
     const std::vector<BatchView> views = parse_views(group.views);
@@ -152,16 +164,9 @@ std::vector<BatchJob> expand_jobs(const std::vector<BatchModel>& models, const B
                                   const std::string& source) {
     std::vector<BatchJob> jobs;
     for (const BatchModel& model : models) {
-        batch::JobGroup group;
+        batch::JobGroup group = batch::default_group(defaults);
         group.model = model.path;
         group.name = model.name;
-        group.views = defaults.views;
-        group.styles = defaults.styles;
-        group.width = defaults.width;
-        group.height = defaults.height;
-        group.outputs = defaults.outputs;
-        group.fov_degrees = defaults.fov_degrees;
-        group.orthographic = defaults.orthographic;
         group.source = source;
         try {
             batch::expand_group(group, jobs);

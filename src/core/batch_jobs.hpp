@@ -23,6 +23,9 @@ struct JobGroup {
     std::string source;
 };
 
+// A group holding the defaults' views, styles, size, outputs and camera (no model yet).
+JobGroup default_group(const BatchDefaults& defaults);
+
 // Appends the group's views x styles jobs (style-major). Throws InputError(problem) without
 // the source: the caller knows where the group came from.
 void expand_group(const JobGroup& group, std::vector<BatchJob>& out);

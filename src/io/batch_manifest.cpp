@@ -19,6 +19,7 @@ namespace inkshade {
 namespace {
 
 using batch::JobGroup;
+using batch::default_group;
 
 const std::set<std::string> kColumns = {"model", "name", "views", "view", "styles", "style",
                                         "size",  "format", "fov", "ortho", "output"};
@@ -67,17 +68,6 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
     }
 }
 
-JobGroup default_group(const BatchDefaults& d) {
-    JobGroup g;
-    g.views = d.views;
-    g.styles = d.styles;
-    g.width = d.width;
-    g.height = d.height;
-    g.outputs = d.outputs;
-    g.fov_degrees = d.fov_degrees;
-    g.orthographic = d.orthographic;
-    return g;
-}
 
 void check_column(const std::string& key, std::set<std::string>& seen) {
     if (!kColumns.count(key))

@@ -153,7 +153,8 @@ TEST_F(AssimpReader, MissingTextureIsAWarningNotAFailure) {
 
 TEST_F(AssimpReader, BadFilesAreOneLineErrorsNamingTheFile) {
     const std::string truncated = write("truncated.dae", std::string(kDae).substr(0, 900));
-    const std::string garbage = write("garbage.fbx", std::string("Kaydara FBX Binary  \0\x1a\0\xff\xff\xff\xff", 30));
+    static constexpr char kFbxHeader[] = "Kaydara FBX Binary  \0\x1a\0\xff\xff\xff\xff";  // then nothing
+    const std::string garbage = write("garbage.fbx", std::string(kFbxHeader, sizeof kFbxHeader - 1));
     const std::string no_mesh = write("empty.dae", R"(<?xml version="1.0"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"><asset/>
 <library_visual_scenes><visual_scene id="s"><node id="n"/></visual_scene></library_visual_scenes>

@@ -23,6 +23,25 @@ const LineTypeRegistration hull_type{{
 
 }  // namespace
 
+void draw_back_face_shell(const GpuMesh& mesh, GLenum depth_func, bool blend) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(depth_func);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    if (blend) {
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    } else {
+        glDepthMask(GL_FALSE);
+    }
+    mesh.draw();
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glCullFace(GL_BACK);
+    glDisable(GL_CULL_FACE);
+}
+
 HullPass::HullPass() : program_(std::make_unique<gpu::ShaderProgram>("lines/hull.vert", "lines/hull.frag")) {}
 
 void HullPass::draw(const GpuMesh& mesh, const Camera& camera, int width, int height, const LineSettings& settings) {
@@ -38,26 +57,7 @@ void HullPass::draw(const GpuMesh& mesh, const Camera& camera, int width, int he
     p.set("u_viewport_size", glm::vec2(width, height));
     p.set("u_color", glm::vec4(stroke.color, stroke.opacity));
 
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_FRONT);
-    // Opaque: plain writes, and no depth writes (the hull is a line, not a surface that should
-    // hide later lines; fewer per-sample writes). Translucent: premultiplied "over" (the
-    // framebuffer holds premultiplied colour), with depth writes so overlapping layers of the
-    // hull blend once.
-    const bool blend = stroke.opacity < 1.0f;
-    if (blend) {
-        glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    } else {
-        glDepthMask(GL_FALSE);
-    }
-    mesh.draw();
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glCullFace(GL_BACK);
-    glDisable(GL_CULL_FACE);
+    draw_back_face_shell(mesh, GL_LESS, stroke.opacity < 1.0f);
 }
 
 }  // namespace inkshade::render

@@ -11,6 +11,13 @@
 
 namespace inkshade::render {
 
+// Draws the mesh's back faces (front faces culled) with the bound program as a line shell
+// around the shaded model, depth-tested with `depth_func` (GL_LESS, GL_LEQUAL): opaque without
+// depth writes (a line, not a surface that should hide later lines; fewer per-sample writes),
+// or, with `blend`, premultiplied "over" (the framebuffer holds premultiplied colour) with
+// depth writes so overlapping layers of the shell blend once. Restores the default state.
+void draw_back_face_shell(const GpuMesh& mesh, GLenum depth_func, bool blend);
+
 class HullPass {
 public:
     HullPass();

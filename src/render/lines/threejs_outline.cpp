@@ -1,6 +1,7 @@
 #include "render/lines/threejs_outline.hpp"
 
 #include "inkshade/color.hpp"
+#include "render/lines/hull.hpp"
 
 namespace inkshade::render {
 
@@ -41,27 +42,9 @@ void ThreejsOutlinePass::draw(const GpuMesh& mesh, const Camera& camera, int wid
     p.set("u_thickness", thickness);
     p.set("u_color", glm::vec4(linear_to_srgb(glm::vec3(c.at(0), c.at(1), c.at(2))), alpha));
 
-    // BackSide material, three.js's LessEqual depth test against the model drawn before.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_FRONT);
-    // As the hull: opaque without blending or depth writes (a line, not a surface hiding later
-    // lines); alpha < 1 is three.js's transparent NormalBlending ("over"; the framebuffer holds
-    // premultiplied colour), with depth writes so overlapping layers blend once.
-    const bool blend = alpha < 1.0f;
-    if (blend) {
-        glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    } else {
-        glDepthMask(GL_FALSE);
-    }
-    mesh.draw();
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glCullFace(GL_BACK);
-    glDisable(GL_CULL_FACE);
+    // BackSide material, three.js's LessEqual depth test against the model drawn before; as
+    // the hull: opaque without depth writes, alpha < 1 as three.js's transparent NormalBlending.
+    draw_back_face_shell(mesh, GL_LEQUAL, alpha < 1.0f);
 }
 
 }  // namespace inkshade::render
