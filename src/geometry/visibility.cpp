@@ -120,7 +120,7 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     m.scene = rtcNewScene(m.device);
     // Robust mode: watertight edge tests, so a ray through a shared edge of an occluder
     // cannot slip between its two triangles and show a hidden line through the surface.
-    rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
 
     const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
     m.triangles = mesh.triangles.data();

@@ -11,8 +11,8 @@
 
 namespace inkshade::render {
 
-void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
-                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>* source) {
+bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
+                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>& source) {
     const size_t n = mesh.positions.size();
     auto normal_of = [&](size_t i) { return i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1); };
     const bool per_face = mesh.colors.empty() && !mesh.materials.empty() &&
@@ -22,17 +22,14 @@ void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
         for (size_t i = 0; i < n; ++i)
             vertices[i] = {mesh.positions[i], normal_of(i),
                            mesh.colors.size() == n ? mesh.colors[i] : glm::vec3(1.0f)};
-        triangles = mesh.triangles;
-        if (source) {
-            source->resize(n);
-            for (size_t i = 0; i < n; ++i) (*source)[i] = uint32_t(i);
-        }
-        return;
+        triangles.clear();
+        source.clear();
+        return false;
     }
     // Split vertices by (vertex, material) so each face gets its material's colour.
     vertices.clear();
     vertices.reserve(n);
-    if (source) source->clear();
+    source.clear();
     triangles.resize(mesh.triangles.size());
     std::unordered_map<uint64_t, uint32_t> remap;
     remap.reserve(n * 2);
@@ -45,11 +42,12 @@ void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
             auto [it, inserted] = remap.try_emplace(key, uint32_t(vertices.size()));
             if (inserted) {
                 vertices.push_back({mesh.positions[v], normal_of(v), color});
-                if (source) source->push_back(v);
+                source.push_back(v);
             }
             triangles[f][k] = it->second;
         }
     }
+    return true;
 }
 
 GpuMesh::GpuMesh(const Mesh& mesh) {
@@ -84,8 +82,10 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     std::vector<GpuVertex> vertices;
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> source;
-    build_vertex_stream(mesh, vertices, triangles, &source);
-    index_count_ = GLsizei(triangles.size() * 3);
+    const bool split = build_vertex_stream(mesh, vertices, triangles, source);
+    const std::vector<glm::uvec3>& faces = split ? triangles : mesh.triangles;
+    auto source_of = [&](size_t i) { return split ? source[i] : uint32_t(i); };
+    index_count_ = GLsizei(faces.size() * 3);
     const size_t stream_size = vertices.size();
     glCreateBuffers(1, &vbo_);
     glNamedBufferStorage(vbo_, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), 0);
@@ -94,7 +94,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     {
         const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
         std::vector<glm::vec3> hull_normals(stream_size);
-        for (size_t i = 0; i < stream_size; ++i) hull_normals[i] = welded[source[i]];
+        for (size_t i = 0; i < stream_size; ++i) hull_normals[i] = welded[source_of(i)];
         glCreateBuffers(1, &hull_normal_vbo_);
         glNamedBufferStorage(hull_normal_vbo_, GLsizeiptr(hull_normals.size() * sizeof(glm::vec3)), hull_normals.data(), 0);
     }
@@ -105,48 +105,47 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     {
         const std::vector<uint32_t> face_ids = face_object_ids(mesh);
         std::vector<uint32_t> vertex_ids(stream_size, 0);
-        for (size_t f = 0; f < triangles.size(); ++f)
+        for (size_t f = 0; f < faces.size(); ++f)
             for (int k = 0; k < 3; ++k)
-                if (triangles[f][k] < vertex_ids.size()) vertex_ids[triangles[f][k]] = face_ids[f];
+                if (faces[f][k] < vertex_ids.size()) vertex_ids[faces[f][k]] = face_ids[f];
         glCreateBuffers(1, &object_id_vbo_);
         glNamedBufferStorage(object_id_vbo_, GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data(), 0);
     }
     if (textured()) {
         std::vector<glm::vec2> uvs(stream_size);
-        for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source[i]];
+        for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source_of(i)];
         glCreateBuffers(1, &uv_vbo_);
         glNamedBufferStorage(uv_vbo_, GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data(), 0);
     }
     // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
-    bool identity = source.size() == mesh.positions.size();
-    for (size_t i = 0; identity && i < source.size(); ++i) identity = source[i] == i;
-    if (!identity) source_ = std::move(source);
+    if (split) source_ = std::move(source);
     std::vector<uint32_t>().swap(source);
 
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
     if (has_face_materials && (textured() || has_material_params_)) {
-        std::vector<uint32_t> order(triangles.size());
+        std::vector<uint32_t> order(faces.size());
         std::iota(order.begin(), order.end(), 0u);
         auto key = [&](uint32_t f) {
             uint32_t m = mesh.face_materials[f];
             return m < mesh.materials.size() ? m : kNoMaterial;
         };
         std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-        std::vector<glm::uvec3> sorted(triangles.size());
+        std::vector<glm::uvec3> sorted(faces.size());
         for (size_t i = 0; i < order.size(); ++i) {
-            sorted[i] = triangles[order[i]];
+            sorted[i] = faces[order[i]];
             if (ranges_.empty() || ranges_.back().material != key(order[i]))
                 ranges_.push_back({i * 3, 0, key(order[i])});
             ranges_.back().count += 3;
         }
-        triangles = std::move(sorted);
+        glCreateBuffers(1, &ibo_);
+        glNamedBufferStorage(ibo_, GLsizeiptr(sorted.size() * sizeof(glm::uvec3)), sorted.data(), 0);
     } else {
         ranges_.push_back({0, index_count_, kNoMaterial});
+        glCreateBuffers(1, &ibo_);
+        glNamedBufferStorage(ibo_, GLsizeiptr(faces.size() * sizeof(glm::uvec3)), faces.data(), 0);
     }
-    glCreateBuffers(1, &ibo_);
-    glNamedBufferStorage(ibo_, GLsizeiptr(triangles.size() * sizeof(glm::uvec3)), triangles.data(), 0);
     std::vector<glm::uvec3>().swap(triangles);
 
     glCreateVertexArrays(1, &vao_);

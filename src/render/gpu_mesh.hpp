@@ -22,10 +22,13 @@ struct GpuVertex {
 };
 
 // CPU side of the upload: per-vertex colours from the mesh, else from its per-face materials
-// (vertices shared by faces of different materials are duplicated), else white. `source`, when
-// given, receives the mesh vertex each stream vertex came from. Faces keep their order.
-void build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
-                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>* source = nullptr);
+// (vertices shared by faces of different materials are duplicated), else white. Returns true
+// when vertices were split: `triangles` and `source` (the mesh vertex of each stream vertex)
+// are then filled. False: the stream is the mesh's own vertices in order, and `triangles` and
+// `source` stay empty (use mesh.triangles; no copy of them, 120 MB at 10 M triangles).
+// Faces keep their order.
+bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
+                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>& source);
 
 class GpuMesh {
 public:
