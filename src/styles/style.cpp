@@ -3,6 +3,7 @@
 #include "inkshade/style.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -221,10 +222,38 @@ Style model_default_style(const ShadingModel& model) {
     return s;
 }
 
+// A TOML string: toml++'s literal 'text' for plain text; a basic "..." string with escapes
+// when the text holds control characters or quotes. toml++ 3.3 writes text with line breaks as
+// '''...''' without checking for ''' inside it, which it then cannot read back (found by
+// fuzzing: a description holding both).
 std::string toml_string(const std::string& s) {
-    std::ostringstream out;
-    out << toml::value<std::string>(s);
-    return out.str();
+    const bool plain = std::none_of(s.begin(), s.end(), [](char c) {
+        return static_cast<unsigned char>(c) < 0x20 || c == 0x7f || c == '\'' || c == '"' || c == '\\';
+    });
+    if (plain) {
+        std::ostringstream out;
+        out << toml::value<std::string>(s);
+        return out.str();
+    }
+    std::string out = "\"";
+    for (char c : s) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            case '\r': out += "\\r"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(c));
+                    out += buf;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out + "\"";
 }
 
 std::string color_text(glm::vec4 c, bool with_alpha = false) {

@@ -44,6 +44,17 @@ TEST(StyleFuzzRegressions, ReplaySavedInputs) {
     }
 }
 
+// toml++ 3.3 writes a string with a line break as '''...''' even when it holds ''' itself,
+// and then cannot read it back: such strings are written as escaped basic strings.
+TEST(StyleFuzzRegressions, SavedStringsWithQuotesAndLineBreaksReadBack) {
+    for (const std::string description : {"a\nb''' c", "tab\tquote\" back\\slash", "del\x7f bell\x07", "it's", "plain text"}) {
+        Style style = parse_style("[shading]\nmodel = 'phong'\n", "s.toml");
+        style.description = description;
+        const std::string text = format_style(style);
+        EXPECT_EQ(parse_style(text, "s.toml").description, description) << text;
+    }
+}
+
 // The scene target's seed corpus (fuzz/corpus/scene) and the inputs it found (a JSON key with a
 // line break, quoted in an error; a number beyond double range, which nlohmann::json reports as
 // out_of_range rather than parse_error).
