@@ -221,13 +221,17 @@ bool is_json_lines(std::string_view text, const std::string& source) {
 }  // namespace
 
 std::vector<BatchJob> parse_manifest(std::string_view text, const std::string& source, const BatchDefaults& defaults) {
-    const auto lines = numbered_lines(text);
-    std::vector<BatchJob> jobs;
-    if (is_json_lines(text, source)) parse_jsonl(lines, source, defaults, jobs);
-    else parse_csv(lines, source, defaults, jobs);
-    if (jobs.empty()) throw InputError(source + ": no jobs (the manifest lists no models)");
-    batch::check_unique_stems(jobs);
-    return jobs;
+    try {
+        const auto lines = numbered_lines(text);
+        std::vector<BatchJob> jobs;
+        if (is_json_lines(text, source)) parse_jsonl(lines, source, defaults, jobs);
+        else parse_csv(lines, source, defaults, jobs);
+        if (jobs.empty()) throw InputError(source + ": no jobs (the manifest lists no models)");
+        batch::check_unique_stems(jobs);
+        return jobs;
+    } catch (const InputError& e) {
+        throw InputError(batch::one_line(e.what()));
+    }
 }
 
 std::vector<BatchJob> load_manifest(const std::string& path, const BatchDefaults& defaults) {

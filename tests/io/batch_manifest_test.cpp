@@ -152,6 +152,19 @@ TEST(BatchManifest, EveryBadLineIsAnInputErrorNamingSourceAndLine) {
     }
 }
 
+// A lone carriage return inside a field is kept in the value (CSV lines end at '\n'); an error
+// quoting that value shows it as '?' (found by fuzzing: two models' stems collided).
+TEST(BatchManifest, ErrorsQuotingControlCharactersStayOneLine) {
+    try {
+        parse_manifest("model,output\nbuiltin:sphere,out/one\nbuil\rtin:sphere,out/one\n", "jobs.csv", BatchDefaults{});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.find('\r'), std::string::npos) << what;
+        EXPECT_NE(what.find("output out/one (buil?tin:sphere"), std::string::npos) << what;
+    }
+}
+
 TEST(BatchManifest, LoadManifestReportsAMissingFile) {
     EXPECT_NE(input_error([] { load_manifest("/nonexistent/jobs.csv"); }).find("/nonexistent/jobs.csv: cannot open"),
               std::string::npos);
