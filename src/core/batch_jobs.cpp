@@ -140,16 +140,10 @@ void check_unique_stems(const std::vector<BatchJob>& jobs) {
     for (const BatchJob& job : jobs) {
         auto [it, fresh] = seen.emplace(job.stem, &job);
         if (!fresh)
-            throw InputError(one_line(job.source + ": output " + job.stem + " (" + job.model + ", " + job.style +
+            throw InputError(io::one_line(job.source + ": output " + job.stem + " (" + job.model + ", " + job.style +
                                       ") is also written by " + it->second->source + " (" + it->second->model +
                                       ", " + it->second->style + "); give the models different names"));
     }
-}
-
-std::string one_line(std::string text) {
-    for (char& c : text)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-    return text;
 }
 
 }  // namespace batch
@@ -177,7 +171,7 @@ std::vector<BatchJob> expand_jobs(const std::vector<BatchModel>& models, const B
         try {
             batch::expand_group(group, jobs);
         } catch (const InputError& e) {
-            throw InputError(batch::one_line(source + ": " + model.path + ": " + e.what()));
+            throw InputError(io::one_line(source + ": " + model.path + ": " + e.what()));
         }
     }
     batch::check_unique_stems(jobs);

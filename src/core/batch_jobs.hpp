@@ -30,10 +30,6 @@ JobGroup default_group(const BatchDefaults& defaults);
 // the source: the caller knows where the group came from.
 void expand_group(const JobGroup& group, std::vector<BatchJob>& out);
 
-// `text` with control characters (a lone '\r' inside a CSV field, a file name with a line
-// break) as '?', so an error quoting manifest values stays one line (found by fuzzing).
-std::string one_line(std::string text);
-
 // Throws InputError("SOURCE: output STEM is also written by SOURCE2") for a shared stem.
 void check_unique_stems(const std::vector<BatchJob>& jobs);
 

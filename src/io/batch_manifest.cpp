@@ -230,7 +230,7 @@ std::vector<BatchJob> parse_manifest(std::string_view text, const std::string& s
         batch::check_unique_stems(jobs);
         return jobs;
     } catch (const InputError& e) {
-        throw InputError(batch::one_line(e.what()));
+        throw InputError(io::one_line(e.what()));  // a lone CR in a field (found by fuzzing)
     }
 }
 

@@ -15,6 +15,14 @@
 
 namespace inkshade::io {
 
+// `text` with its control characters as '?': values quoted in an error (a key "a\r", a field
+// with a lone CR, a file name with a line break) cannot break the one-line message.
+inline std::string one_line(std::string text) {
+    for (char& c : text)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    return text;
+}
+
 // A token as it may appear inside a one-line error message: control and non-ASCII bytes
 // become '?', long tokens are cut.
 inline std::string quote_token(std::string_view token) {

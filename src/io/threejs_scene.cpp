@@ -15,6 +15,7 @@
 #include "inkshade/color.hpp"
 #include "inkshade/error.hpp"
 #include "io/file_bytes.hpp"
+#include "io/text_scanner.hpp"
 
 namespace inkshade {
 
@@ -32,10 +33,7 @@ public:
     // Field names and values come from the file and may hold line breaks ("\ntialias" is a
     // valid JSON key; found by fuzzing): control characters become '?', so the error stays one line.
     [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        std::string what = field.empty() ? problem : field + ": " + problem;
-        for (char& c : what)
-            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-        throw InputError(source_, what);
+        throw InputError(source_, io::one_line(field.empty() ? problem : field + ": " + problem));
     }
 
     void only_keys(const json& object, const std::string& field, std::initializer_list<const char*> allowed) const {

@@ -17,6 +17,7 @@
 #include "inkshade/color.hpp"
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/text_scanner.hpp"
 
 namespace inkshade {
 
@@ -308,10 +309,7 @@ void write_params(std::ostream& out, const std::vector<ParamSpec>& params, const
 // breaks and other control characters ("a\r" is a valid TOML key; found by fuzzing): those
 // become '?', so every error stays one line.
 InputError one_line_error(const InputError& e) {
-    std::string what = e.what();
-    for (char& c : what)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-    return InputError(what);
+    return InputError(io::one_line(e.what()));
 }
 
 void apply_override_unchecked(Style& style, const std::string& text) {
