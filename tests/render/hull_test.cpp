@@ -5,6 +5,7 @@
 
 #include "core/builtin_models.hpp"
 #include "render/render_fixture.hpp"
+#include "render/sphere_ring.hpp"
 
 namespace inkshade::test {
 namespace {
@@ -27,68 +28,12 @@ LineSettings hull(float width_px, const char* mode = "screen", float world_width
     return l;
 }
 
-enum class Kind { Surface, Line, Background };
-// Mixed (anti-aliased) pixels count as their dominant part.
-Kind kind_of(const uint8_t* p) {
-    if (p[0] > 128) return Kind::Background;  // white
-    return p[1] > p[2] ? Kind::Surface : Kind::Line;
-}
-
-struct Ring {
-    float inner = 0, outer = 0;  // pixels from the image centre
-};
-
-// Walks outwards from `centre` along `angle` in quarter pixels; the first radius where the
-// pixel stops being surface and the first where it becomes background.
-Ring ring_along(const Image& img, glm::vec2 centre, float angle) {
-    Ring r{-1, -1};
-    const glm::vec2 d(std::cos(angle), std::sin(angle));
-    for (float t = 0; t < float(img.width); t += 0.25f) {
-        const glm::vec2 q = centre + t * d;
-        const int x = int(std::floor(q.x)), y = int(std::floor(q.y));
-        if (x < 0 || y < 0 || x >= img.width || y >= img.height) break;
-        const Kind k = kind_of(img.pixel(x, y));
-        if (r.inner < 0 && k != Kind::Surface) r.inner = t;
-        if (k == Kind::Background) {
-            r.outer = t;
-            break;
-        }
-    }
-    return r;
-}
-
-// Checks the ring at 32 angles against [inner, outer] (pixels) within 1 px.
-void expect_ring(const Image& img, float inner, float outer, const std::string& what) {
-    const glm::vec2 centre(0.5f * float(img.width), 0.5f * float(img.height));
-    for (int i = 0; i < 32; ++i) {
-        const float a = 2.0f * float(M_PI) * (float(i) + 0.3f) / 32.0f;
-        const Ring r = ring_along(img, centre, a);
-        EXPECT_NEAR(r.inner, inner, 1.0f) << what << " angle " << a;
-        EXPECT_NEAR(r.outer, outer, 1.0f) << what << " angle " << a;
-    }
-}
-
 Image render_sphere(const Camera& camera, const LineSettings& line, int size) {
     Renderer& r = shared_renderer();
     r.set_mesh(fine_sphere());
     RenderOptions o;
     o.width = o.height = size;
     return r.render(camera, ambient_only(), flat_green(), {line}, o);
-}
-
-Camera perspective(float distance) {
-    Camera c;
-    c.eye = {0, 0, distance};
-    c.fov_degrees = 30.0f;
-    c.near_plane = 0.5f;
-    c.far_plane = 50.0f;
-    return c;
-}
-
-// Projected radius in pixels of the unit sphere seen from `distance` (silhouette cone).
-float perspective_radius(float distance, float fov_degrees, int size) {
-    const float tan_alpha = 1.0f / std::sqrt(distance * distance - 1.0f);
-    return tan_alpha / std::tan(glm::radians(0.5f * fov_degrees)) * 0.5f * float(size);
 }
 
 TEST(Hull, ScreenModeRingIsRadiusToRadiusPlusWidth) {
@@ -111,7 +56,7 @@ TEST(Hull, ScreenWidthIsConstantWithDistanceAndResolution) {
     for (float distance : {4.0f, 8.0f})
         for (int size : {256, 384}) {
             Image img = render_sphere(perspective(distance), hull(4.0f), size);
-            const float r = perspective_radius(distance, 30.0f, size);
+            const float r = silhouette_radius(perspective(distance), size);
             expect_ring(img, r, r + 4.0f, "distance " + std::to_string(distance) + " size " + std::to_string(size));
         }
 }

@@ -9,6 +9,7 @@
 #include "core/builtin_models.hpp"
 #include "inkshade/lines.hpp"
 #include "render/render_fixture.hpp"
+#include "render/sphere_ring.hpp"
 
 namespace inkshade::test {
 namespace {
@@ -31,52 +32,6 @@ Image render_sphere(const Camera& camera, const LineSettings& line, int size) {
     RenderOptions o;
     o.width = o.height = size;
     return r.render(camera, directional_light({0, 0, 1}, glm::vec3(1), glm::vec3(0)), green(), {line}, o);
-}
-
-enum class Kind { Surface, Line, Background };
-Kind kind_of(const uint8_t* p) {  // mixed (anti-aliased) pixels count as their dominant part
-    if (p[0] > 128) return Kind::Background;
-    return p[1] > p[2] ? Kind::Surface : Kind::Line;
-}
-
-// Walks out from the image centre along 32 directions: where the surface ends (inner) and the
-// outline ends (outer) must be within 1 px of the expected radii.
-void expect_ring(const Image& img, float inner, float outer, const std::string& what) {
-    const glm::vec2 centre(0.5f * float(img.width), 0.5f * float(img.height));
-    for (int i = 0; i < 32; ++i) {
-        const float a = 2.0f * float(M_PI) * (float(i) + 0.3f) / 32.0f;
-        const glm::vec2 d(std::cos(a), std::sin(a));
-        float in = -1, out = -1;
-        for (float t = 0; t < float(img.width); t += 0.25f) {
-            const glm::vec2 q = centre + t * d;
-            const int x = int(std::floor(q.x)), y = int(std::floor(q.y));
-            if (x < 0 || y < 0 || x >= img.width || y >= img.height) break;
-            const Kind k = kind_of(img.pixel(x, y));
-            if (in < 0 && k != Kind::Surface) in = t;
-            if (k == Kind::Background) {
-                out = t;
-                break;
-            }
-        }
-        EXPECT_NEAR(in, inner, 1.0f) << what << " angle " << a;
-        EXPECT_NEAR(out, outer, 1.0f) << what << " angle " << a;
-    }
-}
-
-Camera perspective(float distance) {
-    Camera c;
-    c.eye = {0, 0, distance};
-    c.fov_degrees = 30.0f;
-    c.near_plane = 0.5f;
-    c.far_plane = 50.0f;
-    return c;
-}
-
-// Pixels from the image centre to the unit sphere's silhouette.
-float silhouette_radius(const Camera& c, int size) {
-    if (c.orthographic) return float(size) / c.ortho_height;
-    const float d = glm::length(c.eye);
-    return 1.0f / std::sqrt(d * d - 1.0f) / std::tan(glm::radians(0.5f * c.fov_degrees)) * 0.5f * float(size);
 }
 
 // The outer edge of OutlineEffect's ring in pixels: the farthest image point of a back-facing
