@@ -10,6 +10,7 @@
 #include "fuzz_common.hpp"
 #include "inkshade/style.hpp"
 #include "inkshade/threejs_scene.hpp"
+#include "style_target.hpp"
 
 namespace inkshade::fuzz {
 
@@ -22,12 +23,7 @@ inline void scene_input(std::string_view data) {
         check_error(e, source);
         return;
     }
-    const std::string text = format_style(style);
-    try {
-        if (format_style(parse_style(text, "scene.toml")) != text) broken("scene style changed on the way through format_style:\n" + text);
-    } catch (const InputError& e) {
-        broken(std::string("format_style wrote text parse_style refuses: ") + e.what() + "\n" + text);
-    }
+    check_style_round_trip(style, "scene.toml");  // the saved file's name gives the same style name
 }
 
 }  // namespace inkshade::fuzz

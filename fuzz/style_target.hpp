@@ -12,6 +12,18 @@
 
 namespace inkshade::fuzz {
 
+// A style that parsed must survive format_style -> parse_style unchanged (--save-style).
+inline void check_style_round_trip(const Style& style, const std::string& source) {
+    const std::string text = format_style(style);
+    Style again;
+    try {
+        again = parse_style(text, source);
+    } catch (const InputError& e) {
+        broken(std::string("format_style wrote text parse_style refuses: ") + e.what() + "\n" + text);
+    }
+    if (format_style(again) != text) broken("style changed on the way through format_style:\n" + text);
+}
+
 inline void style_input(std::string_view data) {
     const auto parts = split(data, "\n#%%\n", 2);
     const std::string source = "fuzz.toml";
@@ -37,14 +49,7 @@ inline void style_input(std::string_view data) {
             }
         }
     }
-    const std::string text = format_style(style);
-    Style again;
-    try {
-        again = parse_style(text, source);
-    } catch (const InputError& e) {
-        broken(std::string("format_style wrote text parse_style refuses: ") + e.what() + "\n" + text);
-    }
-    if (format_style(again) != text) broken("style changed on the way through format_style:\n" + text);
+    check_style_round_trip(style, source);
 }
 
 }  // namespace inkshade::fuzz
