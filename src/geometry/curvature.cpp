@@ -44,47 +44,32 @@ glm::vec3 any_tangent(const glm::vec3& n) {
     return {1.0f + sign * n.x * n.x * a, sign * n.x * n.y * a, -sign * n.x};
 }
 
-// Rotates the tangent frame (u, v) with normal old_n = u × v about old_n × new_n so that its
-// normal becomes new_n (the "rot_coord_sys" step of Rusinkiewicz 2004, Section 3).
-[[gnu::always_inline]] inline void rotate_frame(glm::vec3& u, glm::vec3& v, const glm::vec3& old_n, const glm::vec3& new_n) {
-    const float ndot = glm::dot(old_n, new_n);
-    if (1.0f + ndot <= 1e-6f) {  // opposite normals: any half-turn will do
-        u = -u;
-        v = -v;
-        return;
-    }
-    const glm::vec3 perp_old = new_n - ndot * old_n;
-    const glm::vec3 dperp = (old_n + new_n) / (1.0f + ndot);
-    u -= dperp * glm::dot(u, perp_old);
-    v -= dperp * glm::dot(v, perp_old);
-}
-
 // Solves the symmetric tridiagonal system (diag d, off-diagonal o) in place of rhs; false when a
 // pivot is not clearly positive (the normal equations of a degenerate face).
 template <int N>
 [[gnu::always_inline]] inline bool solve_tridiagonal(std::array<float, N> d, const std::array<float, N - 1>& o,
                                                      std::array<float, N>& rhs) {
     const float eps = 1e-6f * (std::abs(d[0]) + std::abs(d[N - 1]));
+    std::array<float, N> inv;  // reciprocal pivots: N divisions instead of 2N - 1
     for (int i = 1; i < N; ++i) {
         if (!(d[i - 1] > eps)) return false;
-        const float l = o[i - 1] / d[i - 1];
+        inv[i - 1] = 1.0f / d[i - 1];
+        const float l = o[i - 1] * inv[i - 1];
         d[i] -= l * o[i - 1];
         rhs[i] -= l * rhs[i - 1];
     }
     if (!(d[N - 1] > eps)) return false;
     rhs[N - 1] /= d[N - 1];
-    for (int i = N - 2; i >= 0; --i) rhs[i] = (rhs[i] - o[i] * rhs[i + 1]) / d[i];
+    for (int i = N - 2; i >= 0; --i) rhs[i] = (rhs[i] - o[i] * rhs[i + 1]) * inv[i];
     return true;
 }
 
 // Area of the face owned by each corner: the Voronoi region of the corner inside the triangle, or
 // for an obtuse triangle A/2 at the obtuse corner and A/4 at the others (Meyer et al. 2003,
 // "Discrete Differential-Geometry Operators for Triangulated 2-Manifolds", Section 3.3).
-// e[j] is the edge opposite corner j. Zero for a degenerate face.
-[[gnu::always_inline]] inline glm::vec3 corner_areas(const std::array<glm::vec3, 3>& e) {
-    const float area = 0.5f * glm::length(glm::cross(e[0], e[1]));
+// l2[j] is the squared length of the edge opposite corner j. Zero for a degenerate face.
+[[gnu::always_inline]] inline glm::vec3 corner_areas(const glm::vec3& l2, float area) {
     if (!(area > 0.0f) || !std::isfinite(area)) return glm::vec3(0.0f);
-    const glm::vec3 l2(glm::dot(e[0], e[0]), glm::dot(e[1], e[1]), glm::dot(e[2], e[2]));
     // ew[j] = 4A·|e_j|²·cot(angle j): the Voronoi area of corner j is (ew[j+1] + ew[j+2]) / (32 A)
     // and the three ew sum to 16 A², so normalising by their sum keeps the split exact.
     glm::vec3 ew;
@@ -99,49 +84,84 @@ template <int N>
     return {scale * (ew[1] + ew[2]), scale * (ew[2] + ew[0]), scale * (ew[0] + ew[1])};
 }
 
-// Face frame: t along edge 0, b = n × t in the face plane.
+// Face frame: t along edge 0, b = n × t in the face plane; the edges in that frame and the
+// corner areas, everything both passes need of a face.
 struct FaceFrame {
-    std::array<glm::vec3, 3> e;  // e[j] = p[prev j] - p[next j], opposite corner j
     glm::vec3 t, b, n;
+    std::array<float, 3> u, v;  // edge j (p[prev j] - p[next j], opposite corner j) in (t, b)
+    glm::vec3 ca;               // corner areas; zero when the face is unusable
 };
 
 [[gnu::always_inline]] inline FaceFrame face_frame(const std::vector<glm::vec3>& p, const glm::uvec3& f) {
     FaceFrame fr;
-    fr.e = {p[f[2]] - p[f[1]], p[f[0]] - p[f[2]], p[f[1]] - p[f[0]]};
-    fr.t = glm::normalize(fr.e[0]);
-    fr.n = glm::normalize(glm::cross(fr.e[0], fr.e[1]));
+    const glm::vec3 e0 = p[f[2]] - p[f[1]], e1 = p[f[0]] - p[f[2]], e2 = p[f[1]] - p[f[0]];
+    const glm::vec3 l2(glm::dot(e0, e0), glm::dot(e1, e1), glm::dot(e2, e2));
+    const glm::vec3 c = glm::cross(e0, e1);
+    const float len0 = std::sqrt(l2[0]), twice_area = glm::length(c);
+    fr.t = e0 / len0;
+    fr.n = c / twice_area;
     fr.b = glm::cross(fr.n, fr.t);
+    // e0 lies along t; e2 = -(e0 + e1).
+    const float u1 = glm::dot(e1, fr.t), v1 = glm::dot(e1, fr.b);
+    fr.u = {len0, u1, -(len0 + u1)};
+    fr.v = {0.0f, v1, -v1};
+    fr.ca = finite(fr.t) && finite(fr.n) ? corner_areas(l2, 0.5f * twice_area) : glm::vec3(0.0f);
     return fr;
 }
 
-// Components (u1, v1, u2, v2) of the frame (nu, nv), rotated into the plane of (ou, ov), in
-// (ou, ov): how a tensor in (ou, ov) is re-expressed in (nu, nv).
+// A frame change between two right-handed tangent frames, as the rotation angle θ of the new
+// frame (nu, nv) relative to the old (ou, ov) once both lie in one plane: (cos θ, sin θ) are the
+// components of nu in (ou, ov), and nv = (-sin θ, cos θ). Both frames are orthonormal and
+// right-handed about their normals and the turn is a proper rotation, so two dot products
+// give the whole 2x2 rotation.
 struct Rotation {
-    float u1, v1, u2, v2;
+    float c, s;
+    Rotation inverse() const { return {c, -s}; }
 };
 
-[[gnu::always_inline]] inline Rotation frame_change(const glm::vec3& ou, const glm::vec3& ov, const glm::vec3& on, glm::vec3 nu, glm::vec3 nv,
-                      const glm::vec3& nn) {
-    rotate_frame(nu, nv, nn, on);
-    return {glm::dot(nu, ou), glm::dot(nu, ov), glm::dot(nv, ou), glm::dot(nv, ov)};
+// The frame (nu, nv) with normal nn, turned into the plane of (ou, ov) with normal on about
+// nn × on (the "rot_coord_sys" step of Rusinkiewicz 2004, Section 3), as an angle relative to
+// (ou, ov): how a tensor in (ou, ov) is re-expressed in (nu, nv).
+[[gnu::always_inline]] inline Rotation frame_change(const glm::vec3& ou, const glm::vec3& ov, const glm::vec3& on,
+                                                    glm::vec3 nu, const glm::vec3& nn) {
+    const float ndot = glm::dot(nn, on);
+    if (1.0f + ndot <= 1e-6f) {  // opposite normals: any half-turn will do
+        nu = -nu;
+    } else {
+        nu -= (nn + on) * (glm::dot(nu, on - ndot * nn) / (1.0f + ndot));
+    }
+    return {glm::dot(nu, ou), glm::dot(nu, ov)};
 }
+
+// Tensors are rotated through their rotation-invariant parts (Fourier components on the unit
+// circle), which turn by a multiple of θ: a symmetric 2-tensor II = (ku, kuv, kv) is its trace
+// and the spin-2 part ((ku - kv) / 2, kuv); the symmetric 3-tensor C = (a, b, c, d) =
+// (C111, C112, C122, C222) is its spin-1 part P = (a + c, b + d) and its spin-3 part
+// T = (a - 3c, 3b - d). In the new frame a spin-k part is multiplied by e^(-ikθ). Equal to the
+// component-wise rotation formulas of Rusinkiewicz 2004 (trimesh2's proj_curv, proj_dcurv) with
+// a third of their multiplications.
+struct Complex {
+    float re, im;
+};
+[[gnu::always_inline]] inline Complex operator*(Complex a, Complex b) {
+    return {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re};
+}
+[[gnu::always_inline]] inline Complex turn(const Rotation& r) { return {r.c, -r.s}; }  // e^(-iθ)
 
 // II = (ku, kuv, kv) expressed in the new frame.
 [[gnu::always_inline]] inline glm::vec3 rotate_tensor(const glm::vec3& k, const Rotation& r) {
-    return {k[0] * r.u1 * r.u1 + k[1] * (2.0f * r.u1 * r.v1) + k[2] * r.v1 * r.v1,
-            k[0] * r.u1 * r.u2 + k[1] * (r.u1 * r.v2 + r.u2 * r.v1) + k[2] * r.v1 * r.v2,
-            k[0] * r.u2 * r.u2 + k[1] * (2.0f * r.u2 * r.v2) + k[2] * r.v2 * r.v2};
+    const Complex e1 = turn(r), e2 = e1 * e1;
+    const float mean = 0.5f * (k[0] + k[2]);
+    const Complex z = Complex{0.5f * (k[0] - k[2]), k[1]} * e2;
+    return {mean + z.re, z.im, mean - z.re};
 }
 
 // C = (C111, C112, C122, C222) expressed in the new frame.
 [[gnu::always_inline]] inline glm::vec4 rotate_derivative(const glm::vec4& c, const Rotation& r) {
-    const float u1 = r.u1, v1 = r.v1, u2 = r.u2, v2 = r.v2;
-    return {c[0] * u1 * u1 * u1 + c[1] * 3.0f * u1 * u1 * v1 + c[2] * 3.0f * u1 * v1 * v1 + c[3] * v1 * v1 * v1,
-            c[0] * u1 * u1 * u2 + c[1] * (u1 * u1 * v2 + 2.0f * u2 * u1 * v1) +
-                c[2] * (u2 * v1 * v1 + 2.0f * u1 * v1 * v2) + c[3] * v1 * v1 * v2,
-            c[0] * u1 * u2 * u2 + c[1] * (u2 * u2 * v1 + 2.0f * u1 * u2 * v2) +
-                c[2] * (u1 * v2 * v2 + 2.0f * u2 * v2 * v1) + c[3] * v1 * v2 * v2,
-            c[0] * u2 * u2 * u2 + c[1] * 3.0f * u2 * u2 * v2 + c[2] * 3.0f * u2 * v2 * v2 + c[3] * v2 * v2 * v2};
+    const Complex e1 = turn(r), e3 = e1 * e1 * e1;
+    const Complex p = Complex{c[0] + c[2], c[1] + c[3]} * e1;
+    const Complex t = Complex{c[0] - 3.0f * c[2], 3.0f * c[1] - c[3]} * e3;
+    return 0.25f * glm::vec4(3.0f * p.re + t.re, p.im + t.im, p.re - t.re, 3.0f * p.im - t.im);
 }
 
 // Per-corner results of one face, already multiplied by the corner's area.
@@ -197,22 +217,16 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
         out.dcurv[v] = glm::vec4(0.0f);
     });
 
-    // Corner areas of a face the estimator can use, else zero.
-    const auto usable_corner_areas = [](const FaceFrame& fr) {
-        const glm::vec3 ca = corner_areas(fr.e);
-        return finite(fr.t) && finite(fr.n) ? ca : glm::vec3(0.0f);
-    };
     const auto usable_indices = [&](const glm::uvec3& f) {
         return f.x < nv && f.y < nv && f.z < nv && f.x != f.y && f.y != f.z && f.z != f.x &&
                normal[f.x] != glm::vec3(0.0f) && normal[f.y] != glm::vec3(0.0f) && normal[f.z] != glm::vec3(0.0f);
     };
     // Face i's frame and corner areas, or false for a face both passes skip (bad indices, zero
     // normals, zero area, non-finite frame).
-    const auto usable_face = [&](size_t i, FaceFrame& fr, glm::vec3& ca) {
+    const auto usable_face = [&](size_t i, FaceFrame& fr) {
         if (!usable_indices(tris[i])) return false;
         fr = face_frame(p, tris[i]);
-        ca = usable_corner_areas(fr);
-        return ca != glm::vec3(0.0f);
+        return fr.ca != glm::vec3(0.0f);
     };
 
     // Pass 1: second fundamental form per face, rotated into each corner's vertex frame.
@@ -221,15 +235,15 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
         nf,
         [&](size_t i, CornerValues& cv) {
             FaceFrame fr;
-            glm::vec3 ca;
-            if (!usable_face(i, fr, ca)) return false;
+            if (!usable_face(i, fr)) return false;
+            const glm::vec3& ca = fr.ca;
             const glm::uvec3 f = tris[i];
 
             // Least squares for II = [[ku, kuv], [kuv, kv]] from II·(u, v) = (dnu, dnv) on each edge.
             float uu = 0, uv = 0, vv = 0;
             std::array<float, 3> m{0, 0, 0};
             for (int j = 0; j < 3; ++j) {
-                const float u = glm::dot(fr.e[j], fr.t), v = glm::dot(fr.e[j], fr.b);
+                const float u = fr.u[j], v = fr.v[j];
                 uu += u * u, uv += u * v, vv += v * v;
                 const glm::vec3 dn = normal[f[prev(j)]] - normal[f[next(j)]];
                 const float dnu = glm::dot(dn, fr.t), dnv = glm::dot(dn, fr.b);
@@ -243,7 +257,7 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
 
             for (int j = 0; j < 3; ++j) {
                 const uint32_t v = f[j];
-                const Rotation r = frame_change(fr.t, fr.b, fr.n, out.pdir1[v], out.pdir2[v], normal[v]);
+                const Rotation r = frame_change(fr.t, fr.b, fr.n, out.pdir1[v], normal[v]);
                 const glm::vec3 k = ca[j] * rotate_tensor(ii, r);
                 cv[j] = ca[j];
                 cv[3 + 3 * j] = k[0], cv[4 + 3 * j] = k[1], cv[5 + 3 * j] = k[2];
@@ -292,18 +306,17 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
         nf,
         [&](size_t i, CornerValues& cv) {
             FaceFrame fr;
-            glm::vec3 ca;
-            if (!usable_face(i, fr, ca)) return false;
+            if (!usable_face(i, fr)) return false;
+            const glm::vec3& ca = fr.ca;
             const glm::uvec3 f = tris[i];
 
             // r[j]: the face frame rotated into vertex j's tangent plane, in its principal frame.
-            // The inverse rotation (vertex frame into the face plane, in the face frame) is its
-            // transpose (u1, u2, v1, v2).
+            // Its inverse takes the derivative tensor from the face frame back to the vertex's.
             std::array<Rotation, 3> r;
             std::array<glm::vec3, 3> fcurv;  // each vertex's II in the face frame
             for (int j = 0; j < 3; ++j) {
                 const uint32_t v = f[j];
-                r[j] = frame_change(out.pdir1[v], out.pdir2[v], normal[v], fr.t, fr.b, fr.n);
+                r[j] = frame_change(out.pdir1[v], out.pdir2[v], normal[v], fr.t, fr.n);
                 fcurv[j] = rotate_tensor({out.k1[v], 0.0f, out.k2[v]}, r[j]);
             }
             // Least squares for C from ΔII(e) = C(e): d ku = a u + b v, d kuv = b u + c v,
@@ -311,7 +324,7 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
             float uu = 0, uv = 0, vv = 0;
             std::array<float, 4> m{0, 0, 0, 0};
             for (int j = 0; j < 3; ++j) {
-                const float u = glm::dot(fr.e[j], fr.t), v = glm::dot(fr.e[j], fr.b);
+                const float u = fr.u[j], v = fr.v[j];
                 uu += u * u, uv += u * v, vv += v * v;
                 const glm::vec3 d = fcurv[prev(j)] - fcurv[next(j)];
                 m[0] += u * d[0];
@@ -323,8 +336,7 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
             const glm::vec4 dc{m[0], m[1], m[2], m[3]};
             if (!finite(dc)) return false;
             for (int j = 0; j < 3; ++j) {
-                const Rotation back{r[j].u1, r[j].u2, r[j].v1, r[j].v2};
-                const glm::vec4 d = ca[j] * rotate_derivative(dc, back);
+                const glm::vec4 d = ca[j] * rotate_derivative(dc, r[j].inverse());
                 for (int k = 0; k < 4; ++k) cv[4 * j + k] = d[k];
             }
             return true;

@@ -115,7 +115,10 @@ struct RayScene::Impl {
 RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     tolerance_ = 1e-4 * std::max(double(mesh.bounds().diagonal()), 1e-30);
-    m.device = rtcNewDevice(nullptr);
+    // AVX2 at most: Debian's Embree 3.13.5 loops forever inside rtcOccluded1M on its AVX-512
+    // kernels (seen on an AVX-512 Xeon with the line-drawing tests; the same rays finish at once
+    // with max_isa=avx2 or sse4.2). CPUs without AVX2 still get their best ISA.
+    m.device = rtcNewDevice("max_isa=avx2");
     if (!m.device) throw RuntimeError("ray casting: cannot create an Embree device");
     m.scene = rtcNewScene(m.device);
     // Robust mode: watertight edge tests, so a ray through a shared edge of an occluder
