@@ -11,22 +11,23 @@ namespace inkshade::geometry {
 // Per-edge flags: a border edge has one face, a non-manifold edge more than two.
 enum EdgeFlag : uint8_t { kEdgeBorder = 1, kEdgeNonManifold = 2 };
 
-// Undirected edges in compressed form: edge e joins edges[e].x < edges[e].y and is used by
-// faces[face_offset[e] .. face_offset[e + 1]) (ascending face index). Edges are sorted by
-// (v0, v1), so the layout depends only on the mesh, never on the thread count.
+// Undirected edges: edge e joins edges[e].x < edges[e].y and is used by face_count(e) faces,
+// face(e, 0) < face(e, 1) < …. Edges are sorted by (v0, v1), so the layout depends only on the
+// mesh, never on the thread count. The first two faces are stored inline (faces[e], .y =
+// kNoFace on a border): nearly every edge of a mesh has two, so an offset array would cost
+// 4 B an edge for nothing (60 MB at 10 M triangles).
 struct EdgeAdjacency {
-    static constexpr uint32_t kNoEdge = 0xffffffffu;
+    static constexpr uint32_t kNoFace = 0xffffffffu;
 
     std::vector<glm::uvec2> edges;
-    std::vector<uint32_t> face_offset;  // edges.size() + 1 entries
-    std::vector<uint32_t> faces;
+    std::vector<glm::uvec2> faces;  // the two lowest faces of each edge
+    // (edge, face) for the third and later faces of non-manifold edges, sorted.
+    std::vector<glm::uvec2> more_faces;
     std::vector<uint8_t> flags;  // EdgeFlag bits per edge
-    // Per triangle, the edge ids of its sides (t0,t1), (t1,t2), (t2,t0); kNoEdge for a skipped
-    // face, so a face's neighbours are found without a search.
-    std::vector<glm::uvec3> face_edges;
 
     size_t edge_count() const { return edges.size(); }
-    uint32_t face_count(size_t e) const { return face_offset[e + 1] - face_offset[e]; }
+    uint32_t face_count(size_t e) const;
+    uint32_t face(size_t e, uint32_t k) const;  // k < face_count(e)
     bool is_border(size_t e) const { return (flags[e] & kEdgeBorder) != 0; }
     bool is_non_manifold(size_t e) const { return (flags[e] & kEdgeNonManifold) != 0; }
 };

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -38,12 +39,20 @@ Mesh grid(int nx, int ny) {
     return m;
 }
 
+// The edge joining i and j, or edge_count() when there is none.
+size_t find_edge(const EdgeAdjacency& adj, uint32_t i, uint32_t j) {
+    const glm::uvec2 key(std::min(i, j), std::max(i, j));
+    const auto it = std::lower_bound(adj.edges.begin(), adj.edges.end(), key, [](glm::uvec2 a, glm::uvec2 b) {
+        return std::pair(a.x, a.y) < std::pair(b.x, b.y);
+    });
+    return it != adj.edges.end() && *it == key ? size_t(it - adj.edges.begin()) : adj.edge_count();
+}
+
 // Structural checks every adjacency must pass.
 void expect_consistent(const Mesh& m, const EdgeAdjacency& adj) {
-    ASSERT_EQ(adj.face_offset.size(), adj.edges.size() + 1);
+    ASSERT_EQ(adj.faces.size(), adj.edges.size());
     ASSERT_EQ(adj.flags.size(), adj.edges.size());
-    ASSERT_EQ(adj.face_edges.size(), m.triangles.size());
-    EXPECT_EQ(adj.face_offset.back(), adj.faces.size());
+    size_t sides = 0;
     for (size_t e = 0; e < adj.edge_count(); ++e) {
         EXPECT_LT(adj.edges[e].x, adj.edges[e].y);
         if (e > 0) {
@@ -52,23 +61,42 @@ void expect_consistent(const Mesh& m, const EdgeAdjacency& adj) {
         }
         EXPECT_GE(adj.face_count(e), 1u);
         EXPECT_EQ(adj.is_border(e), adj.face_count(e) == 1);
+        EXPECT_EQ(adj.is_border(e), adj.faces[e].y == EdgeAdjacency::kNoFace);
         EXPECT_EQ(adj.is_non_manifold(e), adj.face_count(e) > 2);
-        for (uint32_t k = adj.face_offset[e]; k < adj.face_offset[e + 1]; ++k) {
-            if (k > adj.face_offset[e]) {
-                EXPECT_LT(adj.faces[k - 1], adj.faces[k]);
+        sides += adj.face_count(e);
+        for (uint32_t k = 0; k < adj.face_count(e); ++k) {
+            const uint32_t f = adj.face(e, k);
+            if (k > 0) {
+                EXPECT_LT(adj.face(e, k - 1), f);
             }
-            // The face lists this edge among its sides.
-            const glm::uvec3 fe = adj.face_edges[adj.faces[k]];
-            EXPECT_TRUE(fe.x == e || fe.y == e || fe.z == e);
+            // The face has this edge among its sides.
+            ASSERT_LT(f, m.triangles.size());
+            const glm::uvec3 t = m.triangles[f];
+            bool found = false;
+            for (int s = 0; s < 3; ++s)
+                found |= glm::uvec2(std::min(t[s], t[(s + 1) % 3]), std::max(t[s], t[(s + 1) % 3])) == adj.edges[e];
+            EXPECT_TRUE(found) << "edge " << e << " face " << f;
         }
     }
-    for (size_t f = 0; f < m.triangles.size(); ++f)
+    EXPECT_TRUE(std::is_sorted(adj.more_faces.begin(), adj.more_faces.end(), [](glm::uvec2 a, glm::uvec2 b) {
+        return std::pair(a.x, a.y) < std::pair(b.x, b.y);
+    }));
+    // Every side of a usable face is an edge that lists the face: the lists cover all sides.
+    size_t usable_sides = 0;
+    for (size_t f = 0; f < m.triangles.size(); ++f) {
+        const glm::uvec3 t = m.triangles[f];
+        const size_t n = m.positions.size();
+        if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x) continue;
         for (int s = 0; s < 3; ++s) {
-            const uint32_t e = adj.face_edges[f][s];
-            if (e == EdgeAdjacency::kNoEdge) continue;
-            const uint32_t i = m.triangles[f][s], j = m.triangles[f][(s + 1) % 3];
-            EXPECT_EQ(adj.edges[e], glm::uvec2(std::min(i, j), std::max(i, j)));
+            ++usable_sides;
+            const size_t e = find_edge(adj, t[s], t[(s + 1) % 3]);
+            ASSERT_LT(e, adj.edge_count());
+            bool listed = false;
+            for (uint32_t k = 0; k < adj.face_count(e); ++k) listed |= adj.face(e, k) == f;
+            EXPECT_TRUE(listed) << "face " << f << " side " << s;
         }
+    }
+    EXPECT_EQ(sides, usable_sides);
 }
 
 TEST(Adjacency, CubeHasEighteenManifoldEdges) {
@@ -80,7 +108,6 @@ TEST(Adjacency, CubeHasEighteenManifoldEdges) {
         EXPECT_EQ(adj.face_count(e), 2u);
         EXPECT_EQ(adj.flags[e], 0);
     }
-    for (const glm::uvec3& fe : adj.face_edges) EXPECT_NE(fe.x, EdgeAdjacency::kNoEdge);
 }
 
 TEST(Adjacency, OpenGridBorderIsItsBoundary) {
@@ -112,13 +139,21 @@ TEST(Adjacency, BadFacesAreSkippedAndNonManifoldFlagged) {
                    {0, 6, 1}};                         // zero area, distinct indices: kept
     const EdgeAdjacency adj = build_edge_adjacency(m);
     expect_consistent(m, adj);
-    for (const int f : {3, 4, 5}) EXPECT_EQ(adj.face_edges[f], glm::uvec3(EdgeAdjacency::kNoEdge));
+    // Faces 3, 4 and 5 have no edges: no edge lists them.
+    for (size_t e = 0; e < adj.edge_count(); ++e)
+        for (uint32_t k = 0; k < adj.face_count(e); ++k) {
+            const uint32_t f = adj.face(e, k);
+            EXPECT_TRUE(f != 3 && f != 4 && f != 5) << f;
+        }
     size_t non_manifold = 0;
     for (size_t e = 0; e < adj.edge_count(); ++e)
         if (adj.is_non_manifold(e)) {
             ++non_manifold;
             EXPECT_EQ(adj.edges[e], glm::uvec2(0, 1));
             EXPECT_EQ(adj.face_count(e), 4u);  // faces 0, 1, 2 and the zero-area face 6
+            EXPECT_EQ(adj.faces[e], glm::uvec2(0, 1));
+            EXPECT_EQ(adj.face(e, 2), 2u);
+            EXPECT_EQ(adj.face(e, 3), 6u);
         }
     EXPECT_EQ(non_manifold, 1u);
     // Empty and vertex-only meshes.
@@ -127,7 +162,7 @@ TEST(Adjacency, BadFacesAreSkippedAndNonManifoldFlagged) {
     points.positions = {{0, 0, 0}, {1, 1, 1}};
     const EdgeAdjacency none = build_edge_adjacency(points);
     EXPECT_EQ(none.edge_count(), 0u);
-    EXPECT_EQ(none.face_offset.size(), 1u);
+    EXPECT_TRUE(none.faces.empty() && none.more_faces.empty());
 }
 
 TEST(Adjacency, ClosedSphereHasNoBorderAndEulerCharacteristicTwo) {
