@@ -56,6 +56,11 @@ void Framebuffer::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
+void Framebuffer::bind_resolved() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+    glViewport(0, 0, width_, height_);
+}
+
 void Framebuffer::resolve() const {
     glBlitNamedFramebuffer(msaa_fbo_, resolve_fbo_, 0, 0, width_, height_, 0, 0, width_, height_,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);

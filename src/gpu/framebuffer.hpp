@@ -22,6 +22,9 @@ public:
     void bind() const;
     // Resolves MSAA into the single-sample buffer (a no-op copy when samples == 1).
     void resolve() const;
+    // Binds the resolved single-sample colour buffer as the draw target (passes that shade once
+    // per pixel and need no depth: blending them into every sample would give the same result).
+    void bind_resolved() const;
     // Reads the resolved colour, top row first. With `unpremultiply`, colour is divided by
     // alpha (edges antialiased against a transparent background stay their own colour).
     Image read(bool unpremultiply) const;

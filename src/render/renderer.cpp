@@ -382,10 +382,16 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
                 impl_->gbuffer = std::make_unique<render::GBuffer>(options.width, options.height);
             impl_->gbuffer->draw(*impl_->mesh, camera, render::ImageLinesPass::needs_face_normals(edges), cull);
         }
+    }
+    const auto draw_image_lines = [&] {
         PassTimer t(timings, "image-lines");
-        fb.bind();
         if (!impl_->image_lines) impl_->image_lines = std::make_unique<render::ImageLinesPass>();
         impl_->image_lines->draw(*impl_->gbuffer, camera, options.width, options.height, edges, suggestive);
+    };
+    const bool image_lines_after_resolve = (edges || suggestive) && vector_lines.empty();
+    if ((edges || suggestive) && !image_lines_after_resolve) {
+        fb.bind();
+        draw_image_lines();
     }
     if (!vector_lines.empty()) {
         LineDrawing drawing;
@@ -410,6 +416,10 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     {
         PassTimer t(timings, "resolve");
         fb.resolve();
+    }
+    if (image_lines_after_resolve) {
+        fb.bind_resolved();
+        draw_image_lines();
     }
     PassTimer t(timings, "readback");
     return fb.read(options.background.a < 1.0f);
