@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/normals.hpp"
+
 namespace inkshade::geometry {
 namespace {
 
@@ -26,16 +28,11 @@ bool runs_forward(const glm::uvec3& t, uint32_t v0, uint32_t v1) {
     return false;
 }
 
-// Unit normal of face t, or zero for a zero-area face: the arithmetic of face_normals
-// (normals.cpp), so the classification is the same as from that array. Computed per edge
-// instead of read from it: the array would be 12 B a face (120 MB at 10 M triangles) beside
-// the adjacency, at the peak of a first view.
+// Unit normal of face t, or zero for a zero-area face (normals.hpp). Computed per block of
+// edges instead of read from a face_normals array: that would be 12 B a face (120 MB at 10 M
+// triangles) beside the adjacency, at the peak of a first view.
 glm::vec3 face_normal(const Mesh& mesh, const glm::uvec3& t) {
-    const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
-    const glm::dvec3 n = glm::cross(b - a, c - a);
-    const double len = glm::length(n);
-    if (!(len > 0.0) || !std::isfinite(len)) return glm::vec3(0.0f);
-    return glm::vec3(n / len);
+    return unit_normal(mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]);
 }
 
 // Classifies edges [first, last) into `out`.

@@ -18,14 +18,6 @@ bool finite(const glm::vec3& v) {
 
 bool valid(const glm::uvec3& t, size_t n) { return t.x < n && t.y < n && t.z < n; }
 
-// Unit cross product, or zero when it has no direction (degenerate face, overflow, NaN input).
-glm::vec3 unit_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-    const glm::dvec3 n = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
-    const double len = glm::length(n);
-    if (!(len > 0.0) || !std::isfinite(len)) return glm::vec3(0.0f);
-    return glm::vec3(n / len);
-}
-
 // Interior angle between edges u and v; atan2 stays accurate for nearly flat angles where
 // acos of the normalised dot product loses precision.
 float angle_between(const glm::vec3& u, const glm::vec3& v) {

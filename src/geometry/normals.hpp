@@ -1,12 +1,22 @@
 // Face and vertex normals.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "inkshade/mesh.hpp"
 
 namespace inkshade::geometry {
 
-// Unit normal per triangle (right-hand rule, counter-clockwise front); zero for degenerate faces.
+// Unit normal of triangle (a, b, c) (right-hand rule, counter-clockwise front), in double
+// precision; zero when it has no direction (degenerate face, overflow, NaN input).
+inline glm::vec3 unit_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 n = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len)) return glm::vec3(0.0f);
+    return glm::vec3(n / len);
+}
+
+// unit_normal per triangle; zero for degenerate faces and ones with an out-of-range index.
 std::vector<glm::vec3> face_normals(const Mesh& mesh);
 
 // Angle-weighted vertex normals (Thürmer & Wüthrich 1998): each face contributes its unit

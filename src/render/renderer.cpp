@@ -374,22 +374,22 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         if (!impl_->threejs_outline) impl_->threejs_outline = std::make_unique<render::ThreejsOutlinePass>();
         impl_->threejs_outline->draw(*impl_->mesh, camera, options.width, options.height, *threejs_outline);
     }
-    if (edges || suggestive) {
-        {
-            PassTimer t(timings, "gbuffer");
-            if (!impl_->gbuffer || impl_->gbuffer->width() != options.width ||
-                impl_->gbuffer->height() != options.height)
-                impl_->gbuffer = std::make_unique<render::GBuffer>(options.width, options.height);
-            impl_->gbuffer->draw(*impl_->mesh, camera, render::ImageLinesPass::needs_face_normals(edges), cull);
-        }
+    const bool image_lines = edges || suggestive;
+    if (image_lines) {
+        PassTimer t(timings, "gbuffer");
+        if (!impl_->gbuffer || impl_->gbuffer->width() != options.width || impl_->gbuffer->height() != options.height)
+            impl_->gbuffer = std::make_unique<render::GBuffer>(options.width, options.height);
+        impl_->gbuffer->draw(*impl_->mesh, camera, render::ImageLinesPass::needs_face_normals(edges), cull);
     }
     const auto draw_image_lines = [&] {
         PassTimer t(timings, "image-lines");
         if (!impl_->image_lines) impl_->image_lines = std::make_unique<render::ImageLinesPass>();
         impl_->image_lines->draw(*impl_->gbuffer, camera, options.width, options.height, edges, suggestive);
     };
-    const bool image_lines_after_resolve = (edges || suggestive) && vector_lines.empty();
-    if ((edges || suggestive) && !image_lines_after_resolve) {
+    // Without object-space strokes to draw over them, the image-space lines go onto the resolved
+    // image (bind_resolved): the same bytes, one blend a pixel instead of one a sample.
+    const bool image_lines_after_resolve = image_lines && vector_lines.empty();
+    if (image_lines && !image_lines_after_resolve) {
         fb.bind();
         draw_image_lines();
     }
