@@ -2,7 +2,6 @@
 // (world space) → split by visibility (ray casting, visibility.hpp) → chain into polylines →
 // project to image pixels → drop short chains and smooth (in pixels) → one layer.
 #include <chrono>
-#include <future>
 #include <map>
 
 #include "geometry/chaining.hpp"
@@ -123,12 +122,6 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
     if (object_lines.empty()) return drawing;
 
     Impl& m = *impl_;
-    // The ray scene (first view only) is built on its own thread while the segments are
-    // extracted: both only read the mesh, and the serial parts of extraction (adjacency,
-    // chaining setup) leave a core free for Embree's build.
-    std::future<std::unique_ptr<RayScene>> pending_scene;
-    if (!m.scene)
-        pending_scene = std::async(std::launch::async, [&m] { return std::make_unique<RayScene>(m.data.mesh()); });
     const ImageProjection view(camera, width, height);
 
     MeshLineNeeds needs;
@@ -136,9 +129,20 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         const MeshLineNeeds n = object_line_needs(settings->type);
         needs.adjacency |= n.adjacency;
         needs.curvature |= n.curvature;
+        if (settings->type == "crease") needs.crease_angle = line_number(*settings, "angle");
     }
-    m.data.prepare(needs);
+    // The ray scene (first view only) is built beside the curvature threads, after the
+    // adjacency's serial sort and the crease classification (which drops a large adjacency):
+    // the BVH and a 10 M-triangle adjacency are never held at once.
+    double scene_ms = 0.0;
+    m.data.prepare(needs, [&] {
+        if (m.scene) return;
+        const auto start = Clock::now();
+        m.scene = std::make_unique<RayScene>(m.data.mesh());
+        scene_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    });
     for (const auto& [stage, ms] : m.data.take_setup_timings()) timer.add(stage, ms);
+    if (scene_ms > 0.0) timer.add("ray scene", scene_ms);
 
     std::vector<std::vector<LineSegment>> segments_per_type;
     for (const LineSettings* settings : object_lines) {
@@ -154,15 +158,19 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         }
         timer.add("extract", extract_ms);
     }
-    // What is left of the scene build after the overlap (an Embree error is rethrown here).
-    if (pending_scene.valid()) m.scene = timer("ray scene", [&] { return pending_scene.get(); });
 
+    // One scan of the triangles for the two-ring tests of every line type of this view.
+    const IncidentFaces incident = timer("visibility", [&] {
+        std::vector<const std::vector<LineSegment>*> lists;
+        for (const auto& segments : segments_per_type) lists.push_back(&segments);
+        return incident_faces_of(m.data.mesh(), lists);
+    });
     for (size_t i = 0; i < object_lines.size(); ++i) {
         const LineSettings* settings = object_lines[i];
         const std::vector<LineSegment>& segments = segments_per_type[i];
         const bool want_hidden = line_number(*settings, "hidden") != 0.0f;
         VisibilitySplit split =
-            timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments); });
+            timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, {}, &incident); });
         auto chained = timer("chain", [&] {
             std::pair<std::vector<Polyline>, std::vector<Polyline>> out;
             out.first = chain_segments(split.visible);

@@ -53,9 +53,7 @@ namespace {
 struct OcclusionContext {
     RTCIntersectContext rtc;
     const glm::uvec3* triangles = nullptr;
-    const uint32_t* face_offset = nullptr;  // vertex → incident faces (CSR)
-    const uint32_t* faces = nullptr;
-    size_t vertex_count = 0;
+    const IncidentFaces* incident = nullptr;  // faces of the two-ring queries' near vertices
     const OcclusionQuery* queries = nullptr;  // indexed by the ray's id
 };
 
@@ -67,10 +65,9 @@ bool near_face(const OcclusionContext& ctx, const OcclusionQuery& q, const glm::
         if (shares_vertex(t, q.near[k])) return true;
     if (q.rings < 2) return false;
     for (int k = 0; k < q.near_count; ++k) {
-        const uint32_t v = q.near[k];
-        if (v >= ctx.vertex_count) continue;
-        for (uint32_t i = ctx.face_offset[v]; i < ctx.face_offset[v + 1]; ++i) {
-            const glm::uvec3 u = ctx.triangles[ctx.faces[i]];
+        const auto [first, last] = ctx.incident->faces(q.near[k]);
+        for (const uint32_t* f = first; f != last; ++f) {
+            const glm::uvec3 u = ctx.triangles[*f];
             if (shares_vertex(t, u.x) || shares_vertex(t, u.y) || shares_vertex(t, u.z)) return true;
         }
     }
@@ -102,9 +99,9 @@ std::string device_error_text(RTCDevice device) {
 struct RayScene::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    const Mesh* mesh = nullptr;
     std::vector<glm::uvec3> own_triangles;  // used when the mesh has out-of-range indices
     const glm::uvec3* triangles = nullptr;
-    std::vector<uint32_t> face_offset, faces;  // vertex → incident faces (CSR), for two rings
 
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
@@ -126,6 +123,7 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
 
     const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
+    m.mesh = &mesh;
     m.triangles = mesh.triangles.data();
     if (std::any_of(mesh.triangles.begin(), mesh.triangles.end(),
                     [&](const glm::uvec3& t) { return t.x >= nv || t.y >= nv || t.z >= nv; })) {
@@ -135,26 +133,18 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
             if (t.x >= nv || t.y >= nv || t.z >= nv) t = glm::uvec3(0);  // never hit
         m.triangles = m.own_triangles.data();
     }
-    // Vertex → face lists by counting sort (ascending faces per vertex), valid faces only.
-    auto in_range = [&](const glm::uvec3& t) { return t.x < nv && t.y < nv && t.z < nv; };
-    m.face_offset.assign(nv + 1, 0);
-    for (const glm::uvec3& t : mesh.triangles)
-        if (in_range(t))
-            for (uint32_t v : {t.x, t.y, t.z}) ++m.face_offset[v + 1];
-    for (size_t v = 0; v < nv; ++v) m.face_offset[v + 1] += m.face_offset[v];
-    m.faces.resize(m.face_offset[nv]);
-    std::vector<uint32_t> fill(m.face_offset.begin(), m.face_offset.end() - 1);
-    for (size_t f = 0; f < nf; ++f)
-        if (in_range(mesh.triangles[f]))
-            for (uint32_t v : {mesh.triangles[f].x, mesh.triangles[f].y, mesh.triangles[f].z})
-                m.faces[fill[v]++] = uint32_t(f);
     if (nv > 0 && nf > 0) {
         RTCGeometry geom = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        // Vertices are copied: Embree reads the last one with a 16-byte load, so a shared
-        // float3 buffer would need padding std::vector<glm::vec3> does not have.
-        auto* v = static_cast<float*>(
-            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
-        if (v) std::copy_n(&mesh.positions[0].x, 3 * nv, v);
+        // Embree reads the last vertex with a 16-byte load: the mesh's own array serves when
+        // its capacity covers those 4 bytes (60 MB saved at 10 M triangles), else a copy.
+        if (mesh.positions.capacity() > nv) {
+            rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.positions.data(), 0,
+                                       sizeof(glm::vec3), nv);
+        } else {
+            auto* v = static_cast<float*>(
+                rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
+            if (v) std::copy_n(&mesh.positions[0].x, 3 * nv, v);
+        }
         // Indices are shared (12-byte stride, no padding needed).
         rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.triangles, 0,
                                    sizeof(glm::uvec3), nf);
@@ -170,6 +160,50 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
 
 RayScene::~RayScene() = default;
 
+// ---- IncidentFaces -----------------------------------------------------------------------
+
+IncidentFaces::IncidentFaces(const Mesh& mesh, const std::vector<uint32_t>& vertices) {
+    const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
+    if (vertices.empty()) return;
+    // Dense slots (4 B a vertex for the view's duration) make a lookup one load; the scan tests
+    // a bitmap first (600 kB at 5 M vertices: it stays in cache, the slots would not).
+    slot_.assign(nv, kNone);
+    std::vector<uint64_t> chosen((nv + 63) / 64, 0);
+    uint32_t count = 0;
+    for (uint32_t v : vertices)
+        if (v < nv && slot_[v] == kNone) {
+            slot_[v] = count++;
+            chosen[v / 64] |= uint64_t(1) << (v % 64);
+        }
+    // Blocks of faces in parallel, each listing (slot, face) for its chosen vertices; blocks are
+    // concatenated in order, so each vertex's faces come out ascending.
+    constexpr size_t kBlock = size_t(1) << 16;
+    std::vector<std::vector<glm::uvec2>> found((nf + kBlock - 1) / kBlock);
+    tbb::parallel_for(size_t(0), found.size(), [&](size_t b) {
+        for (size_t f = b * kBlock, end = std::min(nf, f + kBlock); f < end; ++f) {
+            const glm::uvec3 t = mesh.triangles[f];
+            if (t.x >= nv || t.y >= nv || t.z >= nv) continue;
+            for (uint32_t v : {t.x, t.y, t.z})
+                if ((chosen[v / 64] >> (v % 64)) & 1) found[b].emplace_back(slot_[v], uint32_t(f));
+        }
+    });
+    offset_.assign(size_t(count) + 1, 0);
+    for (const auto& list : found)
+        for (const glm::uvec2& x : list) ++offset_[x.x + 1];
+    for (size_t i = 0; i < count; ++i) offset_[i + 1] += offset_[i];
+    faces_.resize(offset_.back());
+    std::vector<uint32_t> fill(offset_.begin(), offset_.end() - 1);
+    for (const auto& list : found)
+        for (const glm::uvec2& x : list) faces_[fill[x.x]++] = x.y;
+}
+
+std::pair<const uint32_t*, const uint32_t*> IncidentFaces::faces(uint32_t v) const {
+    if (v >= slot_.size() || slot_[v] == kNone) return {nullptr, nullptr};
+    return {faces_.data() + offset_[slot_[v]], faces_.data() + offset_[slot_[v] + 1]};
+}
+
+// ---- RayScene queries ----------------------------------------------------------------------
+
 bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices,
                         int near_count, int rings, double clearance) const {
     const OcclusionQuery query{p, near_vertices, near_count, rings, clearance};
@@ -179,7 +213,15 @@ bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const u
 }
 
 void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count,
-                        uint8_t* hidden) const {
+                        uint8_t* hidden, const IncidentFaces* incident) const {
+    IncidentFaces own;
+    if (!incident) {
+        std::vector<uint32_t> ring_vertices;
+        for (size_t i = 0; i < count; ++i)
+            if (queries[i].rings >= 2) ring_vertices.insert(ring_vertices.end(), queries[i].near, queries[i].near + queries[i].near_count);
+        own = IncidentFaces(*impl_->mesh, ring_vertices);
+        incident = &own;
+    }
     const Camera& cam = view.camera();
     const double near = double(cam.near_plane);
     const glm::dvec3 eye(cam.eye);
@@ -223,9 +265,7 @@ void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queri
     // so Embree traces them as packets (about 15 % less time than one rtcOccluded1 each).
     ctx.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     ctx.triangles = impl_->triangles;
-    ctx.face_offset = impl_->face_offset.data();
-    ctx.faces = impl_->faces.data();
-    ctx.vertex_count = impl_->face_offset.size() - 1;
+    ctx.incident = incident;
     ctx.queries = queries;
     if (count == 1) rtcOccluded1(impl_->scene, &ctx.rtc, &rays[0]);
     else if (count > 1) rtcOccluded1M(impl_->scene, &ctx.rtc, rays.data(), unsigned(count), sizeof(RTCRay));
@@ -307,16 +347,20 @@ SampleRule rule_of(const Mesh& mesh, const LineSegment& s, const VisibilityOptio
 }
 
 Sight sight_of(const RayScene& scene, const ImageProjection& view, const glm::vec3& p, const NearSet& near,
-               const SampleRule& rule) {
+               const SampleRule& rule, const IncidentFaces& incident) {
     if (view.clipped(p)) return Sight::Clipped;
-    return scene.occluded(view, p, near.v, near.n, rule.rings, rule.clearance) ? Sight::Hidden : Sight::Visible;
+    const OcclusionQuery query{p, near.v, near.n, rule.rings, rule.clearance};
+    uint8_t hidden = 0;
+    scene.occluded(view, &query, 1, &hidden, &incident);
+    return hidden ? Sight::Hidden : Sight::Visible;
 }
 
 // Sight of every segment end, each shared node tested once: neighbouring segments of a chain
 // meet at bit-identical points with equal keys (contours.hpp), so about half the rays of a
 // per-segment test are saved, and both segments agree on the shared end by construction.
 std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
-                              const std::vector<LineSegment>& segments, const std::vector<SampleRule>& rules) {
+                              const std::vector<LineSegment>& segments, const std::vector<SampleRule>& rules,
+                              const IncidentFaces& incident) {
     struct End {
         uint64_t key;
         uint32_t px, py, pz;  // position bits: a node is one key at one point
@@ -372,7 +416,7 @@ std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const Ima
             query_group.push_back(g);
         }
         std::vector<uint8_t> hidden(queries.size());
-        scene.occluded(view, queries.data(), queries.size(), hidden.data());
+        scene.occluded(view, queries.data(), queries.size(), hidden.data(), &incident);
         for (size_t q = 0; q < queries.size(); ++q) {
             const size_t g = query_group[q];
             for (uint32_t k = starts[g]; k < starts[g + 1]; ++k)
@@ -384,8 +428,24 @@ std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const Ima
 
 }  // namespace
 
+IncidentFaces incident_faces_of(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& lists,
+                               const VisibilityOptions& options) {
+    // Every near vertex of a two-ring sample: the segment's face and its end keys' vertices.
+    std::vector<uint32_t> ring_vertices;
+    for (const std::vector<LineSegment>* list : lists)
+        for (const LineSegment& s : *list) {
+            if (rule_of(mesh, s, options).rings < 2) continue;
+            for (const NearSet& e : {near_of_key(mesh, s.edge_a, s.face), near_of_key(mesh, s.edge_b, s.face)})
+                ring_vertices.insert(ring_vertices.end(), e.v, e.v + e.n);
+            if (s.face < mesh.triangles.size())
+                for (int k = 0; k < 3; ++k) ring_vertices.push_back(mesh.triangles[s.face][k]);
+        }
+    return IncidentFaces(mesh, ring_vertices);
+}
+
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
-                                    const std::vector<LineSegment>& segments, const VisibilityOptions& options) {
+                                    const std::vector<LineSegment>& segments, const VisibilityOptions& options,
+                                    const IncidentFaces* incident) {
     const size_t n = segments.size();
     const double spacing = std::max(double(options.sample_spacing_px), 1e-3);
     const double precision = std::max(double(options.transition_precision_px), 1e-4);
@@ -394,7 +454,12 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
     std::vector<SampleRule> rules(n);
     tbb::parallel_for(size_t(0), n, [&](size_t i) { rules[i] = rule_of(mesh, segments[i], options); });
-    const std::vector<Sight> ends = end_sights(scene, mesh, view, segments, rules);
+    IncidentFaces own;
+    if (!incident) {
+        own = incident_faces_of(mesh, {&segments}, options);
+        incident = &own;
+    }
+    const std::vector<Sight> ends = end_sights(scene, mesh, view, segments, rules, *incident);
 
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
         std::vector<Sight> sights;
@@ -414,7 +479,7 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             sights.resize(size_t(steps) + 1);
             sights[0] = ends[2 * i];
             sights[size_t(steps)] = ends[2 * i + 1];
-            for (int k = 1; k < steps; ++k) sights[size_t(k)] = sight_of(scene, view, lerp(s, double(k) / steps), inside, rule);
+            for (int k = 1; k < steps; ++k) sights[size_t(k)] = sight_of(scene, view, lerp(s, double(k) / steps), inside, rule, *incident);
             if (std::all_of(sights.begin(), sights.end(), [&](Sight x) { return x == sights[0]; })) {
                 whole[i] = uint8_t(sights[0]);
                 continue;
@@ -430,7 +495,7 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
                     const bool measurable = !view.clipped(plo) && !view.clipped(phi);
                     if (measurable ? pixel_distance(view, plo, phi) <= precision : hi - lo < 1e-7) break;
                     const double mid = 0.5 * (lo + hi);
-                    (sight_of(scene, view, lerp(s, mid), inside, rule) == sights[size_t(k)] ? lo : hi) = mid;
+                    (sight_of(scene, view, lerp(s, mid), inside, rule, *incident) == sights[size_t(k)] ? lo : hi) = mid;
                 }
                 const double t = 0.5 * (lo + hi);
                 out.push_back({start, t, sights[size_t(k)]});

@@ -6,6 +6,7 @@
 // tests, exact up to the sampling instead of limited by a depth buffer's resolution.
 #pragma once
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "geometry/contours.hpp"
@@ -49,11 +50,31 @@ struct OcclusionQuery {
     double clearance = 0.0;
 };
 
+// Faces incident to a chosen set of vertices (CSR over those vertices only), from one scan of
+// the triangles: what the two-ring test needs around the samples of one view, instead of a
+// mesh-wide vertex → face table (140 MB at 10 M triangles, issue 9's memory budget). Triangles
+// with an out-of-range index are left out.
+class IncidentFaces {
+public:
+    IncidentFaces() = default;
+    // `vertices` in any order, duplicates allowed; parallel scan (TBB).
+    IncidentFaces(const Mesh& mesh, const std::vector<uint32_t>& vertices);
+
+    // Faces incident to v, ascending ([first, last)); empty when v was not chosen.
+    std::pair<const uint32_t*, const uint32_t*> faces(uint32_t v) const;
+
+private:
+    static constexpr uint32_t kNone = 0xffffffffu;
+    std::vector<uint32_t> slot_;           // per mesh vertex: its index among the chosen, or kNone
+    std::vector<uint32_t> offset_, faces_;  // faces_[offset_[i] .. offset_[i + 1]) of chosen vertex i
+};
+
 // An Embree scene of one mesh, built once (BVH of all triangles) and queried by many views.
 // Degenerate triangles are never hit (Embree rejects zero-area and non-finite triangles);
 // triangles with an out-of-range index are replaced by an empty one, so any Mesh is safe.
-// The index buffer is shared with `mesh` (vertices are copied): the mesh must outlive the
-// scene with its triangles unchanged.
+// The index buffer is shared with `mesh`, and so is the vertex buffer when `mesh.positions` has
+// spare capacity (Embree reads the last vertex with a 16-byte load; MeshLineData reserves one
+// more vertex for this), else vertices are copied: the mesh must outlive the scene unchanged.
 class RayScene {
 public:
     explicit RayScene(const Mesh& mesh);  // throws RuntimeError when Embree fails
@@ -86,8 +107,11 @@ public:
     bool occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices, int near_count,
                   int rings = 1, double clearance = 0.0) const;
     // The same for `count` queries at once, as one ray stream (rtcOccluded1M); hidden[i] = 1
-    // where query i is occluded.
-    void occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* hidden) const;
+    // where query i is occluded. Two-ring queries look up the faces of their near vertices in
+    // `incident`, which must cover them; without it, one is built for these queries (a scan
+    // of all triangles: pass one when testing many batches, as split_by_visibility does).
+    void occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* hidden,
+                  const IncidentFaces* incident = nullptr) const;
 
 private:
     struct Impl;
@@ -124,9 +148,15 @@ struct VisibilitySplit {
 // Tests segments of `mesh` (the mesh of `scene`) seen through `view`; parallel over segments
 // (TBB), deterministic. The near vertices of a sample come from its node keys: the edge's two
 // vertices, the crease vertex, or the three vertices of the segment's face for points inside
-// a face.
+// a face. Two-ring samples look their near vertices up in `incident` (incident_faces_of these
+// segments, or of several lists that include them); without it, one is built here.
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
                                     const std::vector<LineSegment>& segments,
-                                    const VisibilityOptions& options = {});
+                                    const VisibilityOptions& options = {}, const IncidentFaces* incident = nullptr);
+
+// The faces around every near vertex of the two-ring samples of these segment lists (one scan
+// of the triangles, about 30 ms at 10 M): build it once per view for all line types.
+IncidentFaces incident_faces_of(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& lists,
+                                const VisibilityOptions& options = {});
 
 }  // namespace inkshade::geometry

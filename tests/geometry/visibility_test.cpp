@@ -232,5 +232,43 @@ TEST(Visibility, DegenerateAndOutOfRangeTrianglesNeverOcclude) {
     EXPECT_TRUE(with_wall.occluded(view, {0.0f, -2.0f, -1.0f}, nullptr, 0));
 }
 
+TEST(Visibility, IncidentFacesListsTheChosenVerticesFacesAscending) {
+    // A fan of four triangles around vertex 0, a separate triangle, and one out of range.
+    Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {5, 5, 0}, {6, 5, 0}, {5, 6, 0}};
+    m.triangles = {{0, 1, 2}, {5, 6, 7}, {0, 2, 3}, {0, 3, 4}, {0, 4, 99}, {0, 4, 1}};
+    const IncidentFaces incident(m, {3, 0, 3, 42});  // duplicates and an out-of-range vertex
+    auto list = [&](uint32_t v) {
+        const auto [first, last] = incident.faces(v);
+        return std::vector<uint32_t>(first, last);
+    };
+    EXPECT_EQ(list(0), (std::vector<uint32_t>{0, 2, 3, 5}));  // face 4 has an index out of range
+    EXPECT_EQ(list(3), (std::vector<uint32_t>{2, 3}));
+    EXPECT_TRUE(list(1).empty());   // not chosen
+    EXPECT_TRUE(list(42).empty());  // not a vertex
+    EXPECT_TRUE(IncidentFaces().faces(0).first == IncidentFaces().faces(0).second);
+}
+
+TEST(Visibility, SharedAndCopiedVertexBuffersGiveTheSameAnswers) {
+    // RayScene shares the positions with Embree when they have spare capacity (MeshLineData
+    // reserves it), else copies them: both must see the same surface.
+    Mesh copied = builtin::torus();
+    copied.positions.shrink_to_fit();
+    Mesh shared = copied;
+    shared.positions.reserve(shared.positions.size() + 1);
+    ASSERT_EQ(copied.positions.capacity(), copied.positions.size());
+    const RayScene a(copied), b(shared);
+    const Camera camera = camera_at({0.3f, -3.0f, 1.5f}, {0, 0, 1});
+    const ImageProjection view(camera, kWidth, kHeight);
+    int hidden = 0;
+    for (uint32_t v = 0; v < copied.positions.size(); v += 7) {
+        const bool ha = a.occluded(view, copied.positions[v], &v, 1, 2);
+        EXPECT_EQ(ha, b.occluded(view, shared.positions[v], &v, 1, 2)) << "vertex " << v;
+        hidden += ha;
+    }
+    EXPECT_GT(hidden, 10);  // both sides of the question were asked
+    EXPECT_LT(hidden, int(copied.positions.size() / 7) - 10);
+}
+
 }  // namespace
 }  // namespace inkshade::geometry

@@ -19,10 +19,21 @@ auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, 
     return result;
 }
 
+// One spare vertex of capacity, written once: RayScene then shares the array with Embree,
+// whose 16-byte load of the last vertex reads 4 bytes past the end (a 60 MB copy saved at
+// 10 M triangles).
+void pad_for_embree(std::vector<glm::vec3>& positions) {
+    positions.reserve(positions.size() + 1);
+    positions.emplace_back(0.0f);
+    positions.pop_back();
+}
+
 }  // namespace
 
 MeshLineData::MeshLineData(const Mesh& mesh) {
+    mesh_.positions.reserve(mesh.positions.size() + 1);
     mesh_.positions = mesh.positions;
+    pad_for_embree(mesh_.positions);
     mesh_.triangles = mesh.triangles;
     mesh_.normals = mesh.normals;
     ensure_vertex_normals(mesh_);
@@ -30,46 +41,51 @@ MeshLineData::MeshLineData(const Mesh& mesh) {
 
 MeshLineData::MeshLineData(Mesh&& mesh) {
     mesh_.positions = std::move(mesh.positions);
+    pad_for_embree(mesh_.positions);
     mesh_.triangles = std::move(mesh.triangles);
     mesh_.normals = std::move(mesh.normals);
     mesh = Mesh();  // colours, uvs and materials are not needed here
     ensure_vertex_normals(mesh_);
 }
 
-void MeshLineData::prepare(MeshLineNeeds needs) {
-    if (needs.adjacency && !adjacency_ && needs.curvature && !curvature_) {
-        // Each task logs into its own list; the two are merged afterwards.
-        std::vector<std::pair<std::string, double>> adjacency_log, curvature_log;
-        tbb::parallel_invoke(
-            [&] { adjacency_ = timed(adjacency_log, "adjacency", [&] { return build_edge_adjacency(mesh_); }); },
-            [&] {
-                curvature_ = timed(curvature_log, "curvature", [&] { return compute_curvature(mesh_, mesh_.normals); });
-            });
-        for (auto* log : {&curvature_log, &adjacency_log})
-            setup_timings_.insert(setup_timings_.end(), log->begin(), log->end());
-        return;
+void MeshLineData::prepare(MeshLineNeeds needs, const std::function<void()>& then) {
+    // Each task logs into its own list; the two are merged afterwards in a fixed order.
+    TimingLog adjacency_log, curvature_log;
+    auto adjacency_side = [&] {
+        if (needs.adjacency) creases(needs.crease_angle, adjacency_log);
+        if (then) then();
+    };
+    if (needs.curvature && !curvature_) {
+        tbb::parallel_invoke(adjacency_side, [&] { curvature(curvature_log); });
+    } else {
+        adjacency_side();
     }
-    if (needs.adjacency) adjacency();
-    if (needs.curvature) curvature();
+    for (auto* log : {&curvature_log, &adjacency_log})
+        setup_timings_.insert(setup_timings_.end(), log->begin(), log->end());
 }
 
-const EdgeAdjacency& MeshLineData::adjacency() {
-    if (!adjacency_) adjacency_ = timed(setup_timings_, "adjacency", [&] { return build_edge_adjacency(mesh_); });
+const EdgeAdjacency& MeshLineData::adjacency() { return adjacency(setup_timings_); }
+const Curvature& MeshLineData::curvature() { return curvature(setup_timings_); }
+const CreaseLines& MeshLineData::creases(float angle_degrees) { return creases(angle_degrees, setup_timings_); }
+
+const EdgeAdjacency& MeshLineData::adjacency(TimingLog& log) {
+    if (!adjacency_) adjacency_ = timed(log, "adjacency", [&] { return build_edge_adjacency(mesh_); });
     return *adjacency_;
 }
 
-const Curvature& MeshLineData::curvature() {
-    if (!curvature_)
-        curvature_ = timed(setup_timings_, "curvature", [&] { return compute_curvature(mesh_, mesh_.normals); });
+const Curvature& MeshLineData::curvature(TimingLog& log) {
+    if (!curvature_) curvature_ = timed(log, "curvature", [&] { return compute_curvature(mesh_, mesh_.normals); });
     return *curvature_;
 }
 
-const CreaseLines& MeshLineData::creases(float angle_degrees) {
+const CreaseLines& MeshLineData::creases(float angle_degrees, TimingLog& log) {
     if (!creases_ || crease_angle_ != angle_degrees) {
-        const EdgeAdjacency& adj = adjacency();
-        creases_ = timed(setup_timings_, "creases",
+        const EdgeAdjacency& adj = adjacency(log);
+        creases_ = timed(log, "creases",
                          [&] { return extract_creases(mesh_, adj, CreaseOptions{.angle_degrees = angle_degrees}); });
         crease_angle_ = angle_degrees;
+        const size_t bytes = adj.edges.size() * (sizeof(glm::uvec2) * 2 + 1) + adj.more_faces.size() * sizeof(glm::uvec2);
+        if (bytes > kKeepAdjacencyBytes) adjacency_.reset();
     }
     return *creases_;
 }

@@ -1,7 +1,10 @@
 // What object-space line types extract from: one mesh (positions, triangles, unit vertex
 // normals) and what is derived from it alone — edge adjacency, curvature, creases — computed
-// on first use and kept, so later views of the same mesh pay only per-view work.
+// on first use and kept, so later views of the same mesh pay only per-view work. The one
+// exception is a large adjacency (over kKeepAdjacencyBytes): only creases and borders read it,
+// so it is dropped once they are classified and rebuilt if another crease angle is asked for.
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +22,7 @@ namespace inkshade::geometry {
 struct MeshLineNeeds {
     bool adjacency = false;  // creases, borders
     bool curvature = false;  // suggestive contours, ridges, valleys
+    float crease_angle = CreaseOptions{}.angle_degrees;  // classified by prepare() with adjacency
 };
 
 class MeshLineData {
@@ -33,10 +37,16 @@ public:
     const Mesh& mesh() const { return mesh_; }
     const std::vector<glm::vec3>& normals() const { return mesh_.normals; }
 
+    // Adjacency past this size (about 2.6 M triangles) is dropped after crease classification.
+    static constexpr size_t kKeepAdjacencyBytes = size_t(64) << 20;
+
     // Computes what `needs` asks for and is not cached yet, the two at once when both are
     // missing: adjacency is a serial counting sort and curvature a parallel loop, so on a
-    // first view the sort runs beside the curvature threads instead of after them.
-    void prepare(MeshLineNeeds needs);
+    // first view the sort runs beside the curvature threads instead of after them. With
+    // adjacency, creases are classified at needs.crease_angle. `then` runs on the adjacency's
+    // side after it (dropped when large): LineExtractor builds its ray scene there, beside the
+    // curvature but never beside a 10 M-triangle adjacency (issue 9's memory budget).
+    void prepare(MeshLineNeeds needs, const std::function<void()>& then = {});
 
     const EdgeAdjacency& adjacency();
     const Curvature& curvature();  // Rusinkiewicz 2004, from normals()
@@ -53,6 +63,11 @@ public:
     std::vector<std::pair<std::string, double>> take_setup_timings();
 
 private:
+    using TimingLog = std::vector<std::pair<std::string, double>>;
+    const EdgeAdjacency& adjacency(TimingLog& log);
+    const Curvature& curvature(TimingLog& log);
+    const CreaseLines& creases(float angle_degrees, TimingLog& log);
+
     Mesh mesh_;
     std::optional<EdgeAdjacency> adjacency_;
     std::optional<Curvature> curvature_;
@@ -60,7 +75,7 @@ private:
     float crease_angle_ = 0.0f;
     std::optional<RidgeLines> ridges_;
     RidgeOptions ridge_options_;
-    std::vector<std::pair<std::string, double>> setup_timings_;
+    TimingLog setup_timings_;
 };
 
 }  // namespace inkshade::geometry
