@@ -52,7 +52,9 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
 
     const size_t triangles = mesh.triangle_count();
     Renderer renderer;
-    renderer.set_mesh(std::move(mesh));  // the renderer keeps what lines need: no second copy
+    // The renderer keeps what lines need (no second copy). One image: object-space lines are
+    // extracted before the GL upload and their data freed first (MeshUse::OneFrame).
+    renderer.set_mesh(std::move(mesh), args.timing > 0 ? MeshUse::ManyFrames : MeshUse::OneFrame);
     Image image = renderer.render(camera, light, shading, style.lines, options);
     if (args.timing > 0) {
         std::map<std::string, std::vector<double>> per_pass;

@@ -48,6 +48,10 @@ public:
     explicit LineExtractor(const Mesh& mesh);
     // Takes positions, triangles and normals from `mesh` instead of copying them.
     explicit LineExtractor(Mesh&& mesh);
+    // Shares `mesh` (no copy), which must stay unchanged in positions, triangles and normals
+    // while the extractor lives; its normals must be unit already (ensure_vertex_normals),
+    // else the extractor makes its own copy as the const Mesh& constructor does.
+    explicit LineExtractor(std::shared_ptr<const Mesh> mesh);
     ~LineExtractor();
     LineExtractor(const LineExtractor&) = delete;
     LineExtractor& operator=(const LineExtractor&) = delete;
@@ -64,6 +68,10 @@ public:
     // the normal curvature along the view vector projected onto the tangent plane), as the
     // `kr` debug view shows it. Curvature is computed on the first call and kept.
     std::vector<float> radial_curvature(const Camera& camera);
+
+    // Frees the mesh-wide data (curvature, adjacency, creases, the ray scene: about 700 MB at
+    // 10 M triangles); the next draw computes again what it needs.
+    void release_mesh_data();
 
 private:
     struct Impl;

@@ -33,6 +33,18 @@ struct PassTiming {
     double gpu_milliseconds = 0.0;  // GL timestamp queries around the pass (CPU work excluded)
 };
 
+// How a mesh given to Renderer::set_mesh will be rendered.
+enum class MeshUse {
+    // Views of one mesh (viewer, batch, timing runs): the GL buffers are made at set_mesh and the
+    // object-space lines' mesh-wide data (curvature, adjacency, ray scene) is kept between frames.
+    ManyFrames,
+    // One image (`inkshade render`): the first render extracts its object-space lines before
+    // the GL upload and frees their mesh-wide data before the raster passes, so the two memory
+    // peaks do not add up (10 M triangles, ink-vector style: 1.6 GiB -> under 1 GiB). Later
+    // renders still work, recomputing that data each time.
+    OneFrame,
+};
+
 class Renderer {
 public:
     // Creates a headless OpenGL 4.5 context. Throws RuntimeError when none is available.
@@ -45,11 +57,14 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Uploads the mesh (replaces the previous one). The renderer keeps positions, triangles and
-    // normals for object-space lines: copied from a const mesh, taken from a moved one (which
-    // saves a copy of the mesh, 240 MB at 10 M triangles).
-    void set_mesh(const Mesh& mesh);
-    void set_mesh(Mesh&& mesh);
+    // Replaces the mesh: its GL buffers are made now (ManyFrames) or on the first render
+    // (OneFrame). Missing or invalid vertex normals are replaced by angle-weighted ones and the
+    // rest made unit (geometry::ensure_vertex_normals), for shading and lines alike. The renderer
+    // keeps positions, triangles and normals for object-space lines: copied from a const mesh,
+    // taken from a moved one (which saves a copy, 240 MB at 10 M triangles). Throws InputError
+    // for a mesh without triangles.
+    void set_mesh(const Mesh& mesh, MeshUse use = MeshUse::ManyFrames);
+    void set_mesh(Mesh&& mesh, MeshUse use = MeshUse::ManyFrames);
 
     // Renders the current mesh. With `timings`, each pass is finished (glFinish) and timed.
     Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,

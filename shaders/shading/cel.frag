@@ -40,13 +40,17 @@ float above(float value, float threshold) {
 
 // First-match band lookup written as a blend so that soft edges mix neighbouring levels:
 // level = sum_i levels[i] * above_i * prod_{j<i} (1 - above_j) + fallback * prod_j (1 - above_j).
-// With hard edges this is exactly "the first i with d > thresholds[i]" for any order.
+// With hard edges this is exactly "the first i with d > thresholds[i]" for any order. Every
+// threshold tests the same d, so fwidth(d) is taken once and each step is a select, not
+// above()'s branch (llvmpipe runs both sides of a varying branch and pays the mask upkeep).
 float band_level(float d) {
     int count = min(u_thresholds_count, kMaxThresholds);
+    float width = u_smoothing * fwidth(d);
     float remaining = 1.0;
     float level = 0.0;
     for (int i = 0; i < count; ++i) {
-        float a = above(d, u_thresholds[i]);
+        float t = u_thresholds[i];
+        float a = width > 0.0 ? smoothstep(t - 0.5 * width, t + 0.5 * width, d) : (d > t ? 1.0 : 0.0);
         level += remaining * a * u_levels[min(i, kMaxLevels - 1)];
         remaining *= 1.0 - a;
     }

@@ -21,11 +21,18 @@ struct LineExtractor::Impl {
     std::unique_ptr<RayScene> scene;  // built on the first draw (timed there)
     explicit Impl(const Mesh& mesh) : data(mesh) {}
     explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
+    explicit Impl(std::shared_ptr<const Mesh> mesh) : data(std::move(mesh)) {}
 };
 
 LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
 LineExtractor::LineExtractor(Mesh&& mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
+LineExtractor::LineExtractor(std::shared_ptr<const Mesh> mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
 LineExtractor::~LineExtractor() = default;
+
+void LineExtractor::release_mesh_data() {
+    impl_->scene.reset();  // it reads the mesh, not the derived data: either order works
+    impl_->data.release_derived();
+}
 
 std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
     MeshLineData& d = impl_->data;

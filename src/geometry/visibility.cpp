@@ -160,6 +160,13 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
 
 RayScene::~RayScene() = default;
 
+void reserve_embree_padding(std::vector<glm::vec3>& positions) {
+    if (positions.capacity() > positions.size()) return;
+    positions.reserve(positions.size() + 1);
+    positions.emplace_back(0.0f);  // the 4 bytes read past the end are then initialised
+    positions.pop_back();
+}
+
 // ---- IncidentFaces -----------------------------------------------------------------------
 
 IncidentFaces::IncidentFaces(const Mesh& mesh, const std::vector<uint32_t>& vertices) {

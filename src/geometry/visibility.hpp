@@ -50,6 +50,10 @@ struct OcclusionQuery {
     double clearance = 0.0;
 };
 
+// One spare vertex of capacity, written once, so that RayScene can share `positions` with
+// Embree (which reads the last vertex with a 16-byte load) instead of copying them.
+void reserve_embree_padding(std::vector<glm::vec3>& positions);
+
 // Faces incident to a chosen set of vertices (CSR over those vertices only), from one scan of
 // the triangles: what the two-ring test needs around the samples of one view, instead of a
 // mesh-wide vertex → face table (140 MB at 10 M triangles, issue 9's memory budget). Triangles

@@ -6,7 +6,9 @@
 #include <map>
 #include <optional>
 
+#include "geometry/normals.hpp"
 #include "geometry/orientation.hpp"
+#include "geometry/visibility.hpp"
 #include "gpu/framebuffer.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/shader_program.hpp"
@@ -126,15 +128,19 @@ struct Renderer::Impl {
     std::unique_ptr<render::HullPass> hull;
     std::unique_ptr<render::ThreejsOutlinePass> threejs_outline;
     std::unique_ptr<render::ImageLinesPass> image_lines;
-    // Object-space lines: extracted on the CPU (ray-cast visibility), drawn as strokes. The
-    // extractor keeps its own positions, triangles and normals (copied or moved in by
-    // set_mesh), since the caller's mesh need not outlive set_mesh; curvature and the ray
-    // scene come on first use.
+    // The mesh of set_mesh (copied or moved in, since the caller's need not outlive set_mesh),
+    // shared with the line extractor; after the GL upload only positions, triangles and normals
+    // are kept. `mesh` (the GL buffers) is null until the upload.
+    std::shared_ptr<Mesh> cpu_mesh;
+    // Object-space lines: extracted on the CPU (ray-cast visibility), drawn as strokes;
+    // curvature and the ray scene come on first use.
     std::unique_ptr<LineExtractor> line_extractor;
     std::unique_ptr<render::StrokePass> strokes;
 
-    // set_mesh's GPU part: buffers, bounds, closedness; the previous mesh is released first.
-    void upload(const Mesh& m);
+    // set_mesh: the previous mesh is released first, so two are never held at once.
+    void stage(std::shared_ptr<Mesh> m, MeshUse use);
+    // GL buffers of cpu_mesh; its colours, uvs and materials are dropped afterwards.
+    void upload();
 
     // One compiled variant per model and compile-time parameter values (#defines, not
     // uniform branches: llvmpipe executes switched-off branches too). A shadow-casting
@@ -205,29 +211,36 @@ std::string Renderer::gl_renderer() const {
     return impl_->context->renderer();
 }
 
-void Renderer::Impl::upload(const Mesh& m) {
-    if (m.triangles.empty()) throw InputError("mesh has no triangles");
+void Renderer::Impl::stage(std::shared_ptr<Mesh> m, MeshUse use) {
+    if (m->triangles.empty()) throw InputError("mesh has no triangles");
     context->make_current();
-    // The previous mesh's buffers and lines go first, so two meshes are never held at once.
     line_extractor.reset();
     mesh.reset();
+    cpu_mesh.reset();
+    shadow_valid = false;
     // Before the upload: its edge keys (24 bytes a triangle) and the GL buffers are never
     // held at once.
-    closed = geometry::is_closed_outward(m);
-    mesh = std::make_unique<render::GpuMesh>(m);
-    bounds = m.bounds();
-    shadow_valid = false;
+    closed = geometry::is_closed_outward(*m);
+    bounds = m->bounds();
+    geometry::ensure_vertex_normals(*m);  // what the line extractor needs, so it can share
+    geometry::reserve_embree_padding(m->positions);
+    cpu_mesh = std::move(m);
+    line_extractor = std::make_unique<LineExtractor>(std::shared_ptr<const Mesh>(cpu_mesh));
+    if (use == MeshUse::ManyFrames) upload();
 }
 
-void Renderer::set_mesh(const Mesh& mesh) {
-    impl_->upload(mesh);
-    impl_->line_extractor = std::make_unique<LineExtractor>(mesh);
+void Renderer::Impl::upload() {
+    mesh = std::make_unique<render::GpuMesh>(*cpu_mesh);
+    // The GL buffers and textures hold these now; the line extractor never reads them.
+    cpu_mesh->colors = {};
+    cpu_mesh->uvs = {};
+    cpu_mesh->materials = {};
+    cpu_mesh->face_materials = {};
 }
 
-void Renderer::set_mesh(Mesh&& mesh) {
-    impl_->upload(mesh);
-    impl_->line_extractor = std::make_unique<LineExtractor>(std::move(mesh));
-}
+void Renderer::set_mesh(const Mesh& mesh, MeshUse use) { impl_->stage(std::make_shared<Mesh>(mesh), use); }
+
+void Renderer::set_mesh(Mesh&& mesh, MeshUse use) { impl_->stage(std::make_shared<Mesh>(std::move(mesh)), use); }
 
 namespace {
 
@@ -253,7 +266,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
 Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                        const std::vector<LineSettings>& lines, const RenderOptions& options,
                        std::vector<PassTiming>* timings) {
-    if (!impl_->mesh) throw RuntimeError("no mesh to render (set_mesh first)");
+    if (!impl_->cpu_mesh) throw RuntimeError("no mesh to render (set_mesh first)");
     // The image-space line types of the style get GPU passes; object-space ones are extracted
     // on the CPU and drawn as strokes.
     const LineSettings *hull = nullptr, *rim = nullptr, *edges = nullptr, *suggestive = nullptr,
@@ -273,6 +286,25 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
 
     impl_->context->make_current();
     const ShadingModel& model = shading_model(shading.model);
+    // MeshUse::OneFrame: what needs the mesh-wide line data (object-space lines, the kr view's
+    // curvature) first, that data freed before the GL buffers exist.
+    std::optional<LineDrawing> early_drawing;
+    bool early_kr_uploaded = false;
+    if (!impl_->mesh) {
+        std::optional<std::vector<float>> early_kr;
+        if (model.radial_curvature) {
+            PassTimer t(timings, "radial-curvature");
+            early_kr = impl_->line_extractor->radial_curvature(camera);
+        }
+        if (!vector_lines.empty()) {
+            PassTimer t(timings, "vector-lines");
+            early_drawing = impl_->line_extractor->draw(camera, options.width, options.height, vector_lines);
+        }
+        impl_->line_extractor->release_mesh_data();
+        impl_->upload();
+        if (early_kr) impl_->mesh->set_vertex_scalar(*early_kr);
+        early_kr_uploaded = early_kr.has_value();
+    }
     gpu::Framebuffer& fb = impl_->framebuffer_for(options);
     const float aspect = float(options.width) / float(options.height);
 
@@ -300,7 +332,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         }
     }
 
-    if (model.radial_curvature) {
+    if (model.radial_curvature && !early_kr_uploaded) {
         PassTimer t(timings, "radial-curvature");
         impl_->mesh->set_vertex_scalar(impl_->line_extractor->radial_curvature(camera));
     }
@@ -395,7 +427,9 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     }
     if (!vector_lines.empty()) {
         LineDrawing drawing;
-        {
+        if (early_drawing) {
+            drawing = std::move(*early_drawing);
+        } else {
             PassTimer t(timings, "vector-lines");
             drawing = impl_->line_extractor->draw(camera, options.width, options.height, vector_lines);
         }

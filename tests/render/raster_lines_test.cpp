@@ -115,5 +115,39 @@ TEST(RasterLines, ObjectSpaceContourStrokeLiesOnTheOutline) {
     EXPECT_GE(ring_hits, int(0.98f * ring_samples));
 }
 
+// MeshUse::OneFrame extracts object-space lines before the GL upload and frees their data:
+// the same image as ManyFrames, per-vertex colours still shown, and later frames still drawn
+// (with lines and with the kr view, which reads the freed curvature).
+TEST(RasterLines, OneFrameUseGivesTheSameImagesAsManyFrames) {
+    Mesh mesh = two_spheres();
+    mesh.colors.assign(mesh.positions.size(), glm::vec3(1.0f, 0.5f, 0.25f));
+    std::vector<LineSettings> lines = all_raster_lines();
+    for (const char* type : {"contour", "suggestive", "crease"}) lines.push_back({type, {}});
+    RenderOptions o;
+    o.width = o.height = kSize;
+    const Light light = directional_light(glm::vec3(0, 0, 1), glm::vec3(0), glm::vec3(1));
+    const ShadingSelection lambert{}, kr{"kr", {}};
+    Renderer& r = shared_renderer();
+    auto frames = [&](MeshUse use) {
+        r.set_mesh(mesh, use);
+        std::vector<Image> images;
+        images.push_back(r.render(ortho_camera(), light, lambert, lines, o));
+        images.push_back(r.render(ortho_camera(), light, lambert, lines, o));
+        images.push_back(r.render(ortho_camera(), light, kr, o));
+        r.set_mesh(mesh, use);  // kr first: curvature computed before the upload
+        images.push_back(r.render(ortho_camera(), light, kr, o));
+        return images;
+    };
+    const std::vector<Image> many = frames(MeshUse::ManyFrames), one = frames(MeshUse::OneFrame);
+    for (size_t i = 0; i < many.size(); ++i) EXPECT_EQ(one[i].rgba, many[i].rgba) << "frame " << i;
+    EXPECT_EQ(many[0].rgba, many[1].rgba);
+    EXPECT_EQ(many[2].rgba, many[3].rgba);
+    // The colours reached the image: orange-ish lambert at the front sphere's centre.
+    const glm::vec2 c = project(ortho_camera(), {-0.3f, -0.1f, 0.6f});
+    const uint8_t* p = one[0].pixel(int(c.x), int(c.y));
+    EXPECT_GT(p[0], 200);
+    EXPECT_NEAR(p[1], p[0] / 2, 8);
+}
+
 }  // namespace
 }  // namespace inkshade::test

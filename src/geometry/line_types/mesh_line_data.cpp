@@ -6,6 +6,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "geometry/normals.hpp"
+#include "geometry/visibility.hpp"
 
 namespace inkshade::geometry {
 
@@ -19,33 +20,45 @@ auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, 
     return result;
 }
 
-// One spare vertex of capacity, written once: RayScene then shares the array with Embree,
-// whose 16-byte load of the last vertex reads 4 bytes past the end (a 60 MB copy saved at
-// 10 M triangles).
-void pad_for_embree(std::vector<glm::vec3>& positions) {
-    positions.reserve(positions.size() + 1);
-    positions.emplace_back(0.0f);
-    positions.pop_back();
+// Positions (padded for Embree), triangles and unit normals of `mesh`, nothing else.
+std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, std::vector<glm::uvec3> triangles,
+                                      std::vector<glm::vec3> normals) {
+    auto m = std::make_shared<Mesh>();
+    m->positions = std::move(positions);
+    reserve_embree_padding(m->positions);
+    m->triangles = std::move(triangles);
+    m->normals = std::move(normals);
+    ensure_vertex_normals(*m);
+    return m;
+}
+
+std::vector<glm::vec3> padded_copy(const std::vector<glm::vec3>& positions) {
+    std::vector<glm::vec3> copy;
+    copy.reserve(positions.size() + 1);  // so that reserve_embree_padding does not reallocate
+    copy = positions;
+    return copy;
 }
 
 }  // namespace
 
-MeshLineData::MeshLineData(const Mesh& mesh) {
-    mesh_.positions.reserve(mesh.positions.size() + 1);
-    mesh_.positions = mesh.positions;
-    pad_for_embree(mesh_.positions);
-    mesh_.triangles = mesh.triangles;
-    mesh_.normals = mesh.normals;
-    ensure_vertex_normals(mesh_);
+MeshLineData::MeshLineData(const Mesh& mesh)
+    : mesh_(line_mesh(padded_copy(mesh.positions), mesh.triangles, mesh.normals)) {}
+
+MeshLineData::MeshLineData(Mesh&& mesh)
+    : mesh_(line_mesh(std::move(mesh.positions), std::move(mesh.triangles), std::move(mesh.normals))) {
+    mesh = Mesh();  // colours, uvs and materials are not needed here
 }
 
-MeshLineData::MeshLineData(Mesh&& mesh) {
-    mesh_.positions = std::move(mesh.positions);
-    pad_for_embree(mesh_.positions);
-    mesh_.triangles = std::move(mesh.triangles);
-    mesh_.normals = std::move(mesh.normals);
-    mesh = Mesh();  // colours, uvs and materials are not needed here
-    ensure_vertex_normals(mesh_);
+MeshLineData::MeshLineData(std::shared_ptr<const Mesh> mesh) {
+    if (normals_are_sane(*mesh)) mesh_ = std::move(mesh);
+    else mesh_ = line_mesh(padded_copy(mesh->positions), mesh->triangles, mesh->normals);
+}
+
+void MeshLineData::release_derived() {
+    adjacency_.reset();
+    curvature_.reset();
+    creases_.reset();
+    ridges_.reset();
 }
 
 void MeshLineData::prepare(MeshLineNeeds needs, const std::function<void()>& then) {
@@ -69,12 +82,12 @@ const Curvature& MeshLineData::curvature() { return curvature(setup_timings_); }
 const CreaseLines& MeshLineData::creases(float angle_degrees) { return creases(angle_degrees, setup_timings_); }
 
 const EdgeAdjacency& MeshLineData::adjacency(TimingLog& log) {
-    if (!adjacency_) adjacency_ = timed(log, "adjacency", [&] { return build_edge_adjacency(mesh_); });
+    if (!adjacency_) adjacency_ = timed(log, "adjacency", [&] { return build_edge_adjacency(*mesh_); });
     return *adjacency_;
 }
 
 const Curvature& MeshLineData::curvature(TimingLog& log) {
-    if (!curvature_) curvature_ = timed(log, "curvature", [&] { return compute_curvature(mesh_, mesh_.normals); });
+    if (!curvature_) curvature_ = timed(log, "curvature", [&] { return compute_curvature(*mesh_, mesh_->normals); });
     return *curvature_;
 }
 
@@ -82,7 +95,7 @@ const CreaseLines& MeshLineData::creases(float angle_degrees, TimingLog& log) {
     if (!creases_ || crease_angle_ != angle_degrees) {
         const EdgeAdjacency& adj = adjacency(log);
         creases_ = timed(log, "creases",
-                         [&] { return extract_creases(mesh_, adj, CreaseOptions{.angle_degrees = angle_degrees}); });
+                         [&] { return extract_creases(*mesh_, adj, CreaseOptions{.angle_degrees = angle_degrees}); });
         crease_angle_ = angle_degrees;
         const size_t bytes = adj.edges.size() * (sizeof(glm::uvec2) * 2 + 1) + adj.more_faces.size() * sizeof(glm::uvec2);
         if (bytes > kKeepAdjacencyBytes) adjacency_.reset();
@@ -98,7 +111,7 @@ const RidgeLines& MeshLineData::ridges(const RidgeOptions& options) {
     if (!ridges_ || ridge_options_.threshold != options.threshold ||
         ridge_options_.feature_size != options.feature_size) {
         const Curvature& k = curvature();
-        ridges_ = timed(setup_timings_, "ridges", [&] { return extract_ridges(mesh_, k, options); });
+        ridges_ = timed(setup_timings_, "ridges", [&] { return extract_ridges(*mesh_, k, options); });
         ridge_options_ = options;
     }
     return *ridges_;

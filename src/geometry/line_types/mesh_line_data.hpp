@@ -32,10 +32,16 @@ public:
     explicit MeshLineData(const Mesh& mesh);
     // The same, taking positions, triangles and normals from `mesh` (the rest is dropped).
     explicit MeshLineData(Mesh&& mesh);
+    // Shares `mesh`, whose normals must already be unit (ensure_vertex_normals; when they are
+    // not even sane, a copy is made as above). Only positions, triangles and normals are read.
+    explicit MeshLineData(std::shared_ptr<const Mesh> mesh);
 
-    // Positions, triangles and unit normals (no colours or uvs).
-    const Mesh& mesh() const { return mesh_; }
-    const std::vector<glm::vec3>& normals() const { return mesh_.normals; }
+    // Positions, triangles and unit normals (colours or uvs are there when shared, unread).
+    const Mesh& mesh() const { return *mesh_; }
+    const std::vector<glm::vec3>& normals() const { return mesh_->normals; }
+
+    // Drops everything derived from the mesh (recomputed when next needed).
+    void release_derived();
 
     // Adjacency past this size (about 2.6 M triangles) is dropped after crease classification.
     static constexpr size_t kKeepAdjacencyBytes = size_t(64) << 20;
@@ -68,7 +74,7 @@ private:
     const Curvature& curvature(TimingLog& log);
     const CreaseLines& creases(float angle_degrees, TimingLog& log);
 
-    Mesh mesh_;
+    std::shared_ptr<const Mesh> mesh_;
     std::optional<EdgeAdjacency> adjacency_;
     std::optional<Curvature> curvature_;
     std::optional<CreaseLines> creases_;
