@@ -416,7 +416,8 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     const auto draw_image_lines = [&] {
         PassTimer t(timings, "image-lines");
         if (!impl_->image_lines) impl_->image_lines = std::make_unique<render::ImageLinesPass>();
-        impl_->image_lines->draw(*impl_->gbuffer, camera, options.width, options.height, edges, suggestive);
+        impl_->image_lines->draw(*impl_->gbuffer, camera, impl_->bounds, options.width, options.height, edges,
+                                 suggestive);
     };
     // Without object-space strokes to draw over them, the image-space lines go onto the resolved
     // image (bind_resolved): the same bytes, one blend a pixel instead of one a sample.

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/lines/image_lines_pass.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {
@@ -166,6 +167,26 @@ TEST(Edges, TouchingObjectsSeparatedByObjectIds) {
         EXPECT_GE(seam_line_pixels(*m, true), 30);   // all 31 samples along the seam
         EXPECT_EQ(seam_line_pixels(*m, false), 0);  // depth and normals see nothing there
     }
+}
+
+// The image-lines pass shades only the projected bounding box grown by the detectors' reach:
+// the rectangle is that box in GL window pixels, the whole image when the box reaches behind
+// the eye, and empty when it lies outside the view.
+TEST(Edges, ImageLinesRegionIsTheProjectedBoxPlusTheMargin) {
+    const Camera cam = ortho_camera();  // 2.5 units high: 102.4 px a unit at 256 px
+    const BoundingBox box{{-0.5f, -0.25f, -1.0f}, {0.5f, 0.75f, 1.0f}};
+    const glm::ivec4 r = render::ImageLinesPass::image_lines_region(box, cam, kSize, kSize, 3);
+    // x in [128 - 51.2, 128 + 51.2] = [76.8, 179.2] px, y (GL, up) in [128 - 25.6, 128 + 76.8];
+    // floor/ceil, then 3 px margin and 1 px for rounding on each side.
+    const int x0 = 76 - 4, x1 = 180 + 4, y0 = 102 - 4, y1 = 205 + 4;
+    EXPECT_EQ(r, glm::ivec4(x0, y0, x1 - x0, y1 - y0));
+    Camera inside = cam;
+    inside.orthographic = false;
+    inside.eye = {0.0f, 0.0f, 0.5f};  // within the box's z range: a corner behind the eye
+    EXPECT_EQ(render::ImageLinesPass::image_lines_region(box, inside, kSize, kSize, 3), glm::ivec4(0, 0, kSize, kSize));
+    const BoundingBox away{{10.0f, 10.0f, -1.0f}, {11.0f, 11.0f, 1.0f}};
+    const glm::ivec4 none = render::ImageLinesPass::image_lines_region(away, cam, kSize, kSize, 3);
+    EXPECT_TRUE(none.z == 0 || none.w == 0);
 }
 
 }  // namespace

@@ -17,9 +17,41 @@ ImageLinesPass::~ImageLinesPass() { glDeleteVertexArrays(1, &vao_); }
 
 bool ImageLinesPass::needs_face_normals(const LineSettings* edges) { return edges && on(*edges, "normal"); }
 
-void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, int width, int height,
-                          const LineSettings* edges, const LineSettings* suggestive) {
+glm::ivec4 ImageLinesPass::image_lines_region(const BoundingBox& bounds, const Camera& camera, int width,
+                                              int height, int margin) {
+    const glm::ivec4 whole(0, 0, width, height);
+    const glm::mat4 clip_from_world = camera.projection(float(width) / float(height)) * camera.view();
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                               (i & 4) ? bounds.max.z : bounds.min.z);
+        const glm::vec4 c = clip_from_world * glm::vec4(corner, 1.0f);
+        // w > 0 at every corner: w is affine, so the whole box is in front of the eye and its
+        // projection is the hull of the corners' projections.
+        if (!(c.w > 1e-6f)) return whole;
+        const glm::vec2 ndc = glm::vec2(c) / c.w;
+        lo = glm::min(lo, ndc), hi = glm::max(hi, ndc);
+    }
+    if (!std::isfinite(lo.x) || !std::isfinite(lo.y) || !std::isfinite(hi.x) || !std::isfinite(hi.y)) return whole;
+    // NDC to window pixels (glViewport), grown by the margin and a pixel for rounding.
+    const auto to_px = [](float ndc, int size) { return double(ndc + 1.0f) * 0.5 * size; };
+    const double x0 = std::floor(to_px(lo.x, width)) - margin - 1, x1 = std::ceil(to_px(hi.x, width)) + margin + 1;
+    const double y0 = std::floor(to_px(lo.y, height)) - margin - 1, y1 = std::ceil(to_px(hi.y, height)) + margin + 1;
+    const int ax = int(std::clamp(x0, 0.0, double(width))), bx = int(std::clamp(x1, 0.0, double(width)));
+    const int ay = int(std::clamp(y0, 0.0, double(height))), by = int(std::clamp(y1, 0.0, double(height)));
+    return {ax, ay, bx - ax, by - ay};
+}
+
+void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, const BoundingBox& bounds, int width,
+                          int height, const LineSettings* edges, const LineSettings* suggestive) {
     if (!edges && !suggestive) return;
+    // Pixels farther than this from the object's footprint see only background in all their
+    // taps: suggestive-image draws on the surface only; edges reach one spacing for ids and
+    // depth, two with Canny's non-maximum suppression.
+    const int edge_spacing = edges ? std::max(1, int(std::lround(0.5f * stroke_of(*edges).width))) : 0;
+    const int margin = std::max(2, 2 * edge_spacing + 2);
+    const glm::ivec4 region = image_lines_region(bounds, camera, width, height, margin);
+    if (region.z <= 0 || region.w <= 0) return;
     std::string defines = "#define EDGES " + std::to_string(edges ? 1 : 0) + "\n";
     defines += "#define SUGGESTIVE " + std::to_string(suggestive ? 1 : 0) + "\n";
     if (edges) {
@@ -41,7 +73,7 @@ void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, int widt
     if (edges) {
         const Stroke s = stroke_of(*edges);
         p.set("u_edges_color", glm::vec4(s.color, s.opacity));
-        p.set("u_edges_spacing", std::max(1, int(std::lround(0.5f * s.width))));
+        p.set("u_edges_spacing", edge_spacing);
         p.set("u_edges_depth_threshold", line_param(*edges, "depth-threshold").at(0));
         p.set("u_edges_normal_threshold", line_param(*edges, "normal-threshold").at(0));
     }
@@ -58,8 +90,11 @@ void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, int widt
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(region.x, region.y, region.z, region.w);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
 }
 
