@@ -40,8 +40,9 @@ struct LineTiming {
 
 // Keeps what depends on the mesh only (normals, adjacency, curvature, the ray-casting scene),
 // so new views of one mesh cost only the per-view work (an adjacency over 64 MiB, about 2.6 M
-// triangles, is dropped once creases are classified: only a new crease angle rebuilds it). Pipeline, visibility method and its
-// tolerance: docs/lines.md. One extractor is not safe to use from two threads at once.
+// triangles, is dropped once creases are classified: only a new crease angle rebuilds it).
+// Pipeline, visibility method and its tolerance: docs/lines.md. One extractor is not safe to
+// use from two threads at once.
 class LineExtractor {
 public:
     // Copies positions, triangles and normals (the mesh's when sane, else angle-weighted), so

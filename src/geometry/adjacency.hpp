@@ -30,6 +30,10 @@ struct EdgeAdjacency {
     uint32_t face(size_t e, uint32_t k) const;  // k < face_count(e)
     bool is_border(size_t e) const { return (flags[e] & kEdgeBorder) != 0; }
     bool is_non_manifold(size_t e) const { return (flags[e] & kEdgeNonManifold) != 0; }
+    // Bytes of the four arrays' elements.
+    size_t memory_bytes() const {
+        return edges.size() * (sizeof(glm::uvec2) * 2 + sizeof(uint8_t)) + more_faces.size() * sizeof(glm::uvec2);
+    }
 };
 
 // Builds the edge list in O(V + F): a counting sort by the lower vertex, then a sort of each

@@ -161,8 +161,7 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
 RayScene::~RayScene() = default;
 
 void reserve_embree_padding(std::vector<glm::vec3>& positions) {
-    if (positions.capacity() > positions.size()) return;
-    positions.reserve(positions.size() + 1);
+    if (positions.capacity() == positions.size()) positions.reserve(positions.size() + 1);
     positions.emplace_back(0.0f);  // the 4 bytes read past the end are then initialised
     positions.pop_back();
 }
@@ -212,10 +211,10 @@ std::pair<const uint32_t*, const uint32_t*> IncidentFaces::faces(uint32_t v) con
 // ---- RayScene queries ----------------------------------------------------------------------
 
 bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices,
-                        int near_count, int rings, double clearance) const {
+                        int near_count, int rings, double clearance, const IncidentFaces* incident) const {
     const OcclusionQuery query{p, near_vertices, near_count, rings, clearance};
     uint8_t hidden = 0;
-    occluded(view, &query, 1, &hidden);
+    occluded(view, &query, 1, &hidden, incident);
     return hidden != 0;
 }
 
@@ -356,10 +355,8 @@ SampleRule rule_of(const Mesh& mesh, const LineSegment& s, const VisibilityOptio
 Sight sight_of(const RayScene& scene, const ImageProjection& view, const glm::vec3& p, const NearSet& near,
                const SampleRule& rule, const IncidentFaces& incident) {
     if (view.clipped(p)) return Sight::Clipped;
-    const OcclusionQuery query{p, near.v, near.n, rule.rings, rule.clearance};
-    uint8_t hidden = 0;
-    scene.occluded(view, &query, 1, &hidden, &incident);
-    return hidden ? Sight::Hidden : Sight::Visible;
+    return scene.occluded(view, p, near.v, near.n, rule.rings, rule.clearance, &incident) ? Sight::Hidden
+                                                                                         : Sight::Visible;
 }
 
 // Sight of every segment end, each shared node tested once: neighbouring segments of a chain

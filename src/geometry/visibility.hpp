@@ -50,8 +50,8 @@ struct OcclusionQuery {
     double clearance = 0.0;
 };
 
-// One spare vertex of capacity, written once, so that RayScene can share `positions` with
-// Embree (which reads the last vertex with a 16-byte load) instead of copying them.
+// One spare vertex of capacity, written (zero) once, so that RayScene can share `positions`
+// with Embree (which reads the last vertex with a 16-byte load) instead of copying them.
 void reserve_embree_padding(std::vector<glm::vec3>& positions);
 
 // Faces incident to a chosen set of vertices (CSR over those vertices only), from one scan of
@@ -107,9 +107,9 @@ public:
     // occluders catches that; excluding the point's neighbourhood does, and still lets thin
     // features (the two sides of a sheet) hide each other's lines away from their rim.
     // `clearance` (world units) raises the tolerance for this test: hits closer than that to p
-    // along the ray do not count.
+    // along the ray do not count. `incident`: as for the batch call below.
     bool occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices, int near_count,
-                  int rings = 1, double clearance = 0.0) const;
+                  int rings = 1, double clearance = 0.0, const IncidentFaces* incident = nullptr) const;
     // The same for `count` queries at once, as one ray stream (rtcOccluded1M); hidden[i] = 1
     // where query i is occluded. Two-ring queries look up the faces of their near vertices in
     // `incident`, which must cover them; without it, one is built for these queries (a scan

@@ -289,9 +289,8 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
     // MeshUse::OneFrame: what needs the mesh-wide line data (object-space lines, the kr view's
     // curvature) first, that data freed before the GL buffers exist.
     std::optional<LineDrawing> early_drawing;
-    bool early_kr_uploaded = false;
+    std::optional<std::vector<float>> early_kr;
     if (!impl_->mesh) {
-        std::optional<std::vector<float>> early_kr;
         if (model.radial_curvature) {
             PassTimer t(timings, "radial-curvature");
             early_kr = impl_->line_extractor->radial_curvature(camera);
@@ -303,7 +302,6 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         impl_->line_extractor->release_mesh_data();
         impl_->upload();
         if (early_kr) impl_->mesh->set_vertex_scalar(*early_kr);
-        early_kr_uploaded = early_kr.has_value();
     }
     gpu::Framebuffer& fb = impl_->framebuffer_for(options);
     const float aspect = float(options.width) / float(options.height);
@@ -332,7 +330,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         }
     }
 
-    if (model.radial_curvature && !early_kr_uploaded) {
+    if (model.radial_curvature && !early_kr) {
         PassTimer t(timings, "radial-curvature");
         impl_->mesh->set_vertex_scalar(impl_->line_extractor->radial_curvature(camera));
     }

@@ -97,8 +97,7 @@ const CreaseLines& MeshLineData::creases(float angle_degrees, TimingLog& log) {
         creases_ = timed(log, "creases",
                          [&] { return extract_creases(*mesh_, adj, CreaseOptions{.angle_degrees = angle_degrees}); });
         crease_angle_ = angle_degrees;
-        const size_t bytes = adj.edges.size() * (sizeof(glm::uvec2) * 2 + 1) + adj.more_faces.size() * sizeof(glm::uvec2);
-        if (bytes > kKeepAdjacencyBytes) adjacency_.reset();
+        if (adj.memory_bytes() > kKeepAdjacencyBytes) adjacency_.reset();
     }
     return *creases_;
 }
