@@ -1,6 +1,7 @@
 // `inkshade render`, `info`, `styles`: exit codes, one-line errors, outputs.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "cli/run_cli.hpp"
@@ -119,6 +120,13 @@ TEST(RenderCommand, TimingPrintsMedianPerPassAndTotal) {
     for (const char* pass : {"shading", "resolve", "readback", "total"})
         EXPECT_NE(r.out.find(std::string(pass) + " "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("median"), std::string::npos);
+    // The total line: wall median, then the GPU time (timestamp queries) of the same frames.
+    const size_t total = r.out.find("  total ");
+    ASSERT_NE(total, std::string::npos);
+    double wall = -1, gpu = -1;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + total, "  total median %lf ms gpu %lf ms", &wall, &gpu), 2) << r.out;
+    EXPECT_GT(wall, 0.0);
+    EXPECT_GT(gpu, 0.0);
 }
 
 TEST(RenderCommand, NoOpenGlIsExit1WithInstallHint) {
