@@ -7,85 +7,83 @@
 #include <algorithm>
 #include <optional>
 #include <tuple>
+#include <vector>
 
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
-#include "inkshade/renderer.hpp"
-#include "inkshade/style.hpp"
+#include "inkshade/scene.hpp"
 
 namespace py = pybind11;
 using namespace inkshade;
 
 namespace {
 
-using Vec3 = std::optional<std::array<float, 3>>;
+// The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
+// with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
+const std::vector<std::string> kSceneKeywords = {
+    "size", "azimuth", "elevation", "distance", "eye", "target", "up", "fov", "ortho", "ortho_height", "near",
+    "far", "light_pos", "light_target", "light_type", "light_color", "ambient", "base_color", "srgb"};
 
-std::optional<glm::vec3> to_vec3(const Vec3& v) {
-    if (!v) return std::nullopt;
-    return glm::vec3((*v)[0], (*v)[1], (*v)[2]);
+// A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
+// sequence of 3 (or, for 4-component colours, 4) numbers.
+glm::vec4 to_color(const std::string& key, const py::handle& value, bool alpha) {
+    if (py::isinstance<py::str>(value)) return parse_color(key, value.cast<std::string>());
+    const auto v = value.cast<std::vector<float>>();
+    if (v.size() != 3 && !(alpha && v.size() == 4))
+        throw InputError(key + ": expected " + (alpha ? "3 or 4" : "3") + " components, got " + std::to_string(v.size()));
+    return glm::vec4(v[0], v[1], v[2], v.size() == 4 ? v[3] : 1.0f);
 }
 
-// The keyword arguments every call that looks at the mesh takes, as the CLI's options.
-struct View {
-    int width = 512, height = 512;
-    CameraOptions camera;
-    std::optional<glm::vec3> light_pos;
-    bool point_light = false;
+glm::vec3 to_vec3(const std::string& key, const py::handle& value) {
+    const auto v = value.cast<std::vector<float>>();
+    if (v.size() != 3) throw InputError(key + ": expected x, y, z");
+    return {v[0], v[1], v[2]};
+}
 
-    // Keyword arguments: size=(w, h), azimuth, elevation, distance, eye, target, up, fov, ortho,
-    // light_pos, light_type; any other keyword is an error (a typo must not pass silently).
-    explicit View(const py::kwargs& kwargs) {
-        static const std::vector<std::string> known = {"size", "azimuth", "elevation", "distance", "eye", "target",
-                                                       "up", "fov", "ortho", "light_pos", "light_type"};
-        for (const auto& item : kwargs) {
-            const std::string key = py::str(item.first);
-            if (std::find(known.begin(), known.end(), key) == known.end())
-                throw InputError("unknown keyword '" + key +
-                                 "' (expected size, azimuth, elevation, distance, eye, target, up, fov, ortho, "
-                                 "light_pos, light_type)");
+// The request of one call: the look (style, overrides) and the keywords; make_scene checks it.
+SceneRequest request_of(const std::string& style, const std::vector<std::string>& set, const py::kwargs& kwargs,
+                        SceneOutputs outputs) {
+    SceneRequest r;
+    r.names = OptionNames::Keywords;
+    r.outputs = outputs;
+    r.style = style;
+    r.sets = set;
+    r.size = {512, 512};
+    for (const auto& item : kwargs) {
+        const std::string key = py::str(item.first);
+        if (std::find(kSceneKeywords.begin(), kSceneKeywords.end(), key) == kSceneKeywords.end()) {
+            std::string names;
+            for (const auto& k : kSceneKeywords) names += (names.empty() ? "" : ", ") + k;
+            throw InputError("unknown keyword '" + key + "' (expected " + names + ")");
         }
-        auto get = [&](const char* key, auto fallback) {
-            using T = decltype(fallback);
-            return kwargs.contains(key) && !kwargs[key].is_none() ? kwargs[key].template cast<T>() : fallback;
-        };
-        std::tie(width, height) = get("size", std::pair<int, int>(512, 512));
-        if (width < 1 || height < 1 || width > 16384 || height > 16384)
-            throw InputError("size: expected 1..16384 pixels per side");
-        camera.azimuth_degrees = get("azimuth", std::optional<float>());
-        camera.elevation_degrees = get("elevation", std::optional<float>());
-        camera.distance = get("distance", std::optional<float>());
-        camera.eye = to_vec3(get("eye", Vec3()));
-        camera.target = to_vec3(get("target", Vec3()));
-        camera.up = to_vec3(get("up", Vec3()));
-        camera.fov_degrees = get("fov", 30.0f);
-        camera.orthographic = get("ortho", false);
-        light_pos = to_vec3(get("light_pos", Vec3()));
-        const std::string light_type = get("light_type", std::string("directional"));
-        if (light_type != "directional" && light_type != "point")
-            throw InputError("light_type: expected directional or point, got '" + light_type + "'");
-        point_light = light_type == "point";
+        const py::handle value = item.second;
+        if (value.is_none()) continue;
+        CameraOptions& c = r.camera;
+        if (key == "size") {
+            const auto [w, h] = value.cast<std::pair<int, int>>();
+            r.size = {w, h};
+        } else if (key == "azimuth") c.azimuth_degrees = value.cast<float>();
+        else if (key == "elevation") c.elevation_degrees = value.cast<float>();
+        else if (key == "distance") c.distance = value.cast<float>();
+        else if (key == "eye") c.eye = to_vec3(key, value);
+        else if (key == "target") c.target = to_vec3(key, value);
+        else if (key == "up") c.up = to_vec3(key, value);
+        else if (key == "fov") c.fov_degrees = value.cast<float>();
+        else if (key == "ortho") c.orthographic = value.cast<bool>();
+        else if (key == "ortho_height") c.ortho_height = value.cast<float>();
+        else if (key == "near") c.near_plane = value.cast<float>();
+        else if (key == "far") c.far_plane = value.cast<float>();
+        else if (key == "light_pos") r.light_position = to_vec3(key, value);
+        else if (key == "light_target") r.light_target = to_vec3(key, value);
+        else if (key == "light_type") r.light_type = parse_light_type(key, value.cast<std::string>());
+        else if (key == "light_color") r.light_color = glm::vec3(to_color(key, value, false));
+        else if (key == "ambient") r.ambient = glm::vec3(to_color(key, value, false));
+        else if (key == "base_color") r.base_color = glm::vec3(to_color(key, value, false));
+        else if (key == "srgb") r.srgb = value.cast<bool>();
     }
-    Camera framed(const Mesh& mesh) const { return frame_camera(mesh.bounds(), camera, float(width) / float(height)); }
-    Light light(const Mesh& mesh, const Camera& cam, const Style& style) const {
-        Light l = default_light(mesh.bounds(), cam);
-        if (point_light) l.type = LightType::Point;
-        if (light_pos) l.position = *light_pos;
-        apply_style_light(style, l);
-        return l;
-    }
-};
-
-Style resolved_style(const std::string& name, const std::vector<std::string>& sets,
-                     const std::optional<std::vector<std::string>>& lines) {
-    Style style = load_style(name);
-    if (lines) {
-        style.lines.clear();
-        for (const auto& type : *lines) style.lines.push_back(LineSettings{.type = type});
-    }
-    for (const auto& s : sets) apply_override(style, s);
-    return style;
+    return r;
 }
 
 py::array_t<uint8_t> to_array(Image&& image) {
@@ -127,26 +125,21 @@ public:
         renderer_.set_mesh(mesh_);
         extractor_ = std::make_unique<LineExtractor>(mesh_);
     }
-    py::array_t<uint8_t> render(const Style& style, const View& view, int samples,
-                                std::optional<std::array<float, 4>> background) {
+    py::array_t<uint8_t> render(const Scene& scene) {
         need_mesh();
-        if (samples < 1 || samples > 16) throw InputError("samples: expected 1..16");
-        RenderOptions options{.width = view.width, .height = view.height, .samples = samples,
-                              .background = style.background};
-        if (background) options.background = glm::vec4((*background)[0], (*background)[1], (*background)[2], (*background)[3]);
-        const Camera camera = view.framed(mesh_);
-        const Light light = view.light(mesh_, camera, style);
+        const Camera camera = scene.frame(mesh_.bounds());
+        const Light light = scene.light(mesh_.bounds(), camera);
         Image image;
         {
             py::gil_scoped_release release;
-            image = renderer_.render(camera, light, style.shading, style.lines, options);
+            image = render_scene(renderer_, scene, camera, light);
         }
         return to_array(std::move(image));
     }
-    LineDrawing lines(const Style& style, const View& view) {
+    LineDrawing lines(const Scene& scene) {
         need_mesh();
         py::gil_scoped_release release;
-        return extractor_->draw(view.framed(mesh_), view.width, view.height, style.lines);
+        return draw_scene_lines(*extractor_, scene, scene.frame(mesh_.bounds()));
     }
     std::string gl_renderer() const { return renderer_.gl_renderer(); }
 
@@ -158,6 +151,15 @@ private:
     Mesh mesh_;
     std::unique_ptr<LineExtractor> extractor_;
 };
+
+// The scene of lines() and svg(): the object-space types given, else the style's.
+Scene line_scene(std::optional<std::vector<std::string>> types, const std::string& style,
+                 const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
+    SceneRequest r = request_of(style, set, kwargs, {.image = false, .line_drawing = true});
+    r.vector_lines = std::move(types);
+    r.hidden = hidden;
+    return make_scene(r);
+}
 
 }  // namespace
 
@@ -265,27 +267,33 @@ PYBIND11_MODULE(inkshade, m) {
         .def(
             "render",
             [](PyRenderer& r, const std::string& style, const std::vector<std::string>& set, int samples,
-               std::optional<std::array<float, 4>> background, const py::kwargs& view) {
-                return r.render(resolved_style(style, set, std::nullopt), View(view), samples,
-                                background);
+               const py::object& background, const py::kwargs& kwargs) {
+                SceneRequest request = request_of(style, set, kwargs, {.image = true, .line_drawing = false});
+                request.samples = samples;
+                if (!background.is_none()) request.background = to_color("background", background, true);
+                return r.render(make_scene(request));
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(),
-            "RGBA uint8 array (height, width, 4), top row first, as `inkshade render` writes it.")
+            "RGBA uint8 array (height, width, 4), top row first: the PNG `inkshade render` writes for the same "
+            "options.")
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
-               const std::vector<std::string>& set, const py::kwargs& view) {
-                return to_python(r.lines(resolved_style(style, set, types), View(view)));
+               const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
+                return to_python(r.lines(line_scene(std::move(types), style, set, hidden, kwargs)));
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
-            "Object-space polylines: a list of {type, points (n,2) pixels, depth, strength, closed, hidden}.")
+            py::arg("hidden") = false,
+            "Object-space polylines, as `inkshade lines` draws them: a list of {type, points (n,2) pixels, depth, "
+            "strength, closed, hidden}.")
         .def(
             "svg",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
-               const std::vector<std::string>& set, const py::kwargs& view) {
-                const Style s = resolved_style(style, set, types);
-                return format_svg(r.lines(s, View(view)), s.background);
+               const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
+                const Scene scene = line_scene(std::move(types), style, set, hidden, kwargs);
+                return format_svg(r.lines(scene), scene.style.background);
             },
-            py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{}, "The SVG text `inkshade lines` writes.");
+            py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
+            py::arg("hidden") = false, "The SVG text `inkshade lines` writes.");
 }

@@ -9,8 +9,7 @@
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
-#include "inkshade/renderer.hpp"
-#include "inkshade/style.hpp"
+#include "inkshade/scene.hpp"
 
 namespace inkshade::cli {
 
@@ -30,33 +29,34 @@ Command add_demo_command(CLI::App& app) {
         std::filesystem::create_directories(args->out, ec);
         if (!std::filesystem::is_directory(args->out))
             throw InputError(args->out + ": cannot create output folder");
-        const Mesh mesh = load_mesh(args->model);
-        RenderOptions options;
-        options.width = options.height = args->size;
-        const Camera camera = frame_camera(mesh.bounds(), {}, 1.0f);
+        SceneRequest request;
+        request.model = args->model;
+        request.size = {args->size, args->size};
+        const Mesh mesh = load_mesh(request.model);
+        const BoundingBox box = mesh.bounds();
         Renderer renderer;
         renderer.set_mesh(mesh);
         std::vector<LabelledImage> tiles, debug_tiles;
         for (const std::string& name : builtin_style_names()) {
-            const Style style = load_style(name);
-            Light light = default_light(mesh.bounds(), camera);
-            apply_style_light(style, light);
-            options.background = style.background;
-            Image image = renderer.render(camera, light, style.shading, style.lines, options);
+            request.style = name;
+            const Scene scene = make_scene(request);
+            const Camera camera = scene.frame(box);
+            Image image = render_scene(renderer, scene, camera, scene.light(box, camera));
             const std::string path = (std::filesystem::path(args->out) / (name + ".png")).string();
             write_png(path, image);
             std::printf("  %s\n", path.c_str());
-            const bool debug = shading_model(style.shading.model).debug_view;
+            const bool debug = shading_model(scene.style.shading.model).debug_view;
             (debug ? debug_tiles : tiles).push_back({debug ? name + " (debug)" : name, std::move(image)});
         }
         for (auto& t : debug_tiles) tiles.push_back(std::move(t));
-        // The vector line drawing of the same view (what `inkshade lines` writes).
+        // The vector line drawing of the same view: what `inkshade lines MODEL` writes.
         {
+            request.style.clear();
+            request.outputs = {.image = false, .line_drawing = true};
+            const Scene scene = make_scene(request);
             LineExtractor extractor(mesh);
-            std::vector<LineSettings> vector_lines;
-            for (const char* type : {"contour", "suggestive", "crease", "border"}) vector_lines.push_back({type, {}});
             const std::string svg = (std::filesystem::path(args->out) / "lines.svg").string();
-            write_svg(svg, extractor.draw(camera, args->size, args->size, vector_lines), glm::vec4(1.0f));
+            write_svg(svg, draw_scene_lines(extractor, scene, scene.frame(box)), scene.style.background);
             std::printf("  %s\n", svg.c_str());
         }
         const std::string sheet = (std::filesystem::path(args->out) / "contact_sheet.png").string();

@@ -8,8 +8,8 @@
 #include "commands.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "inkshade/scene.hpp"
 #include "output_path.hpp"
-#include "scene_file.hpp"
 #include "scene_options.hpp"
 #include "timing_report.hpp"
 
@@ -36,26 +36,24 @@ struct RenderArgs {
 
 int run_render(RenderArgs& args, const CLI::App& cmd) {
     check_output_path("-o", args.output);
-    if (!args.scene_file.empty()) apply_scene_file(args.scene_file, cmd, args.scene);
-    if (args.scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
-    const Style style = args.scene.resolved_style();
-    const RenderOptions options = args.scene.render_options(style);
-    const ShadingSelection& shading = style.shading;
+    const Scene scene = make_scene(args.scene.to_request(cmd, args.scene_file));
+    if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
+    const RenderOptions& options = scene.options;
     const auto load_start = std::chrono::steady_clock::now();
-    Mesh mesh = load_mesh(args.scene.model);
+    Mesh mesh = load_mesh(scene.model);
     print_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();
-    const Camera camera = args.scene.camera(box, float(options.width) / float(options.height));
-    const Light light = args.scene.light(box, camera, style);
+    const Camera camera = scene.frame(box);
+    const Light light = scene.light(box, camera);
 
     const size_t triangles = mesh.triangle_count();
     Renderer renderer;
     // The renderer keeps what lines need (no second copy). One image: object-space lines are
     // extracted before the GL upload and their data freed first (MeshUse::OneFrame).
     renderer.set_mesh(std::move(mesh), args.timing > 0 ? MeshUse::ManyFrames : MeshUse::OneFrame);
-    Image image = renderer.render(camera, light, shading, style.lines, options);
+    Image image = render_scene(renderer, scene, camera, light);
     if (args.timing > 0) {
         // Wall time (each pass finished before and after) and GPU time (timestamp queries). On a
         // GPU the second leaves out the driver's CPU work; llvmpipe stamps some passes before
@@ -66,7 +64,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
         for (int i = 0; i < args.timing; ++i) {
             std::vector<PassTiming> timings;
             auto start = std::chrono::steady_clock::now();
-            image = renderer.render(camera, light, shading, style.lines, options, &timings);
+            image = render_scene(renderer, scene, camera, light, &timings);
             totals.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             double gpu = 0.0;
             for (const auto& t : timings) {
@@ -77,7 +75,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
             }
             gpu_totals.push_back(gpu);
         }
-        std::printf("timing: %s, %zu triangles, %dx%d, %d samples, %d frames on %s\n", shading.model.c_str(),
+        std::printf("timing: %s, %zu triangles, %dx%d, %d samples, %d frames on %s\n", scene.style.shading.model.c_str(),
                     triangles, options.width, options.height, options.samples, args.timing,
                     renderer.gl_renderer().c_str());
         for (const auto& pass : order)
@@ -87,7 +85,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
         std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, peak_rss_mib());
     }
     write_png(args.output, image);
-    if (!args.save_style.empty()) save_style(args.save_style, style);
+    if (!args.save_style.empty()) save_style(args.save_style, scene.style);
     return 0;
 }
 

@@ -21,22 +21,11 @@ Command add_view_command(CLI::App& app) {
     cmd->add_option("--screenshot", args->screenshot, "with --frames: save the window to this PNG at the end");
     cmd->add_option("--frames", args->frames, "exit after N frames")->check(CLI::Range(0, 1000000));
     cmd->add_flag("--hide-gui", args->hide_gui, "start with the panels hidden (H toggles)");
-    return [args] {
-        const SceneOptions& s = args->scene;
+    return [args, cmd] {
         if (!args->screenshot.empty() && args->frames == 0)
             throw InputError("--screenshot needs --frames N (the frame to save)");
         viewer::ViewerOptions o;
-        o.model = s.model;
-        o.style = s.resolved_style();
-        const RenderOptions ro = s.render_options(o.style);  // checks --size and --samples
-        o.width = ro.width, o.height = ro.height;
-        o.samples = ro.samples;
-        o.srgb = ro.srgb_output;
-        o.camera = s.camera_options();
-        if (!s.light_pos.empty()) o.light_position = parse_vec3("--light-pos", s.light_pos);
-        o.light_type = s.light_type == "point" ? LightType::Point : LightType::Directional;
-        if (s.light_type != "point" && s.light_type != "directional")
-            throw InputError("--light-type: expected directional or point, got '" + s.light_type + "'");
+        o.scene = make_scene(args->scene.to_request(*cmd));
         o.gui = !args->hide_gui;
         o.script = args->script;
         o.screenshot = args->screenshot;

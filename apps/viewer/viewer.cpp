@@ -72,10 +72,9 @@ private:
     BoundingBox box_;
     std::string model_path_, model_field_;
     std::string mesh_facts_;
-    Style style_;
+    Scene scene_;  // the style, light and image options; the light follows the camera until moved
     Camera camera_;
-    Light light_;
-    bool light_follows_camera_ = true;  // as the CLI's default light, until the user moves it
+    Light light_;  // the light of the last frame
     bool gui_ = true;
     bool dirty_ = true;
     int fb_width_ = 0, fb_height_ = 0;
@@ -97,7 +96,7 @@ private:
     bool quit_ = false;
 };
 
-Viewer::Viewer(const ViewerOptions& options) : options_(options), style_(options.style), gui_(options.gui) {
+Viewer::Viewer(const ViewerOptions& options) : options_(options), scene_(options.scene), gui_(options.gui) {
     if (!options_.script.empty()) script_ = read_script(options_.script);  // bad scripts fail first
 
     glfwSetErrorCallback(glfw_error);
@@ -109,7 +108,8 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), style_(options
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: the window keeps its apparent size
-    window_ = glfwCreateWindow(options_.width, options_.height, "inkshade", nullptr, nullptr);
+    window_ = glfwCreateWindow(options_.scene.options.width, options_.scene.options.height, "inkshade", nullptr,
+                               nullptr);
     if (!window_) {
         glfwTerminate();
         throw RuntimeError("cannot open an OpenGL 4.5 window (" + g_glfw_error + "); use `inkshade render` instead");
@@ -170,7 +170,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), style_(options
     // The renderer draws with the window's context (one context: no sharing or switching).
     renderer_ = std::make_unique<Renderer>([w = window_] { glfwMakeContextCurrent(w); });
     glGenTextures(1, &texture_);
-    if (!open_model(options_.model.empty() ? "builtin:teapot" : options_.model))
+    if (!open_model(options_.scene.model.empty() ? "builtin:teapot" : options_.scene.model))
         throw InputError(message_);
 }
 
@@ -222,16 +222,13 @@ bool Viewer::open_model(const std::string& path) {
 void Viewer::reset_camera() {
     glfwGetFramebufferSize(window_, &fb_width_, &fb_height_);
     const float aspect = float(std::max(fb_width_, 1)) / float(std::max(fb_height_, 1));
-    camera_ = frame_camera(box_, options_.camera, aspect);
-    light_follows_camera_ = !options_.light_position;
-    light_ = default_light(box_, camera_);
-    light_.type = options_.light_type;
-    if (options_.light_position) light_.position = *options_.light_position;
+    camera_ = scene_.frame(box_, aspect);
+    scene_.light_position = options_.scene.light_position;  // a moved light goes back too
     dirty_ = true;
 }
 
 void Viewer::set_style(Style style) {
-    style_ = std::move(style);
+    scene_.style = std::move(style);
     dirty_ = true;
 }
 
@@ -241,13 +238,13 @@ void Viewer::cycle_shading_model() {
     for (const ShadingModel* m : shading_models())
         if (!m->debug_view) models.push_back(m);
     size_t i = 0;
-    while (i < models.size() && models[i]->name != style_.shading.model) ++i;
+    while (i < models.size() && models[i]->name != scene_.style.shading.model) ++i;
     const ShadingModel* next = models[(i + 1) % models.size()];
     // The model as `--shading NAME` gives it (its defaults, light and background), keeping the
     // line types, so F shows each model as `inkshade render --shading NAME` would.
     Style style = load_style(next->name);
-    style.lines = style_.lines;
-    style_ = std::move(style);
+    style.lines = scene_.style.lines;
+    scene_.style = std::move(style);
     report("shading model " + next->name, false);
     dirty_ = true;
 }
@@ -255,10 +252,10 @@ void Viewer::cycle_shading_model() {
 void Viewer::toggle_line_type(size_t index) {
     const std::vector<const LineType*> types = line_types();
     if (index >= types.size()) return;
-    auto it = std::find_if(style_.lines.begin(), style_.lines.end(),
+    auto it = std::find_if(scene_.style.lines.begin(), scene_.style.lines.end(),
                            [&](const LineSettings& l) { return l.type == types[index]->name; });
-    if (it != style_.lines.end()) style_.lines.erase(it);
-    else style_.lines.push_back({types[index]->name, {}});
+    if (it != scene_.style.lines.end()) scene_.style.lines.erase(it);
+    else scene_.style.lines.push_back({types[index]->name, {}});
     dirty_ = true;
 }
 
@@ -274,9 +271,9 @@ void Viewer::save_frame(const std::string& path) {
 
 void Viewer::save_style_file(const std::string& path) {
     try {
-        Style s = style_;
-        s.light_color = style_.light_color.value_or(light_.color);
-        s.ambient = style_.ambient.value_or(light_.ambient);
+        Style s = scene_.style;
+        s.light_color = scene_.style.light_color.value_or(light_.color);
+        s.ambient = scene_.style.ambient.value_or(light_.ambient);
         save_style(path, s);
         report("saved style " + path, false);
     } catch (const std::exception& e) {
@@ -309,24 +306,13 @@ void Viewer::render_if_needed() {
     if (w != fb_width_ || h != fb_height_) dirty_ = true;
     if (!dirty_ && image_.width == w && image_.height == h) return;
     fb_width_ = w, fb_height_ = h;
-    if (light_follows_camera_) {
-        const glm::vec3 keep_color = light_.color, keep_ambient = light_.ambient;
-        const LightType type = light_.type;
-        light_ = default_light(box_, camera_);
-        light_.type = type;
-        light_.color = keep_color, light_.ambient = keep_ambient;
-    }
-    Light light = light_;
-    apply_style_light(style_, light);
-    RenderOptions ro;
-    ro.width = w, ro.height = h;
-    ro.samples = options_.samples;
-    ro.background = style_.background;
-    ro.srgb_output = options_.srgb;
+    scene_.options.width = w, scene_.options.height = h;
+    scene_.options.background = scene_.style.background;  // the panel edits the style's
     const auto start = std::chrono::steady_clock::now();
     timings_.clear();
     try {
-        image_ = renderer_->render(camera_, light, style_.shading, style_.lines, ro, &timings_);
+        light_ = scene_.light(box_, camera_);
+        image_ = render_scene(*renderer_, scene_, camera_, light_, &timings_);
     } catch (const std::exception& e) {
         report(e.what(), true);
         image_ = Image(w, h);
@@ -369,9 +355,9 @@ void Viewer::draw_gui() {
     }
 
     if (ImGui::CollapsingHeader("Style", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (ImGui::BeginCombo("preset", style_.name.c_str())) {
+        if (ImGui::BeginCombo("preset", scene_.style.name.c_str())) {
             for (const std::string& name : builtin_style_names())
-                if (ImGui::Selectable(name.c_str(), name == style_.name)) {
+                if (ImGui::Selectable(name.c_str(), name == scene_.style.name)) {
                     try {
                         set_style(load_style(name));
                     } catch (const std::exception& e) {
@@ -380,33 +366,33 @@ void Viewer::draw_gui() {
                 }
             ImGui::EndCombo();
         }
-        if (ImGui::BeginCombo("shading", style_.shading.model.c_str())) {
+        if (ImGui::BeginCombo("shading", scene_.style.shading.model.c_str())) {
             for (const ShadingModel* m : shading_models())
                 if (ImGui::Selectable((m->name + (m->debug_view ? " (debug view)" : "")).c_str(),
-                                      m->name == style_.shading.model)) {
-                    style_.shading.model = m->name;
-                    style_.shading.params.clear();
+                                      m->name == scene_.style.shading.model)) {
+                    scene_.style.shading.model = m->name;
+                    scene_.style.shading.params.clear();
                     dirty_ = true;
                 }
             ImGui::EndCombo();
         }
-        const ShadingModel& model = shading_model(style_.shading.model);
+        const ShadingModel& model = shading_model(scene_.style.shading.model);
         ImGui::TextWrapped("%s", model.summary.c_str());
-        dirty_ |= ImGui::ColorEdit3("base colour", &style_.shading.base_color.x);
-        dirty_ |= param_widgets(model.params, style_.shading.params);
-        dirty_ |= ImGui::ColorEdit4("background", &style_.background.x);
+        dirty_ |= ImGui::ColorEdit3("base colour", &scene_.style.shading.base_color.x);
+        dirty_ |= param_widgets(model.params, scene_.style.shading.params);
+        dirty_ |= ImGui::ColorEdit4("background", &scene_.style.background.x);
     }
 
     if (ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) {
         const std::vector<const LineType*> types = line_types();
         for (size_t i = 0; i < types.size(); ++i) {
-            auto it = std::find_if(style_.lines.begin(), style_.lines.end(),
+            auto it = std::find_if(scene_.style.lines.begin(), scene_.style.lines.end(),
                                    [&](const LineSettings& l) { return l.type == types[i]->name; });
-            bool on = it != style_.lines.end();
+            bool on = it != scene_.style.lines.end();
             std::string label = (i < 9 ? std::to_string(i + 1) + "  " : "   ") + types[i]->name;
             if (ImGui::Checkbox(label.c_str(), &on)) toggle_line_type(i);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", types[i]->summary.c_str());
-            if (on && it != style_.lines.end()) {
+            if (on && it != scene_.style.lines.end()) {
                 ImGui::PushID(types[i]->name.c_str());
                 ImGui::Indent();
                 dirty_ |= param_widgets(types[i]->params, it->params);
@@ -423,12 +409,13 @@ void Viewer::draw_gui() {
         bool moved = ImGui::SliderFloat("light x", &p.x, c.x - r, c.x + r);
         moved |= ImGui::SliderFloat("light y", &p.y, c.y - r, c.y + r);
         moved |= ImGui::SliderFloat("light z", &p.z, c.z - r, c.z + r);
-        if (moved) light_.position = p, light_follows_camera_ = false, dirty_ = true;
-        bool point = light_.type == LightType::Point;
-        if (ImGui::Checkbox("point light", &point)) light_.type = point ? LightType::Point : LightType::Directional, dirty_ = true;
-        glm::vec3 lc = style_.light_color.value_or(light_.color), amb = style_.ambient.value_or(light_.ambient);
-        if (ImGui::ColorEdit3("light colour", &lc.x)) style_.light_color = lc, dirty_ = true;
-        if (ImGui::ColorEdit3("ambient", &amb.x)) style_.ambient = amb, dirty_ = true;
+        if (moved) scene_.light_position = p, dirty_ = true;
+        bool point = scene_.light_type == LightType::Point;
+        if (ImGui::Checkbox("point light", &point))
+            scene_.light_type = point ? LightType::Point : LightType::Directional, dirty_ = true;
+        glm::vec3 lc = scene_.style.light_color.value_or(light_.color), amb = scene_.style.ambient.value_or(light_.ambient);
+        if (ImGui::ColorEdit3("light colour", &lc.x)) scene_.style.light_color = lc, dirty_ = true;
+        if (ImGui::ColorEdit3("ambient", &amb.x)) scene_.style.ambient = amb, dirty_ = true;
         if (ImGui::Checkbox("orthographic (O)", &camera_.orthographic)) fit_clip_planes(camera_, box_), dirty_ = true;
         if (!camera_.orthographic) dirty_ |= ImGui::SliderFloat("field of view", &camera_.fov_degrees, 5.0f, 120.0f);
         if (ImGui::Button("Reset camera (R)")) reset_camera();
@@ -453,7 +440,7 @@ void Viewer::run_script_command(const ScriptCommand& c) {
         case ScriptCommand::Key: handle_key(c.count); break;
         case ScriptCommand::Set:
             try {
-                apply_set(style_, a);
+                apply_set(scene_.style, a);
                 dirty_ = true;
             } catch (const InputError& e) {
                 report(e.what(), true);
@@ -467,7 +454,7 @@ void Viewer::run_script_command(const ScriptCommand& c) {
             }
             break;
         case ScriptCommand::LightPos:
-            light_.position = c.vector, light_follows_camera_ = false, dirty_ = true;
+            scene_.light_position = c.vector, dirty_ = true;
             break;
         case ScriptCommand::Orbit: orbit(camera_, c.vector.x, c.vector.y), fit_clip_planes(camera_, box_), dirty_ = true; break;
         case ScriptCommand::Zoom: zoom(camera_, c.vector.x, box_), dirty_ = true; break;

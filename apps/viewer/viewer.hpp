@@ -8,20 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "inkshade/camera.hpp"
-#include "inkshade/style.hpp"
+#include "inkshade/scene.hpp"
 
 namespace inkshade::viewer {
 
 struct ViewerOptions {
-    std::string model;            // path or builtin:NAME; empty = builtin:teapot
-    Style style;
-    int width = 1024, height = 768;  // window size in screen coordinates
-    CameraOptions camera;             // auto-framing and its overrides, as the CLI's
-    std::optional<glm::vec3> light_position;
-    LightType light_type = LightType::Directional;
-    int samples = 4;
-    bool srgb = false;
+    // The model (empty: builtin:teapot), style, camera, light and image options as every front
+    // end gives them (make_scene); the image size is the window's size in screen coordinates.
+    Scene scene;
     bool gui = true;                  // H toggles
     std::string script;               // commands run one per frame (see docs/viewer.md)
     std::string screenshot;           // with `frames`: save the window after N frames and exit

@@ -47,6 +47,10 @@ TEST(Package, ExampleBuildsAgainstInstalledPackageAndRendersTheCliImage) {
     const CliResult r = run_cli("render builtin:teapot --style anime --size 512x512 -o '" + cli_png + "'");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(cli_png), slurp(stem + ".png"));
+    const std::string cli_svg = dir.file("cli.svg");
+    const CliResult l = run_cli("lines builtin:teapot --style ink-vector --size 512x512 -o '" + cli_svg + "'");
+    ASSERT_EQ(l.status, 0) << l.err;
+    EXPECT_EQ(slurp(cli_svg), slurp(stem + ".svg"));
 }
 
 }  // namespace

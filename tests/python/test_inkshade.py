@@ -85,6 +85,43 @@ class ModuleTest(unittest.TestCase):
             # Not a blank picture: the torus covers a good part of it.
             self.assertGreater(int((image[:, :, :3] != 255).any(axis=2).sum()), 96 * 64 // 8)
 
+    def test_one_request_gives_the_same_bytes_in_every_front_end(self):
+        """`inkshade render`/`lines`, `inkshade batch`, inkshade.batch and Renderer.render/svg."""
+        with tempfile.TemporaryDirectory() as tmp:
+            options = ["builtin:torus", "--style", "ink-vector", "--size", "80x64", "--azimuth", "60",
+                       "--elevation", "30"]
+            png, svg = os.path.join(tmp, "cli.png"), os.path.join(tmp, "cli.svg")
+            self.cli("render", *options, "-o", png)
+            self.cli("lines", *options, "-o", svg)
+            manifest = os.path.join(tmp, "jobs.jsonl")
+            with open(manifest, "w") as f:
+                f.write('{"model": "builtin:torus", "views": "60:30", "styles": "ink-vector", "size": "80x64", '
+                        '"format": "png,svg"}\n')
+            self.cli("batch", manifest, "-o", os.path.join(tmp, "cli-batch"), "-q")
+            summary = inkshade.batch(os.path.join(tmp, "py-batch"), manifest=manifest)
+            self.assertEqual(summary["done"], 1)
+
+            def read(path, mode="rb"):
+                with open(path, mode) as f:
+                    return f.read()
+            for batch in ("cli-batch", "py-batch"):
+                stem = os.path.join(tmp, batch, "torus", "ink-vector", "az060_el30")
+                self.assertEqual(read(stem + ".png"), read(png), batch)
+                self.assertEqual(read(stem + ".svg"), read(svg), batch)
+            view = dict(size=(80, 64), azimuth=60, elevation=30)
+            np.testing.assert_array_equal(self.renderer.render("ink-vector", **view), read_png(png))
+            self.assertEqual(self.renderer.svg(style="ink-vector", **view), read(svg, "r"))
+
+    def test_svg_without_object_space_lines_draws_what_the_cli_draws(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "a.svg")
+            self.cli("lines", "builtin:torus", "--style", "anime", "--size", "64x64", "-o", path)
+            with open(path) as f:
+                expected = f.read()
+        svg = self.renderer.svg(style="anime", size=(64, 64))
+        self.assertIn('id="contour"', svg)
+        self.assertEqual(svg, expected)
+
     def test_lines_are_the_cli_json(self):
         import json
         with tempfile.TemporaryDirectory() as tmp:
@@ -143,6 +180,14 @@ class ModuleTest(unittest.TestCase):
             self.renderer.render("no-such-style")
         with self.assertRaisesRegex(ValueError, "size"):
             self.renderer.render("lambert", size=(0, 8))
+        with self.assertRaisesRegex(ValueError, r"^fov: expected degrees in \(0, 180\)$"):
+            self.renderer.render("lambert", fov=0)  # checked as the CLI checks --fov, not clamped
+        with self.assertRaisesRegex(ValueError, r"^set hull.width=2: .*'hull'"):
+            self.renderer.render("cel", set=["hull.width=2"])
+        with self.assertRaisesRegex(ValueError, r"^types: 'hull' is drawn in the image"):
+            self.renderer.lines(["hull"])
+        with self.assertRaisesRegex(ValueError, r"^light_type: expected directional or point"):
+            self.renderer.render("lambert", light_type="spot")
         with self.assertRaisesRegex(ValueError, "no mesh"):
             inkshade.Renderer().render("lambert")
 

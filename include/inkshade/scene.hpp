@@ -1,0 +1,109 @@
+// The one path from a request to a scene. Every front end — `inkshade render`, `lines`, `view`
+// and `demo`, the viewer, `batch`, the Python module and library users — fills a SceneRequest
+// and calls make_scene, so one option means the same thing, with the same checks and the same
+// error messages, wherever it is given.
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inkshade/camera.hpp"
+#include "inkshade/image.hpp"
+#include "inkshade/line_drawing.hpp"
+#include "inkshade/renderer.hpp"
+#include "inkshade/style.hpp"
+
+namespace inkshade {
+
+// How errors name a request's fields: "--light-pos: ..." on the command line, "light_pos: ..."
+// for Python keywords.
+enum class OptionNames { Cli, Keywords };
+
+// What the caller will make of the scene: the style's overrides are checked against what is
+// drawn (a line drawing draws only the object-space types it selects).
+struct SceneOutputs {
+    bool image = true;          // Renderer::render: the style's shading and all its line types
+    bool line_drawing = false;  // LineExtractor::draw: object-space lines (SVG, JSON, Python)
+};
+
+struct SceneRequest {
+    std::string model;  // mesh file or builtin:NAME (load_mesh)
+    // The look: a style (built-in name or .toml file) or a shading model with its default
+    // parameters; at most one of the two. Neither: `style_data` when given, else lambert.
+    std::string style;
+    std::string shading;
+    // A style given as data (a three.js scene's material, lights and background). With `style`
+    // or `shading` it still gives that style its light colours, background and light parameters.
+    std::optional<Style> style_data;
+    std::vector<std::string> sets;  // [model.]param=value or TYPE.param=value, applied in order
+    // The object-space line types of the line drawing, in order; unset: the style's, or
+    // default_vector_lines() when the style draws none.
+    std::optional<std::vector<std::string>> vector_lines;
+    bool hidden = false;  // the line drawing also has the hidden parts (dashed layers)
+
+    glm::ivec2 size{1024, 1024};
+    CameraOptions camera;  // what is unset is auto-framed (frame_camera)
+    LightType light_type = LightType::Directional;
+    std::optional<glm::vec3> light_position;  // default: above-left of the camera (default_light)
+    std::optional<glm::vec3> light_target;    // default: the model centre
+    std::optional<glm::vec3> light_color, ambient, base_color;
+    std::optional<glm::vec4> background;  // default: the style's
+    int samples = 4;                      // MSAA, 1..16
+    bool srgb = false;                    // sRGB-encode the output
+
+    SceneOutputs outputs;
+    OptionNames names = OptionNames::Cli;
+};
+
+// A checked request: what the renderer and the line extractor take.
+struct Scene {
+    std::string model;
+    Style style;  // overrides applied; style.lines is what an image draws
+    // The line drawing's line types with their parameters (hidden and overrides applied).
+    std::vector<LineSettings> vector_lines;
+    RenderOptions options;  // size, samples, background, colour convention
+    CameraOptions camera;
+    LightType light_type = LightType::Directional;
+    std::optional<glm::vec3> light_position, light_target;
+    OptionNames names = OptionNames::Cli;  // for the light's error
+
+    // The camera for a model with these bounds: auto-framed for the image's aspect, or another
+    // (a window's).
+    Camera frame(const BoundingBox& box) const;
+    Camera frame(const BoundingBox& box, float aspect) const;
+    // The light for that camera: the default key light with the request's type, position and
+    // target, and the style's colours.
+    Light light(const BoundingBox& box, const Camera& camera) const;
+};
+
+// Checks every value of the request and resolves its style. Throws InputError naming the
+// option ("--fov: expected degrees in (0, 180)"); nothing is loaded but the style.
+Scene make_scene(const SceneRequest& request);
+
+// Fills in what the three.js scene file at `path` gives (docs/threejs.md): its mesh, its
+// material, lights and background as `style_data`, size, antialias, camera and light — except
+// the options for which `given(option)` is true (command-line names without dashes: "model",
+// "size", "fov", "eye", ...), which the caller set itself. Throws InputError for a bad file.
+void apply_threejs_scene(const std::string& path, SceneRequest& request,
+                         const std::function<bool(const std::string& option)>& given);
+
+// What a line drawing draws when neither the request nor the style names an object-space type.
+const std::vector<std::string>& default_vector_lines();
+
+// The scene's image of the renderer's mesh (Renderer::set_mesh with the scene's model).
+Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
+                   std::vector<PassTiming>* timings = nullptr);
+
+// The scene's line drawing of the extractor's mesh.
+LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
+                             std::vector<LineTiming>* timings = nullptr);
+
+// The values of command-line options and manifest columns as text; each throws InputError
+// naming `option`. Python and the library pass typed values instead.
+glm::ivec2 parse_image_size(const std::string& option, const std::string& text);  // "WxH"
+glm::vec3 parse_vec3(const std::string& option, const std::string& text);         // "x,y,z"
+glm::vec4 parse_color(const std::string& option, const std::string& text);        // parse_color
+LightType parse_light_type(const std::string& option, const std::string& text);   // directional|point
+
+}  // namespace inkshade

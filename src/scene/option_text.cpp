@@ -1,0 +1,52 @@
+// Option values as text, as the command line and manifests give them. Each error names the
+// option and repeats the text, in one line.
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "inkshade/color.hpp"
+#include "inkshade/error.hpp"
+#include "inkshade/scene.hpp"
+
+namespace inkshade {
+
+glm::ivec2 parse_image_size(const std::string& option, const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w <= 0 || h <= 0 || w > 16384 || h > 16384)
+        throw InputError(option + ": expected WxH with each side in 1..16384, got '" + text + "'");
+    return {w, h};
+}
+
+glm::vec3 parse_vec3(const std::string& option, const std::string& text) {
+    glm::vec3 v(0.0f);
+    std::stringstream ss(text);
+    std::string item;
+    int i = 0;
+    while (std::getline(ss, item, ',')) {
+        float f = 0;
+        auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), f);
+        if (i >= 3 || item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(f))
+            throw InputError(option + ": expected x,y,z but got '" + text + "'");
+        v[i++] = f;
+    }
+    if (i != 3) throw InputError(option + ": expected x,y,z but got '" + text + "'");
+    return v;
+}
+
+glm::vec4 parse_color(const std::string& option, const std::string& text) {
+    try {
+        return parse_color(text);
+    } catch (const InputError& e) {
+        throw InputError(option + ": " + e.what());
+    }
+}
+
+LightType parse_light_type(const std::string& option, const std::string& text) {
+    if (text == "directional") return LightType::Directional;
+    if (text == "point") return LightType::Point;
+    throw InputError(option + ": expected directional or point, got '" + text + "'");
+}
+
+}  // namespace inkshade

@@ -1,0 +1,196 @@
+// make_scene: the request's values checked once for every front end, and its style resolved
+// (named style or shading model, a three.js scene's lights, --set overrides, colour options).
+#include "inkshade/scene.hpp"
+
+#include <cmath>
+
+#include "inkshade/error.hpp"
+#include "scene/option_name.hpp"
+
+namespace inkshade {
+
+namespace {
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+void check_camera(const CameraOptions& o, OptionNames names) {
+    auto name = [&](const char* option) { return option_name(names, option); };
+    for (auto [value, option] : {std::pair{o.azimuth_degrees, "azimuth"}, std::pair{o.elevation_degrees, "elevation"}})
+        if (value && !std::isfinite(*value)) throw InputError(name(option) + ": must be a finite number");
+    if (o.distance && !(*o.distance > 0.0f && std::isfinite(*o.distance)))
+        throw InputError(name("distance") + ": must be a positive number");
+    for (auto [value, option] : {std::pair{o.eye, "eye"}, std::pair{o.target, "target"}, std::pair{o.up, "up"}})
+        if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
+    if (o.up && glm::length(*o.up) == 0.0f) throw InputError(name("up") + ": must not be zero");
+    if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
+        throw InputError(name("fov") + ": expected degrees in (0, 180)");
+    const auto& near = o.near_plane;
+    const auto& far = o.far_plane;
+    if (near && !std::isfinite(*near)) throw InputError(name("near") + ": must be a finite number");
+    // An orthographic view may start behind the eye (three.js allows a negative near).
+    if (near && !(*near > 0.0f) && !o.orthographic) throw InputError(name("near") + ": must be a positive number");
+    if (far && !(std::isfinite(*far) && *far > near.value_or(0.0f)))
+        throw InputError(name("far") + ": must be greater than " + name("near"));
+    if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
+        throw InputError(name("ortho-height") + ": must be a positive number");
+}
+
+void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNames names) {
+    if (!c) return;
+    for (int i = 0; i < 4; ++i)
+        if (!((*c)[i] >= 0.0f && (*c)[i] <= 1.0f))
+            throw InputError(option_name(names, option) + ": components must be in [0, 1]");
+}
+
+// The style as the request names it, before any override.
+Style named_style(const SceneRequest& r) {
+    if (!r.style.empty() && !r.shading.empty())
+        throw InputError(option_name(r.names, "style") + " and " + option_name(r.names, "shading") +
+                         " are alternatives: use one (a style names its shading model)");
+    if (r.style_data && r.style.empty() && r.shading.empty()) return *r.style_data;
+    Style s = !r.shading.empty() ? load_style(shading_model(r.shading).name)  // checks the model name
+                                 : load_style(r.style.empty() ? "lambert" : r.style);
+    if (const auto& data = r.style_data) {
+        // A scene's lights and background stay the scene's whatever the look.
+        s.light_color = data->light_color;
+        s.ambient = data->ambient;
+        s.background = data->background;
+        const ShadingModel& model = shading_model(s.shading.model);
+        for (const char* name : {"light-intensity", "ambient-intensity", "light-decay", "light-distance"})
+            if (auto it = data->shading.params.find(name); it != data->shading.params.end() && model.param(name))
+                s.shading.params[name] = it->second;
+    }
+    return s;
+}
+
+// --set overrides, then the colour options, which win over the style's.
+void apply_overrides(const SceneRequest& r, Style& s) {
+    for (const std::string& set : r.sets) {
+        try {
+            apply_override(s, set);
+        } catch (const InputError& e) {
+            throw InputError(option_name(r.names, "set") + " " + set + ": " + e.what());
+        }
+    }
+    if (r.base_color) s.shading.base_color = *r.base_color;
+    if (r.background) s.background = *r.background;
+    if (r.light_color) s.light_color = *r.light_color;
+    if (r.ambient) s.ambient = *r.ambient;
+}
+
+// The object-space line types of the line drawing, in order, with the style's parameters where
+// it has them.
+std::vector<LineSettings> select_vector_lines(const Style& style, const SceneRequest& r) {
+    auto from_style = [&](const std::string& name) {
+        for (const LineSettings& l : style.lines)
+            if (l.type == name) return l;
+        return LineSettings{name, {}};
+    };
+    std::vector<LineSettings> out;
+    if (!r.vector_lines) {
+        for (const LineSettings& l : style.lines)
+            if (line_type(l.type).space == LineSpace::Object) out.push_back(l);
+        if (out.empty())
+            for (const std::string& name : default_vector_lines()) out.push_back(from_style(name));
+        return out;
+    }
+    const std::string option = option_name(r.names, "lines");
+    for (const std::string& name : *r.vector_lines) {
+        if (name.empty()) throw InputError(option + ": empty line type name");
+        const LineType& type = line_type(name);  // InputError names the choices
+        if (type.space != LineSpace::Object) {
+            std::string names;
+            for (const LineType* t : line_types())
+                if (t->space == LineSpace::Object) names += (names.empty() ? "" : ", ") + t->name;
+            throw InputError(option + ": '" + name + "' is drawn in the image by `inkshade render`, not as vector " +
+                             "lines (choose " + names + ")");
+        }
+        for (const LineSettings& l : out)
+            if (l.type == name) throw InputError(option + ": '" + name + "' is listed twice");
+        out.push_back(from_style(name));
+    }
+    if (out.empty()) throw InputError(option + ": no line type given");
+    return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& default_vector_lines() {
+    // The lines of a classic line drawing: outline, interior shape cues, sharp edges, open edges.
+    static const std::vector<std::string> lines = {"contour", "suggestive", "crease", "border"};
+    return lines;
+}
+
+Scene make_scene(const SceneRequest& r) {
+    auto name = [&](const char* option) { return option_name(r.names, option); };
+    if (r.size.x < 1 || r.size.y < 1 || r.size.x > 16384 || r.size.y > 16384)
+        throw InputError(name("size") + ": each side must be in 1..16384, got " + std::to_string(r.size.x) + "x" +
+                         std::to_string(r.size.y));
+    if (r.samples < 1 || r.samples > 16) throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
+    check_camera(r.camera, r.names);
+    for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
+        if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
+    for (auto [value, option] :
+         {std::pair{r.light_color, "light-color"}, std::pair{r.ambient, "ambient"}, std::pair{r.base_color, "base-color"}})
+        check_color(value ? std::optional<glm::vec4>(glm::vec4(*value, 1.0f)) : std::nullopt, option, r.names);
+    check_color(r.background, "background", r.names);
+    if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
+
+    Scene scene;
+    scene.model = r.model;
+    const Style named = named_style(r);
+    if (r.outputs.image) {
+        scene.style = named;
+        apply_overrides(r, scene.style);
+    }
+    if (r.outputs.line_drawing) {
+        // Overrides after the selection, so TYPE.param=value reaches a type that --lines adds.
+        Style lines_style = named;
+        lines_style.lines = select_vector_lines(named, r);
+        if (r.hidden)
+            for (LineSettings& l : lines_style.lines) l.params["hidden"] = {1.0f};
+        apply_overrides(r, lines_style);  // hidden=0 given by --set wins over `hidden`
+        scene.vector_lines = lines_style.lines;
+        if (!r.outputs.image) scene.style = std::move(lines_style);
+    }
+    scene.options.width = r.size.x;
+    scene.options.height = r.size.y;
+    scene.options.samples = r.samples;
+    scene.options.background = scene.style.background;
+    scene.options.srgb_output = r.srgb;
+    scene.camera = r.camera;
+    scene.light_type = r.light_type;
+    scene.light_position = r.light_position;
+    scene.light_target = r.light_target;
+    scene.names = r.names;
+    return scene;
+}
+
+Camera Scene::frame(const BoundingBox& box) const {
+    return frame(box, float(options.width) / float(options.height));
+}
+
+Camera Scene::frame(const BoundingBox& box, float aspect) const { return frame_camera(box, camera, aspect); }
+
+Light Scene::light(const BoundingBox& box, const Camera& cam) const {
+    Light l = default_light(box, cam);
+    l.type = light_type;
+    if (light_position) l.position = *light_position;
+    if (light_target) l.target = *light_target;
+    if (l.type == LightType::Directional && l.position == l.target)
+        throw InputError(option_name(names, "light-pos") + ": equals the light's target, so a directional light has no direction");
+    apply_style_light(style, l);
+    return l;
+}
+
+Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
+                   std::vector<PassTiming>* timings) {
+    return renderer.render(camera, light, scene.style.shading, scene.style.lines, scene.options, timings);
+}
+
+LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
+                             std::vector<LineTiming>* timings) {
+    return extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines, timings);
+}
+
+}  // namespace inkshade
