@@ -55,11 +55,11 @@ struct Light {
     glm::vec3 target{0.0f};
     glm::vec3 color{0.9f};
     glm::vec3 ambient{0.1f};
-    // Unit vector towards the light at world point p (l in the seeds' formulas).
+    // Unit vector towards the light at world point p (l in the shading formulas, docs/shading.md).
     glm::vec3 direction_to_light(const glm::vec3& p) const;
 };
 
-// The default light: above, left and in front of the camera (seed 004 style key light),
+// The default light: above, left and in front of the camera (a classic key light),
 // at three bounding radii from the model centre.
 Light default_light(const BoundingBox& box, const Camera& camera);
 

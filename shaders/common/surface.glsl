@@ -37,7 +37,7 @@ Surface surface() {
     Surface s;
     s.p = v_world_pos;
     s.n = normalize(v_world_normal);
-    // Back faces of open meshes are lit as seen (avoids the seeds' inverted-inside artefact).
+    // Back faces of open meshes are lit as seen (no inside-out rim glow or lighting).
     if (!gl_FrontFacing) s.n = -s.n;
     s.v = to_viewer(s.p);
     s.l = to_light(s.p);

@@ -1,5 +1,5 @@
 #version 450 core
-// Debug view `ndotv`: grey level n.v (1 facing the viewer, 0 at the contour; seed 000 eq. 5).
+// Debug view `ndotv`: grey level n.v (1 facing the viewer, 0 at the contour, where n.v = 0).
 #include "common/surface.glsl"
 void main() {
     Surface s = surface();

@@ -1,5 +1,5 @@
 #version 450 core
-// Debug view `w`: v projected onto the tangent plane, w = v - (n.v) n (seed 000 eq. 8),
+// Debug view `w`: v projected onto the tangent plane, w = v - (n.v) n (DeCarlo et al. 2003),
 // encoded as 0.5 * w + 0.5 (|w| <= 1, zero where the surface faces the viewer).
 #include "common/surface.glsl"
 void main() {

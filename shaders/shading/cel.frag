@@ -1,15 +1,16 @@
 #version 450 core
-// cel: quantised light (SPEC.md section 2; seeds 000 eq. 4, 002 and 004; three.js
+// cel: quantised light (five half-Lambert bands as in Qu, Chen & Zwicker 2022, eq. 4, by
+// default; three-tone, highlight and rim settings in the cel-002 and cel-004 presets; three.js
 // MeshToonMaterial's gradient map).
 //   d     = 0.5 n.l + 0.5 (half-lambert) or max(n.l, 0) (ndotl)
 //   level = levels[i] for the first i with d > thresholds[i], else the last level
-//   lit   = mix(shade-color, 1, level)          (shade-color black: lit = level, the seeds)
+//   lit   = mix(shade-color, 1, level)          (shade-color black: lit = level, classic cel)
 //   out   = C * (E * lit + A)
 //         + specular-color * E   where max(n.h, 0)^shininess > specular-threshold and n.l > 0
 //         + rim-color * E        where (1 - n.v) * max(n.l, 0)^rim-power > rim-threshold
-// The rim rule is the one of Roystan's widely copied toon shader tutorial (seed 004 had a rim
-// light but removed it and prints no formula).
-// Band, highlight and rim edges are hard when smoothing = 0 (the seeds) and otherwise
+// The rim rule is the one of Erik Roystan Ross's widely copied "Toon Shader" tutorial for Unity
+// (roystan.net).
+// Band, highlight and rim edges are hard when smoothing = 0 (classic cel) and otherwise
 // blended with smoothstep over smoothing * fwidth(value) around each threshold.
 #include "common/surface.glsl"
 

@@ -1,6 +1,6 @@
 #version 450 core
-// flat: one normal per face from screen-space derivatives of the position, dFdx(p) x dFdy(p)
-// (seed 000, eq. 2), then Lambert: C * (E * max(n.l, 0) + A).
+// flat: one normal per face from screen-space derivatives of the interpolated position,
+// dFdx(p) x dFdy(p) (the triangle's plane), then Lambert: C * (E * max(n.l, 0) + A).
 #include "common/surface.glsl"
 
 void main() {

@@ -1,9 +1,9 @@
 #version 450 core
-// fresnel: rim glow (seed 004, "Fresnel shading"; SPEC.md section 2):
+// fresnel: rim glow ("Fresnel shading": brighter where the surface turns away from the viewer):
 //   f = clamp(1 - |n.v|, 0, 1)^power,  rim = intensity * glow * f
 //   mode "add":     C * (E * max(n.l, 0) + A) + rim
 //   mode "replace": rim only, over black.
-// The seed's inverted inside (a bright centre and a dark rim) came from normals facing away
+// A rim shader lights up inside out (a bright centre and a dark rim) where normals face away
 // from the viewer: surface() flips n on back faces (open meshes, flipped windings), and |n.v|
 // also covers meshes whose normals point inwards on front faces, so the rim is always at the
 // silhouette and the centre of a view-facing surface is dark.

@@ -1,14 +1,15 @@
 #version 450 core
-// gooch: cool-to-warm tone shading (Gooch, Gooch, Shirley, Cohen 1998; seeds 001 and 004):
+// gooch: cool-to-warm tone shading (Gooch, Gooch, Shirley, Cohen 1998, "A Non-Photorealistic
+// Lighting Model for Automatic Technical Illustration"):
 //   k_cool = k_blue + alpha * k_d,  k_blue = (0, 0, b)
 //   k_warm = k_yellow + beta * k_d, k_yellow = (y, y, 0)
 //   t = (1 + n.l) / 2
 //   colour = t * k_warm + (1 - t) * k_cool        (warm faces the light)
 //          + white * max(r.v, 0)^shininess where n.l > 0, when specular is on
-// with k_d = C. Seed 004 prints "t * k_cool - (1 - t) * k_warm": the minus sign (and the
-// swapped colours) are a typo — that expression goes negative and puts the cool colour on
-// the lit side, contradicting its own description ("warm colours typically indicate surfaces
-// facing toward a light source"). Seed 001 prints the colours swapped as well.
+// with k_d = C. Some course notes and blog posts print "t * k_cool - (1 - t) * k_warm" or
+// "t * k_cool + (1 - t) * k_warm": the minus sign and the swapped colours are typos — the
+// first goes negative, both put the cool colour on the lit side, against the paper's intent
+// (warm colours on surfaces facing the light, cool ones on surfaces facing away).
 #include "common/surface.glsl"
 
 uniform float u_blue;

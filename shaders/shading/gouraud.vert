@@ -1,6 +1,6 @@
 #version 450 core
 // gouraud: Lambert evaluated per vertex, C * (E * max(n.l, 0) + A), colour interpolated
-// (seed 000 section 3.3).
+// across each triangle (Gouraud 1971, "Continuous Shading of Curved Surfaces").
 #include "common/lighting.glsl"
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;

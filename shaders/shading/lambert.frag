@@ -1,6 +1,6 @@
 #version 450 core
 // lambert: per-pixel Lambert with interpolated (Phong) normals, C * (E * max(n.l, 0) + A)
-// (seed 000 section 3.1).
+// (Lambert's cosine law: diffuse light proportional to max(n.l, 0)).
 #include "common/surface.glsl"
 
 void main() {

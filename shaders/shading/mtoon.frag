@@ -1,13 +1,14 @@
 #version 450 core
-// mtoon: MToon 1.0, the VRM toon material (SPEC.md section 2, measured from three-vrm's MToon
-// 3.5.5 on three.js r187), per channel:
+// mtoon: MToon 1.0, the VRM toon material (the VRM MToon 1.0 specification; the formula below is
+// measured per channel from three-vrm's MToon 3.5.5 on three.js r187, in linear light):
 //   t      = linearstep(-1 + toony, 1 - toony, clamp(n.l, -1, 1) + shift) * shadow
 //   direct = E * k * mix(S, C, t)          (no n.l factor: the shade colour is lit too)
 //   gi     = A * k * C
 //   rim    = rim-color * saturate(1 - n.v + lift)^power * mix(1, (E + A) * k, rim-lighting-mix)
 //   out    = clamp(direct + gi + rim)
 // convention "threejs": k = 1/pi and the output is sRGB-encoded (three-vrm on three.js);
-// convention "seeds": k = 1 and the value is written as it is (the seeds' shaders).
+// convention "seeds" (Inkshade's default): k = 1 and the value is written as it is, no sRGB
+// encode, like the other shading models.
 // shadow = 1 (lit) .. 0 from the PCF-filtered shadow map when `shadows` is on; it scales t as
 // the shading term of three-vrm does, so shadowed parts take the shade colour.
 #include "common/surface.glsl"
@@ -20,7 +21,7 @@ uniform vec3 u_rim_color;
 uniform float u_rim_fresnel_power;
 uniform float u_rim_lift;
 uniform float u_rim_lighting_mix;
-uniform int u_convention;  // 0 seeds, 1 threejs
+uniform int u_convention;  // 0 seeds (as written), 1 threejs
 uniform float u_shadow_softness;
 
 float linearstep(float a, float b, float x) { return clamp((x - a) / max(b - a, 1e-6), 0.0, 1.0); }

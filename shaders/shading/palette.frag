@@ -1,5 +1,5 @@
 #version 450 core
-// palette: Inigo Quilez's cosine palette (seed 004; iquilezles.org "palettes"):
+// palette: Inigo Quilez's cosine palette (iquilezles.org, "palettes"):
 //   colour(t) = a + b * cos(2 pi (c * t + d))     (a, b, c, d RGB vectors)
 // t from the driver: max(n.l, 0), 0.5 n.l + 0.5, max(n.v, 0), or the model-space height
 // (y), x or z normalised to [0, 1] over the bounding box. With lit on, the colour is

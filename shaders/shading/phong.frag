@@ -1,5 +1,5 @@
 #version 450 core
-// phong: ambient + diffuse + specular (seed 000 eq. 3):
+// phong: ambient + diffuse + specular (Phong 1975, "Illumination for Computer Generated Pictures"):
 //   C * (A + E * max(n.l, 0)) + k_s * E * max(r.v, 0)^shininess, specular only where n.l > 0,
 //   r = reflect(-l, n).
 #include "common/surface.glsl"

@@ -1,5 +1,6 @@
 #version 450 core
-// stipple: object-space stippling (seed 001's stipple shader; SPEC.md section 2).
+// stipple: object-space stippling, ink dots (tinted by the base colour) that grow denser where
+// the surface is darker.
 //   tone t = luminance(E * max(n.l, 0) + A), darkness k = (1 - t)^threshold-curve;
 //   dots = jittered feature points of a 3-D lattice in normalized model space (one per cell,
 //   within 0.3 of its centre, and a rank, from cell_hash), so they stay on the surface while

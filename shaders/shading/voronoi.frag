@@ -1,9 +1,9 @@
 #version 450 core
-// voronoi: 3-D cellular (Worley) noise on the surface (seed 004, "Voronoi shading";
+// voronoi: 3-D cellular (Worley) noise on the surface ("Voronoi shading";
 // S. Worley, "A Cellular Texture Basis Function", SIGGRAPH 1996).
 //   x = normalized_object_pos() * scale: model space, longest bounding-box side = `scale` cells,
 //       so the pattern sticks to the surface and looks the same on any model size or file
-//       format (the seed's screen/size-dependent version broke on OBJ models);
+//       format (a pattern from screen or unnormalised positions depends on the model's size);
 //   one feature point per unit cell (cell_hash of the cell id, within kCellJitter = 0.3 of the
 //   cell centre), F1/F2 = distances to the nearest / second-nearest point over the 2x2x2 cells
 //   whose centres surround x (Gustavson's 2x2x2 search; docs/shading.md for its accuracy);

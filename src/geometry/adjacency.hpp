@@ -1,5 +1,5 @@
 // Mesh edges and the faces around each: the topology creases, borders and non-manifold checks
-// need (SPEC §3 `crease`, `border`).
+// need (line types `crease` and `border`, docs/lines.md).
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
-// Object-space occluding contours: zero crossings of g = n·v inside each face (SPEC §3
-// `contour`). Seed 002 marked whole mesh edges whose endpoints' n·v differ in sign; here the
-// crossing is interpolated along each such edge, so the contour is a smooth polyline that
-// runs across faces.
+// Object-space occluding contours (line type `contour`): zero crossings of g = n·v inside each
+// face. The simplest real-time method marks whole mesh edges whose endpoints' n·v differ in sign
+// (the product of the two is negative); here the crossing is interpolated along each such edge,
+// so the contour is a smooth polyline that runs across faces.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -82,7 +82,7 @@ std::vector<LineSegment> extract_contours(const Mesh& mesh, const std::vector<gl
                                           const Camera& camera);
 
 // A mesh edge between a front-facing and a back-facing face (by face normal against the
-// vector to the eye at the face centroid): seed 002's silhouette, without interpolation.
+// vector to the eye at the face centroid): the polygon silhouette, without interpolation.
 struct SilhouetteEdge {
     uint32_t v0 = 0, v1 = 0;  // v0 < v1
 };

@@ -1,4 +1,4 @@
-// Creases and borders (SPEC §3 `crease`, `border`): view-independent lines made of whole mesh
+// Creases and borders (line types `crease`, `border`): view-independent lines made of whole mesh
 // edges, as segments with vertex node keys so chain_segments joins them through vertices.
 #pragma once
 #include <vector>

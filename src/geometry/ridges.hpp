@@ -1,4 +1,4 @@
-// Ridges and valleys (SPEC §3 `ridge`, `valley`, optional): view-independent lines where a
+// Ridges and valleys (optional line types `ridge`, `valley`): view-independent lines where a
 // principal curvature has an extremum along its own direction — zero crossings of
 // e1 = ∂k1/∂s1 (C111) where k1 is large and positive, and of e2 = ∂k2/∂s2 (C222) where k2 is
 // large and negative (Ohtake, Belyaev & Seidel 2004's definition; rtsc's draw_mesh_ridges

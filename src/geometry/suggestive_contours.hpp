@@ -1,8 +1,9 @@
-// Object-space suggestive contours (SPEC §3 `suggestive`, method (a)): zero crossings of the
-// radial curvature κr where its derivative along the projected view vector is positive,
-// after DeCarlo, Finkelstein, Rusinkiewicz & Santella 2003, "Suggestive Contours for Conveying
-// Shape", with the derivative, trimming and fading of DeCarlo, Finkelstein & Rusinkiewicz 2004,
-// "Interactive Rendering of Suggestive Contours with Temporal Coherence" (as rtsc does them).
+// Object-space suggestive contours (line type `suggestive`; `suggestive-image` is the image-space
+// method): zero crossings of the radial curvature κr where its derivative along the projected
+// view vector is positive, after DeCarlo, Finkelstein, Rusinkiewicz & Santella 2003,
+// "Suggestive Contours for Conveying Shape", with the derivative, trimming and fading of
+// DeCarlo, Finkelstein & Rusinkiewicz 2004, "Interactive Rendering of Suggestive Contours with
+// Temporal Coherence" (as rtsc does them).
 #pragma once
 #include <vector>
 

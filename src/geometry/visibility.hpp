@@ -1,5 +1,5 @@
-// Hidden-line removal for object-space lines (SPEC §3 "visibility": vector lines by a
-// visibility test per segment): each line segment is sampled densely enough in the image
+// Hidden-line removal for object-space lines (vector lines get a visibility test per segment,
+// raster lines a depth test): each line segment is sampled densely enough in the image
 // (≤ 1 px apart), every sample is tested by a ray from the eye towards it against the mesh
 // (Embree 3), and segments are split where visibility changes, the transition found by
 // bisection to sub-pixel precision. This is the ray-cast counterpart of Freestyle's and rtsc's

@@ -1,5 +1,5 @@
 // Atomic output: write to a temporary file beside the target, then rename over it, so a
-// failed or interrupted run never leaves a partial file (SPEC: output written atomically).
+// failed or interrupted run never leaves a partial file: every output is written atomically.
 #pragma once
 #include <string>
 #include <string_view>

@@ -553,7 +553,7 @@ std::vector<float> gamma_decode(std::vector<float> c) {
     return c;
 }
 
-// MToon 1.0 defaults (VRMC_materials_mtoon; SPEC.md section 2).
+// MToon 1.0 defaults (the VRM MToon 1.0 specification, VRMC_materials_mtoon; docs/shading.md).
 std::map<std::string, std::vector<float>> mtoon_defaults() {
     return {{"shade-color", {0, 0, 0}},    {"shading-shift", {0}},       {"shading-toony", {0.9f}},
             {"rim-color", {0, 0, 0}},      {"rim-fresnel-power", {5}},   {"rim-lift", {0}},
@@ -583,7 +583,8 @@ std::map<std::string, std::vector<float>> mtoon_v1(const tinygltf::Value& e) {
 }
 
 // VRM 0.x: extensions.VRM.materialProperties[i] for "VRM/MToon", converted to MToon 1.0 the way
-// three-vrm's VRMMaterialsV0CompatPlugin does (the reference SPEC.md measures against).
+// three-vrm's VRMMaterialsV0CompatPlugin does (three-vrm 3.5.5, the reference implementation
+// the mtoon model is measured against).
 std::map<std::string, std::vector<float>> mtoon_v0(const tinygltf::Value& props) {
     const tinygltf::Value& f = props.IsObject() && props.Has("floatProperties") ? props.Get("floatProperties") : props;
     const tinygltf::Value& v = props.IsObject() && props.Has("vectorProperties") ? props.Get("vectorProperties") : props;

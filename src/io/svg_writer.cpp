@@ -1,6 +1,6 @@
-// SVG 1.1 output of a LineDrawing (SPEC §3 "vector output"), laid out for Inkscape and
-// Illustrator: one layer (<g inkscape:groupmode="layer">) per line type holding the stroke
-// style, one <path> per polyline.
+// SVG 1.1 output of a LineDrawing (the object-space lines, hidden parts removed), laid out for
+// Inkscape and Illustrator: one layer (<g inkscape:groupmode="layer">) per line type holding
+// the stroke style, one <path> per polyline.
 //
 // Variable strength: SVG strokes have one width and one opacity, so a polyline whose strength
 // varies (suggestive contours fade in from their trim points) is split into runs of segments

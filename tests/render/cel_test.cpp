@@ -1,8 +1,8 @@
-// Pixels of the `cel` model against a CPU evaluation of its formula (SPEC.md section 2; seeds
-// 000 eq. 4, 002, 004) on a finely tessellated unit sphere seen orthographically, whose
-// analytic normal is known at every pixel. Pixels within two pixels of a band, highlight or
-// rim edge are left out: there the tessellated normal and the analytic one may fall on
-// different sides of a threshold.
+// Pixels of the `cel` model against a CPU evaluation of its formula (docs/shading.md; the
+// settings of the presets cel-000, cel-002 and cel-004) on a finely tessellated unit sphere
+// seen orthographically, whose analytic normal is known at every pixel. Pixels within two
+// pixels of a band, highlight or rim edge are left out: there the tessellated normal and the
+// analytic one may fall on different sides of a threshold.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -49,15 +49,17 @@ struct CelParams {
     }
 };
 
-// Seed 000 eq. 4: half-Lambert > 0.8 -> 1, > 0.6 -> 0.75, > 0.4 -> 0.5, > 0.2 -> 0.25, else 0.
-CelParams seed000() {
+// Preset cel-000, the five bands of Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading
+// Techniques for Anime-Style Rendering", eq. 4: half-Lambert > 0.8 -> 1, > 0.6 -> 0.75,
+// > 0.4 -> 0.5, > 0.2 -> 0.25, else 0.
+CelParams cel000() {
     CelParams p;
     p.smoothing = 0.0f;
     return p;
 }
 
-// Seed 002: intensities 1.0 / 0.66 / 0.33 on the Lambert cosine (preset cel-002).
-CelParams seed002() {
+// Preset cel-002, three-tone cel: intensities 1.0 / 0.66 / 0.33 on the Lambert cosine.
+CelParams cel002() {
     CelParams p;
     p.driver = 1;
     p.thresholds = {0.66f, 0.33f};
@@ -66,8 +68,8 @@ CelParams seed002() {
     return p;
 }
 
-// Seed 004: three bands on n.l, hard Blinn-Phong highlight, rim (preset cel-004).
-CelParams seed004() {
+// Preset cel-004: three bands on n.l, hard Blinn-Phong highlight, rim.
+CelParams cel004() {
     CelParams p;
     p.driver = 1;
     p.thresholds = {0.5f, 0.0f};
@@ -243,18 +245,18 @@ TEST_F(Cel, LevelListLongerOrShorterThanThresholds) {
     EXPECT_GE(per_band[3], 20);
 }
 
-// With seed 000's parameters every one of the five bands shows exactly its level plus
+// With cel-000's parameters every one of the five bands shows exactly its level plus
 // ambient: C*(E*level + A), pixel by pixel, away from the band edges.
-TEST_F(Cel, Seed000FiveBandsAreExactLevels) {
-    Scene s = make_scene(seed000());
+TEST_F(Cel, Cel000FiveBandsAreExactLevels) {
+    Scene s = make_scene(cel000());
     std::vector<int> per_band;
     EXPECT_GE(compare_away_from_edges(render(s), s, 2, 1, &per_band), 500);
     ASSERT_EQ(per_band.size(), 5u) << "every band sampled";
     for (size_t b = 0; b < per_band.size(); ++b) EXPECT_GE(per_band[b], 20) << "band " << b;
 }
 
-TEST_F(Cel, Seed002ThreeIntensitiesAreExact) {
-    Scene s = make_scene(seed002());
+TEST_F(Cel, Cel002ThreeIntensitiesAreExact) {
+    Scene s = make_scene(cel002());
     s.light.color = glm::vec3(1.0f);
     s.light.ambient = glm::vec3(0.0f);
     Image img = render(s);
@@ -271,8 +273,8 @@ TEST_F(Cel, Seed002ThreeIntensitiesAreExact) {
     EXPECT_EQ(reds, want);
 }
 
-TEST_F(Cel, Seed004BandsHighlightAndRimMatchFormula) {
-    Scene s = make_scene(seed004(), {-0.6f, 0.5f, 0.8f});
+TEST_F(Cel, Cel004BandsHighlightAndRimMatchFormula) {
+    Scene s = make_scene(cel004(), {-0.6f, 0.5f, 0.8f});
     s.light.ambient = glm::vec3(0.0f);
     s.shading.base_color = glm::vec3(0.6f, 0.4f, 0.3f);
     s.cel.specular_color = glm::vec3(0.3f, 0.35f, 0.4f);
@@ -292,10 +294,10 @@ TEST_F(Cel, Seed004BandsHighlightAndRimMatchFormula) {
     EXPECT_GE(rim, 10);
 }
 
-// Seed 004's highlight alone (black base colour, no ambient): a disc of exactly
+// cel-004's highlight alone (black base colour, no ambient): a disc of exactly
 // specular-color * E where max(n.h, 0)^p > threshold, and black everywhere else.
 TEST_F(Cel, HardHighlightDiscOnlyWhereAnalyticHighlight) {
-    CelParams p = seed004();
+    CelParams p = cel004();
     p.rim = false;
     p.specular_color = glm::vec3(1.0f, 0.8f, 0.6f);
     Scene s = make_scene(p, {-0.6f, 0.5f, 1.0f});
@@ -411,7 +413,7 @@ TEST_F(Cel, SmoothingBlendsBandEdgesOnly) {
 // The shade colour takes black's place: the darkest band is C*(E*shade + A), the others
 // mix(shade, 1, level).
 TEST_F(Cel, ShadeColorReplacesBlack) {
-    CelParams p = seed000();
+    CelParams p = cel000();
     p.shade = glm::vec3(0.2f, 0.3f, 0.7f);
     Scene s = make_scene(p);
     std::vector<int> per_band;

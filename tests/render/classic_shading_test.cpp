@@ -1,5 +1,6 @@
 // Pixels of the classic shading models against CPU evaluations of their formulas
-// (SPEC.md section 2; seed 000 eqs. 1-3), on spheres whose normals are known.
+// (docs/shading.md: flat, Gouraud, Lambert, Phong, Blinn-Phong, debug views), on spheres
+// whose normals are known.
 #include <algorithm>
 #include <functional>
 
@@ -82,8 +83,8 @@ TEST_F(ClassicShading, BlinnPhongMatchesFormulaAtSampledPixels) {
               50);
 }
 
-// A light from behind and to the side: r.v > 0 on part of the unlit side, where the seeds'
-// rule says there is no highlight (specular only where n.l > 0).
+// A light from behind and to the side: r.v > 0 on part of the unlit side, where the
+// Phong rule used here says there is no highlight (specular only where n.l > 0).
 TEST_F(ClassicShading, PhongHasNoSpecularWhereUnlit) {
     Scene s = make_scene("phong", {1.0f, 0.3f, -0.8f});
     s.shading.params["shininess"] = {4};

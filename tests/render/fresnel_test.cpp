@@ -1,5 +1,5 @@
-// fresnel (seed 004's rim glow): pixels against f = clamp(1 - |n.v|, 0, 1)^power on a sphere,
-// and the seed's inverted-inside artefact ruled out on an inverted mesh (windings and normals
+// fresnel (rim glow): pixels against f = clamp(1 - |n.v|, 0, 1)^power on a sphere, and the
+// inside-out artefact of naive rim shaders ruled out on an inverted mesh (windings and normals
 // flipped), a mesh with only its normals flipped, and an open hemisphere seen from inside.
 #include <algorithm>
 #include <functional>
@@ -119,8 +119,8 @@ TEST_F(Fresnel, ReplaceModeIsRimAloneAtSampledPixels) {
     expect_rim_not_centre(img, "sphere");
 }
 
-// Seed 004's artefact: normals facing away from the viewer light the centre and darken the
-// rim. Reversed windings with inward normals must look exactly like the outward sphere.
+// The inside-out artefact of naive rim shaders: normals facing away from the viewer light the
+// centre and darken the rim. Reversed windings with inward normals must look exactly like the outward sphere.
 TEST_F(Fresnel, InvertedSphereStillGlowsAtTheSilhouette) {
     const Mesh inside_out = inverted(fine_sphere(), true, true);
     for (const char* mode : {"add", "replace"}) {

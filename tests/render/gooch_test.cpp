@@ -1,5 +1,5 @@
 // Pixels of the `gooch` model against a CPU evaluation of Gooch et al. 1998's formula
-// (SPEC.md section 2; seeds 001 and 004) on a unit sphere with analytic normals.
+// (docs/shading.md) on a unit sphere with analytic normals.
 #include <algorithm>
 #include <cmath>
 
@@ -82,7 +82,8 @@ TEST_F(Gooch, ParametersAndHighlightMatchFormula) {
 }
 
 // Warm faces the light: the pixel whose normal points at the light is yellower (more red and
-// green, less blue) than one facing away (seed 004's printed minus sign would invert this).
+// green, less blue) than one facing away (the minus sign or swapped colours some write-ups
+// print would invert this).
 TEST_F(Gooch, WarmFacesTheLightCoolFacesAway) {
     Scene s = make_scene(GoochParams{}, {1.0f, 0.0f, 0.4f});
     s.shading.base_color = glm::vec3(0.5f);

@@ -1,5 +1,5 @@
 // Pixels of the `palette` model against a CPU evaluation of the cosine palette
-// a + b*cos(2*pi*(c*t + d)) (SPEC.md section 2; seed 004) for several drivers, on a unit
+// a + b*cos(2*pi*(c*t + d)) (Inigo Quilez, "palettes") for several drivers, on a unit
 // sphere with analytic normals and positions.
 #include <algorithm>
 #include <cmath>

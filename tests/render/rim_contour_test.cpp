@@ -1,4 +1,4 @@
-// rim-contour (seed 000 section 3.7): on the unit sphere seen along z, |n.v| < t is the
+// rim-contour (the |n.v| < t band around the contour): on the unit sphere seen along z, |n.v| < t is the
 // annulus sqrt(1 - t^2) < r < 1; the drawn band matches it within 1 px for several t, also on
 // and the compensated mode gives a band of
 // `width` pixels whatever the curvature.

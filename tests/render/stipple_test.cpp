@@ -1,4 +1,4 @@
-// stipple (seed 001, object-space): dots stay on the surface when the camera orbits, their
+// stipple (object-space dots): dots stay on the surface when the camera orbits, their
 // number grows as light falls, and their size in pixels does not change with zoom.
 // Dots are found as connected components of ink pixels on a sphere whose surface point
 // under each pixel is known analytically.

@@ -1,4 +1,4 @@
-// suggestive-image (seed 000 section 3.8 on the GPU; DeCarlo et al. 2003): on the height
+// suggestive-image (image-space suggestive contours on the GPU; DeCarlo et al. 2003): on the height
 // field z = A sin(kx) (extruded along y) the radial curvature vanishes on the inflection
 // lines x = n pi / k, so D_w(n.v) = 0 there; seen from direction (sin t, 0, cos t) with
 // tan t > A k, w points along +x everywhere, D_w D_w(n.v) has the sign of cos(k x_n), and

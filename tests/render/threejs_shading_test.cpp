@@ -238,7 +238,7 @@ TEST_F(ThreejsShading, PhongMatchesMeshPhongMaterialIncludingHighlight) {
 // MeshPhongMaterial's defaults (specular 0x111111, shininess 30), lit from behind and to the
 // side: at v.h = 0.48 the Schlick term F nearly triples the specular colour, so the rim
 // highlight is mostly Fresnel and (s + 2)/(8 pi) normalisation, the part of three.js's Phong
-// highlight seed 000 could not reproduce.
+// highlight that a plain Phong or Blinn-Phong shader does not reproduce.
 TEST_F(ThreejsShading, PhongDefaultsMatchMeshPhongMaterialWithGrazingFresnel) {
     ThreeScene s;
     s.model = "threejs-phong";

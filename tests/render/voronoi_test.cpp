@@ -1,7 +1,7 @@
-// voronoi (seed 004; Worley 1996): F1 and cell colours against a CPU twin of the shader's hash
+// voronoi (Worley 1996): F1 and cell colours against a CPU twin of the shader's hash
 // and cell search at sampled sphere pixels, edges and isolines where F2 - F1 and F1 say, and
-// the pattern on meshes loaded from OBJ and binary STL files (the seed's version broke on
-// OBJ): the same cells as the CPU reference, several distinct colours, no black holes.
+// the pattern on meshes loaded from OBJ and binary STL files, far from the origin and at very
+// different sizes: the same cells as the CPU reference, several distinct colours, no black holes.
 #include <algorithm>
 #include <cstring>
 #include <fstream>

@@ -92,8 +92,9 @@ TEST(Style, BuiltinsIncludePresetsAndOneStylePerModel) {
     for (const char* composite : {"anime", "ink"}) EXPECT_TRUE(has(composite)) << composite;
 }
 
-// Seed 000 eq. 4: half-Lambert > 0.8 -> 1, > 0.6 -> 0.75, > 0.4 -> 0.5, > 0.2 -> 0.25, else 0.
-TEST(Style, Cel000PresetHoldsSeedNumbers) {
+// Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading Techniques for Anime-Style Rendering",
+// eq. 4: half-Lambert > 0.8 -> 1, > 0.6 -> 0.75, > 0.4 -> 0.5, > 0.2 -> 0.25, else 0.
+TEST(Style, Cel000PresetHoldsFiveBandNumbers) {
     Style s = load_style("cel-000");
     ASSERT_EQ(s.shading.model, "cel");
     const ParamValues p = full_params(s);
@@ -147,10 +148,11 @@ TEST(Style, EveryBuiltinStyleRenders) {
 }
 
 // The composite styles: anime = cel-000 + hull + rim contour + image-space suggestive contours
-// (seed 000's combined result), toon = seed 004's cel + hull outline, ink = white fill + every
-// raster line type; technical = gooch + object-space contours and creases, ink-vector = white
-// fill + the object-space line types as strokes. Each renders the teapot with its lines: dark line pixels, and more of them
-// than the same style without lines.
+// (the anime look of Qu, Chen & Zwicker 2022), toon = cel-004's bands and highlight + hull
+// outline, ink = white fill + every raster line type; technical = gooch + object-space
+// contours and creases, ink-vector = white fill + the object-space line types as strokes.
+// Each renders the teapot with its lines: dark line pixels, and more of them than the same
+// style without lines.
 TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
     auto types_of = [](const Style& s) {
         std::vector<std::string> t;

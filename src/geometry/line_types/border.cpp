@@ -1,4 +1,4 @@
-// `border` (SPEC §3): mesh boundary edges, the edges of exactly one face (extract_creases).
+// `border`: mesh boundary edges, the edges of exactly one face (extract_creases).
 #include "geometry/line_types/object_line_registry.hpp"
 
 namespace inkshade::geometry {

@@ -1,5 +1,5 @@
-// `contour` (SPEC §3): occluding contours, the zero set of n·v interpolated across faces
-// (extract_contours), optionally with seed 002's mesh silhouette edges added.
+// `contour`: occluding contours, the zero set of n·v interpolated across faces
+// (extract_contours), optionally with the whole-edge polygon silhouette added.
 #include "geometry/line_types/object_line_registry.hpp"
 
 namespace inkshade::geometry {
@@ -19,12 +19,12 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
 
 const ObjectLineRegistration registration{
     {.name = "contour",
-     .summary = "occluding contours: zero crossings of n·v interpolated along mesh edges (seed 002 marked whole edges)",
+     .summary = "occluding contours: zero crossings of n·v interpolated along mesh edges (the simple method marks whole edges)",
      .params = object_line_params(
          glm::vec3(0.0f), 1.5f,
          {bool_param("silhouette-edges", false,
-                     "also draw whole mesh edges between a front- and a back-facing face (seed 002's "
-                     "silhouette, not interpolated: jagged on coarse meshes but exactly the polygon outline)")},
+                     "also draw whole mesh edges between a front- and a back-facing face (the "
+                     "polygon silhouette, not interpolated: jagged on coarse meshes but exactly the polygon outline)")},
          1.0f)},
     extract};
 

@@ -1,4 +1,4 @@
-// `crease` (SPEC §3): mesh edges whose dihedral angle exceeds a threshold, convex and concave
+// `crease`: mesh edges whose dihedral angle exceeds a threshold, convex and concave
 // alike, plus non-manifold edges (extract_creases).
 #include "geometry/line_types/object_line_registry.hpp"
 

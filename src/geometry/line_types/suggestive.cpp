@@ -1,5 +1,6 @@
-// `suggestive` (SPEC §3, method (a)): suggestive contours of DeCarlo et al. 2003, trimmed and
-// faded as in DeCarlo et al. 2004 / rtsc (extract_suggestive_contours).
+// `suggestive`: object-space suggestive contours of DeCarlo et al. 2003 (the image-space method is
+// `suggestive-image`), trimmed and faded as in DeCarlo et al. 2004 / rtsc
+// (extract_suggestive_contours).
 #include "geometry/line_types/object_line_registry.hpp"
 #include "geometry/suggestive_contours.hpp"
 

@@ -1,8 +1,10 @@
 #include "inkshade/shading.hpp"
 
 namespace inkshade {
-// Seed 000's intermediate passes for suggestive contours (fig. 8), as debug views, and the
-// radial curvature they approximate (SPEC.md section 2).
+// The intermediate passes of image-space suggestive contours (normals, view vectors, their
+// tangent projection w, n.v; as shown in Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading
+// Techniques for Anime-Style Rendering", fig. 8), as debug views, and the radial curvature they
+// approximate (DeCarlo et al. 2003).
 static const ShadingModelRegistration normal_view{{
     .name = "normal", .summary = "world-space normal, 0.5*n + 0.5", .fragment = "debug/normal.frag",
     .debug_view = true}};

@@ -1,8 +1,9 @@
 #include "inkshade/shading.hpp"
 
 namespace inkshade {
-// Defaults are MToon 1.0's (SPEC.md section 2): shade colour 0, shift 0, toony 0.9, rim colour
-// 0, fresnel power 5, lift 0, rim lighting mix 1. Shadows on: seed 000 enables shadow maps.
+// Defaults are those of the VRM MToon 1.0 specification (VRMC_materials_mtoon; formula in
+// docs/shading.md): shade colour 0, shift 0, toony 0.9, rim colour 0, fresnel power 5, lift 0,
+// rim lighting mix 1. Shadows on: anime-style renderers cast hard shadows from a shadow map.
 // use-material-params: a VRM avatar's materials (face, hair, clothes) each carry their own
 // MToon values, which one style cannot express, so by default they replace the style's values
 // for the parameters a material carries (per material draw, renderer.cpp); off restyles them.
@@ -21,7 +22,8 @@ static const ShadingModelRegistration mtoon_model{{
             float_param("rim-lift", 0.0f, 0.0f, 1.0f, "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
             float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f, "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
             choice_param("convention", {"seeds", "threejs"}, 0,
-                         "seeds: values as they are; threejs: 1/pi light units and sRGB output (three-vrm)"),
+                         "seeds: values as they are, no 1/pi, no sRGB (Inkshade's default convention); "
+                         "threejs: 1/pi light units and sRGB output (three-vrm)"),
             compile_time(bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)")),
             float_param("shadow-softness", 1.5f, 0.0f, 4.0f, "PCF filter radius in shadow-map texels"),
             bool_param("use-material-params", true,

@@ -1,7 +1,7 @@
 #include "inkshade/shading.hpp"
 
 namespace inkshade {
-// Inigo Quilez, "palettes" (iquilezles.org/articles/palettes), as used by seed 004; the
+// Inigo Quilez, "palettes" (iquilezles.org/articles/palettes), a common cosine palette; the
 // defaults are his rainbow example a = b = 0.5, c = 1, d = (0, 0.33, 0.67). c and d are lists
 // (1 or 3 values; one value repeats) because their ranges exceed a colour's [0, 1].
 static const ShadingModelRegistration palette_model{{

@@ -1,7 +1,9 @@
 #include "render/shading/classic_params.hpp"
 
 namespace inkshade {
-// Seed 000 eq. 3; shininess 32 is three.js MeshPhongMaterial's default (30) rounded to 2^5.
+// Phong 1975, "Illumination for Computer Generated Pictures", with the specular term only where
+// n.l > 0 (as in Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading Techniques for Anime-Style
+// Rendering", eq. 3); shininess 32 is three.js MeshPhongMaterial's default (30) rounded to 2^5.
 static const ShadingModelRegistration phong_model{{
     .name = "phong",
     .summary = "C*(A + E*max(n.l,0)) + k_s*E*max(r.v,0)^shininess, specular only where n.l > 0",
