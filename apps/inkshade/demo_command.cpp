@@ -1,5 +1,5 @@
 // `inkshade demo`: the built-in demo of `make run` — the Utah teapot in every built-in style
-// (every shading model, the seed presets and line styles, the debug views), one PNG each plus a
+// (every shading model, the cel presets and line styles, the debug views), one PNG each plus a
 // labelled contact sheet, and the SVG line drawing of the same view.
 #include <cstdio>
 #include <filesystem>

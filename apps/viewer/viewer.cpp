@@ -233,7 +233,7 @@ void Viewer::set_style(Style style) {
 }
 
 void Viewer::cycle_shading_model() {
-    // Seed 001's F key: the next shading model (debug views are in their own panel).
+    // The F key: the next shading model (debug views are in their own panel).
     std::vector<const ShadingModel*> models;
     for (const ShadingModel* m : shading_models())
         if (!m->debug_view) models.push_back(m);
