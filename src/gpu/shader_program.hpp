@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "gpu/gl_handle.hpp"
+
 namespace inkshade::gpu {
 
 class ShaderProgram {
@@ -21,17 +23,15 @@ public:
     ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
                   const std::string& defines = "", const std::string& fragment_defines = "",
                   const std::string& fragment_epilogue = "");
-    ~ShaderProgram();
-    ShaderProgram(const ShaderProgram&) = delete;
-    ShaderProgram& operator=(const ShaderProgram&) = delete;
 
-    void use() const { glUseProgram(id_); }
-    GLuint id() const { return id_; }
+    void use() const { glUseProgram(program_.id()); }
+    GLuint id() const { return program_.id(); }
 
     // Setters ignore uniforms the compiler optimised away (location -1).
     void set(const std::string& name, float v);
     void set(const std::string& name, int v);
     void set(const std::string& name, const glm::vec2& v);
+    void set(const std::string& name, const glm::ivec2& v);
     void set(const std::string& name, const glm::vec3& v);
     void set(const std::string& name, const glm::vec4& v);
     void set(const std::string& name, const glm::mat3& v);
@@ -39,10 +39,8 @@ public:
     void set_array(const std::string& name, const std::vector<float>& v);
     GLint location(const std::string& name);
 
-    void set(const std::string& name, const glm::ivec2& v);
-
 private:
-    GLuint id_ = 0;
+    GlProgram program_;
     std::unordered_map<std::string, GLint> locations_;
 };
 
