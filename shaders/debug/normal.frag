@@ -1,4 +1,4 @@
 #version 450 core
 // Debug view `normal`: world-space unit normal encoded as 0.5 * n + 0.5 (seed 000 fig. 8a).
 #include "common/surface.glsl"
-void main() { o_color = vec4(0.5 * surface().n + 0.5, 1.0); }
+void shade() { o_color = vec4(0.5 * surface().n + 0.5, 1.0); }

@@ -1,4 +1,4 @@
 #version 450 core
 // Debug view `view`: world-space unit vector towards the viewer, 0.5 * v + 0.5 (seed 000 fig. 8b).
 #include "common/surface.glsl"
-void main() { o_color = vec4(0.5 * surface().v + 0.5, 1.0); }
+void shade() { o_color = vec4(0.5 * surface().v + 0.5, 1.0); }

@@ -1,32 +1,11 @@
 #include "gpu/shader_program.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
-#include <sstream>
 
-#include "gpu/embedded_shaders.hpp"
+#include "gpu/shader_source.hpp"
 #include "inkshade/error.hpp"
 
 namespace inkshade::gpu {
-
-std::string shader_source(const std::string& path) {
-    const char* found = nullptr;
-    for (const auto& s : embedded_shaders())
-        if (path == s.path) found = s.contents;
-    if (!found) throw RuntimeError("shader " + path + " is not embedded in this build");
-    // Expand `#include "file"` (one level is enough for our library files, but recurse anyway).
-    std::istringstream in(found);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        if (line.rfind("#include \"", 0) == 0) {
-            size_t end = line.find('"', 10);
-            out += shader_source(line.substr(10, end - 10));
-        } else {
-            out += line;
-            out += '\n';
-        }
-    }
-    return out;
-}
 
 namespace {
 
@@ -35,9 +14,8 @@ std::string first_line(const std::string& log) {
     return line.empty() ? "unknown error" : line;
 }
 
-GlShader compile(GLenum type, const std::string& path, const std::string& defines,
-                 const std::string& epilogue = "") {
-    std::string src = shader_source(path) + epilogue;
+GlShader compile(GLenum type, const std::string& path, const std::string& defines) {
+    std::string src = shader_source(path);
     // Defines right after the #version line, so they precede everything else.
     size_t eol = src.find('\n');
     if (src.rfind("#version", 0) == 0 && eol != std::string::npos) src.insert(eol + 1, defines);
@@ -60,12 +38,11 @@ GlShader compile(GLenum type, const std::string& path, const std::string& define
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                             const std::string& defines, const std::string& fragment_defines,
-                             const std::string& fragment_epilogue) {
+                             const std::string& defines, const std::string& fragment_defines) {
     // The shaders are deleted when they go out of scope, after the link (GL frees them with the
     // program they are attached to).
     const GlShader vs = compile(GL_VERTEX_SHADER, vertex_path, defines);
-    const GlShader fs = compile(GL_FRAGMENT_SHADER, fragment_path, defines + fragment_defines, fragment_epilogue);
+    const GlShader fs = compile(GL_FRAGMENT_SHADER, fragment_path, defines + fragment_defines);
     program_ = GlProgram::create();
     const GLuint id = program_.id();
     glAttachShader(id, vs.id());

@@ -14,15 +14,12 @@ namespace inkshade::gpu {
 
 class ShaderProgram {
 public:
-    // Paths are relative to shaders/ (embedded). `defines` is inserted after #version.
-    // `fragment_defines` go after `defines` in the fragment shader only, and
-    // `fragment_epilogue` (GLSL text) is appended to it: with `#define main NAME` there, the
-    // epilogue wraps the shader's main (how the line passes add render targets and rim lines
-    // to every shading model, src/render/surface_lines.hpp).
+    // Paths are relative to shaders/ (embedded; `#include "file"` lines expanded, see
+    // shader_source.hpp). `defines` is inserted after #version in both stages,
+    // `fragment_defines` after it in the fragment stage only.
     // Throws RuntimeError naming the file and the compiler's first error line.
     ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                  const std::string& defines = "", const std::string& fragment_defines = "",
-                  const std::string& fragment_epilogue = "");
+                  const std::string& defines = "", const std::string& fragment_defines = "");
 
     void use() const { glUseProgram(program_.id()); }
     GLuint id() const { return program_.id(); }

@@ -160,8 +160,7 @@ private:
         }
         const std::string fragment_defines = lines.defines();
         auto& p = programs_[model.name + "|" + defines + fragment_defines];
-        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment, defines, fragment_defines,
-                                                         lines.epilogue(model.fragment));
+        if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment, defines, fragment_defines);
         return *p;
     }
 
