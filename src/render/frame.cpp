@@ -1,7 +1,5 @@
 #include "render/frame.hpp"
 
-#include "inkshade/error.hpp"
-
 namespace inkshade::render {
 
 const LineSettings* Frame::line(const std::string& type) const {

@@ -62,31 +62,10 @@ gpu::GlBuffer upload_buffer(GLsizeiptr size, const void* data) {
 }  // namespace
 
 GpuMesh::GpuMesh(const Mesh& mesh) {
-    // Materials: what the per-material draws need (no pixels), and each distinct image once as
-    // a GL texture (first, so that a texture that fails leaves no buffers behind).
+    // Materials first, so that a texture that fails leaves no buffers behind.
     const bool has_face_materials =
         !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
-    materials_ = mesh.materials;
-    for (Material& m : materials_) {
-        m.texture.reset();
-        has_material_params_ |= !m.mtoon.empty();
-    }
-    if (has_face_materials && mesh.uvs.size() == mesh.positions.size()) {
-        constexpr size_t kWhite = std::numeric_limits<size_t>::max();
-        std::map<const Texture*, size_t> index;
-        material_texture_.assign(mesh.materials.size(), kWhite);
-        for (size_t m = 0; m < mesh.materials.size(); ++m) {
-            const Texture* t = mesh.materials[m].texture.get();
-            if (!t) continue;
-            auto [it, inserted] = index.try_emplace(t, textures_.size());
-            if (inserted) textures_.emplace_back(*t);
-            material_texture_[m] = it->second;
-        }
-        if (!textures_.empty()) {
-            textures_.push_back(gpu::BaseTexture::white());
-            for (size_t& t : material_texture_) t = std::min(t, textures_.size() - 1);
-        }
-    }
+    upload_materials(mesh, has_face_materials);
 
     // Each CPU-side array is uploaded and freed before the next one is built: at 10 M
     // triangles they add up to about 500 MB beside the GL driver's own copies (docs/benchmarks.md).
@@ -128,6 +107,38 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     if (split) source_ = std::move(source);
     std::vector<uint32_t>().swap(source);
 
+    upload_indices(mesh, faces, has_face_materials);
+    std::vector<glm::uvec3>().swap(triangles);
+
+    make_vertex_array();
+}
+
+// What the per-material draws need (no pixels), and each distinct image once as a GL texture.
+void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
+    materials_ = mesh.materials;
+    for (Material& m : materials_) {
+        m.texture.reset();
+        has_material_params_ |= !m.mtoon.empty();
+    }
+    if (has_face_materials && mesh.uvs.size() == mesh.positions.size()) {
+        constexpr size_t kWhite = std::numeric_limits<size_t>::max();
+        std::map<const Texture*, size_t> index;
+        material_texture_.assign(mesh.materials.size(), kWhite);
+        for (size_t m = 0; m < mesh.materials.size(); ++m) {
+            const Texture* t = mesh.materials[m].texture.get();
+            if (!t) continue;
+            auto [it, inserted] = index.try_emplace(t, textures_.size());
+            if (inserted) textures_.emplace_back(*t);
+            material_texture_[m] = it->second;
+        }
+        if (!textures_.empty()) {
+            textures_.push_back(gpu::BaseTexture::white());
+            for (size_t& t : material_texture_) t = std::min(t, textures_.size() - 1);
+        }
+    }
+}
+
+void GpuMesh::upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& faces, bool has_face_materials) {
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
@@ -151,8 +162,9 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
         ranges_.push_back({0, index_count_, kNoMaterial});
         ibo_ = upload_buffer(GLsizeiptr(faces.size() * sizeof(glm::uvec3)), faces.data());
     }
-    std::vector<glm::uvec3>().swap(triangles);
+}
 
+void GpuMesh::make_vertex_array() {
     vao_ = gpu::GlVertexArray::create();
     const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(GpuVertex));

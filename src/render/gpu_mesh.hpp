@@ -52,6 +52,11 @@ public:
     void set_vertex_scalar(const std::vector<float>& per_mesh_vertex);
 
 private:
+    void upload_materials(const Mesh& mesh, bool has_face_materials);
+    // Faces sorted by material when materials change what a draw binds, else in file order.
+    void upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& faces, bool has_face_materials);
+    void make_vertex_array();
+
     struct Range {
         size_t first = 0;  // index offset into the index buffer
         GLsizei count = 0;

@@ -1,7 +1,6 @@
 #include "render/pass_plan.hpp"
 
 #include <algorithm>
-#include <iterator>
 
 #include "render/frame.hpp"
 

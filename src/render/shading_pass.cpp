@@ -76,6 +76,30 @@ bool casts_shadows(const Frame& frame) {
     return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
 }
 
+// The uniforms every shading model reads (common/lighting.glsl, common/surface.glsl).
+void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame) {
+    const Camera& camera = frame.camera;
+    const Light& light = frame.light;
+    const glm::mat4 model_matrix(1.0f);
+    program.set("u_model", model_matrix);
+    program.set("u_view_proj", camera.projection(frame.aspect()) * camera.view());
+    program.set("u_view", camera.view());
+    program.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model_matrix))));
+    program.set("u_eye", camera.eye);
+    program.set("u_view_dir", glm::normalize(camera.target - camera.eye));
+    program.set("u_orthographic", camera.orthographic ? 1 : 0);
+    program.set("u_light_type", light.type == LightType::Point ? 1 : 0);
+    program.set("u_light_pos", light.position);
+    program.set("u_light_target", light.target);
+    program.set("u_light_color", light.color);
+    program.set("u_ambient", light.ambient);
+    program.set("u_base_color", frame.shading.base_color);
+    program.set("u_srgb_output", frame.options.srgb_output ? 1 : 0);
+    program.set("u_bbox_min", frame.bounds.min);
+    program.set("u_bbox_max", frame.bounds.max);
+    program.set("u_viewport_size", glm::vec2(frame.options.width, frame.options.height));
+}
+
 class ShadingPass final : public Pass {
 public:
     void run(Frame& frame) override {
@@ -102,27 +126,8 @@ public:
         std::optional<gpu::CapabilityScope> multisample;
         if (frame.options.samples > 1) multisample.emplace(GL_MULTISAMPLE, true);
 
-        const Camera& camera = frame.camera;
-        const Light& light = frame.light;
         program.use();
-        const glm::mat4 model_matrix(1.0f);
-        program.set("u_model", model_matrix);
-        program.set("u_view_proj", camera.projection(frame.aspect()) * camera.view());
-        program.set("u_view", camera.view());
-        program.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model_matrix))));
-        program.set("u_eye", camera.eye);
-        program.set("u_view_dir", glm::normalize(camera.target - camera.eye));
-        program.set("u_orthographic", camera.orthographic ? 1 : 0);
-        program.set("u_light_type", light.type == LightType::Point ? 1 : 0);
-        program.set("u_light_pos", light.position);
-        program.set("u_light_target", light.target);
-        program.set("u_light_color", light.color);
-        program.set("u_ambient", light.ambient);
-        program.set("u_base_color", shading.base_color);
-        program.set("u_srgb_output", frame.options.srgb_output ? 1 : 0);
-        program.set("u_bbox_min", frame.bounds.min);
-        program.set("u_bbox_max", frame.bounds.max);
-        program.set("u_viewport_size", glm::vec2(frame.options.width, frame.options.height));
+        set_frame_uniforms(program, frame);
         if (casts_shadows(frame)) {
             const ShadowMap& map = *frame.targets.shadow_map;
             map.bind(kShadowUnit);
