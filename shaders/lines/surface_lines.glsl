@@ -1,12 +1,12 @@
 // Surface line types: tests the shading pass makes per fragment after the model's shade()
 // (common/shading_main.glsl), each compiled in by its #define (src/render/surface_lines.cpp).
 //
-// rim-contour (INKSHADE_RIM_CONTOUR): the fragment test of seed 000 section 3.7, |n.v| < t
-// (t = 0.175 there; seed 004 calls it edge thickness), mixed over the shaded colour with
-// coverage from the screen derivative of n.v (anti-aliased band edges, as fwidth does for cel
-// bands). With INKSHADE_RIM_COMPENSATE = 1 the band is instead every pixel within `width` px
-// of the n.v = 0 contour: constant width in pixels whatever the curvature. Near a fold contour
-// n.v grows like the square root of the distance to it, so (n.v)^2 is the linear one:
+// rim-contour (INKSHADE_RIM_CONTOUR): the fragment test |n.v| < t (t = `threshold`, 0.175 by
+// default; docs/lines-raster.md), mixed over the shaded colour with coverage from the screen
+// derivative of n.v (anti-aliased band edges, as fwidth does for cel bands). With
+// INKSHADE_RIM_COMPENSATE = 1 the band is instead every pixel within `width` px of the
+// n.v = 0 contour: constant width in pixels whatever the curvature. Near a fold contour n.v
+// grows like the square root of the distance to it, so (n.v)^2 is the linear one:
 // distance = (n.v)^2 / |grad (n.v)^2| = |n.v| / (2 |grad n.v|) (a Newton step).
 // n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl).
 // Reads common/surface.glsl's v_world_pos and v_world_normal (it is included from there).

@@ -1,6 +1,7 @@
 // The registry of pass types: each registers itself from its own file (PassRegistration).
 #include <algorithm>
 #include <deque>
+#include <stdexcept>
 
 #include "render/pass.hpp"
 
@@ -15,7 +16,10 @@ std::deque<PassType>& registry() {  // a deque: registered types never move
 
 }  // namespace
 
-PassRegistration::PassRegistration(PassType type) { registry().push_back(std::move(type)); }
+PassRegistration::PassRegistration(PassType type) {
+    if (!type.plan || !type.create) throw std::logic_error("pass " + type.name + " registered without plan or create");
+    registry().push_back(std::move(type));
+}
 
 std::vector<const PassType*> pass_types() {
     std::vector<const PassType*> out;

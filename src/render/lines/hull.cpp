@@ -1,6 +1,6 @@
-// `hull`: the inverted hull silhouette (seeds 000 section 3.6 and 001): a copy of the mesh
-// pushed out along its welded normals, front faces culled, drawn in the line colour after the
-// shaded model so only the rim around it (and around parts in front of others) stays visible.
+// `hull`: the inverted hull silhouette (docs/lines-raster.md): a copy of the mesh pushed out
+// along its welded normals, front faces culled, drawn in the line colour after the shaded
+// model so only the rim around it (and around parts in front of others) stays visible.
 #include "gpu/shader_program.hpp"
 #include "render/frame.hpp"
 #include "render/lines/back_face_shell.hpp"
