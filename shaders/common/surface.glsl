@@ -1,4 +1,6 @@
-// Fragment-stage inputs shared by the shading models, and the per-pixel surface frame.
+// Fragment-stage inputs shared by the shading models, and the per-pixel surface frame. A model
+// defines `void shade()`, writing o_color; main is common/shading_main.glsl's (included at the
+// end), which runs shade() and then the surface line types.
 #include "common/lighting.glsl"
 
 in vec3 v_world_pos;
@@ -47,3 +49,5 @@ Surface surface() {
 #endif
     return s;
 }
+
+#include "common/shading_main.glsl"

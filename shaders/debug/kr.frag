@@ -7,7 +7,7 @@
 #include "common/surface.glsl"  // outputs, bounding box
 in float v_kr;
 uniform float u_range;
-void main() {
+void shade() {
     float feature = 0.01 * length(u_bbox_max - u_bbox_min);
     float t = clamp(v_kr * feature / u_range, -1.0, 1.0);
     vec3 c = t >= 0.0 ? mix(vec3(1.0), vec3(0.85, 0.1, 0.05), t) : mix(vec3(1.0), vec3(0.05, 0.25, 0.85), -t);

@@ -1,27 +1,25 @@
-// Appended to a shading model's fragment shader (src/render/surface_lines.cpp) whose main was
-// renamed inkshade_shading_main by `#define main inkshade_shading_main`: runs the model, then
-// the rim-contour test (seed 000 section 3.7): |n.v| < t (t = 0.175 there; seed 004 calls it
-// edge thickness), mixed over the shaded colour with coverage from the screen derivative of
-// n.v (anti-aliased band edges, as fwidth does for cel bands). With INKSHADE_RIM_COMPENSATE = 1
-// the band is instead every pixel within `width` px of the n.v = 0 contour: constant width in
-// pixels whatever the curvature. Near a fold contour n.v grows like the square root of the
-// distance to it, so (n.v)^2 is the linear one: distance = (n.v)^2 / |grad (n.v)^2|
-// = |n.v| / (2 |grad n.v|) (a Newton step).
+// Surface line types: tests the shading pass makes per fragment after the model's shade()
+// (common/shading_main.glsl), each compiled in by its #define (src/render/surface_lines.cpp).
+//
+// rim-contour (INKSHADE_RIM_CONTOUR): the fragment test |n.v| < t (t = `threshold`, 0.175 by
+// default; docs/lines-raster.md), mixed over the shaded colour with coverage from the screen
+// derivative of n.v (anti-aliased band edges, as fwidth does for cel bands). With
+// INKSHADE_RIM_COMPENSATE = 1 the band is instead every pixel within `width` px of the
+// n.v = 0 contour: constant width in pixels whatever the curvature. Near a fold contour n.v
+// grows like the square root of the distance to it, so (n.v)^2 is the linear one:
+// distance = (n.v)^2 / |grad (n.v)^2| = |n.v| / (2 |grad n.v|) (a Newton step).
 // n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl).
-#undef main
+// Reads common/surface.glsl's v_world_pos and v_world_normal (it is included from there).
+#include "common/lighting.glsl"
 
-#ifndef INKSHADE_SURFACE_INPUTS
-in vec3 v_world_pos;
-in vec3 v_world_normal;
-#endif
-
+#ifdef INKSHADE_RIM_CONTOUR
 uniform float u_rim_contour_threshold;
 uniform vec3 u_rim_contour_color;
 uniform float u_rim_contour_opacity;
 uniform float u_rim_contour_width;  // pixels, compensated mode
 
-void main() {
-    inkshade_shading_main();
+// `shaded` with the rim line mixed over it.
+vec3 rim_contour(vec3 shaded) {
     vec3 n = normalize(v_world_normal);
     if (!gl_FrontFacing) n = -n;
     float ndotv = dot(n, to_viewer(v_world_pos));
@@ -31,5 +29,6 @@ void main() {
 #else
     float coverage = clamp((u_rim_contour_threshold - abs(ndotv)) / grad + 0.5, 0.0, 1.0);
 #endif
-    o_color.rgb = mix(o_color.rgb, u_rim_contour_color, u_rim_contour_opacity * coverage);
+    return mix(shaded, u_rim_contour_color, u_rim_contour_opacity * coverage);
 }
+#endif

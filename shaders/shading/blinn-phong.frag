@@ -5,7 +5,7 @@
 uniform float u_shininess;
 uniform vec3 u_specular;
 
-void main() {
+void shade() {
     Surface s = surface();
     float ndotl = dot(s.n, s.l);
     vec3 h = normalize(s.l + s.v);

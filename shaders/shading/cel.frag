@@ -60,7 +60,7 @@ float band_level(float d) {
     return level + remaining * u_levels[clamp(u_levels_count - 1, 0, kMaxLevels - 1)];
 }
 
-void main() {
+void shade() {
     Surface s = surface();
     float ndotl = dot(s.n, s.l);
     float d = (u_driver == 0) ? 0.5 * ndotl + 0.5 : max(ndotl, 0.0);

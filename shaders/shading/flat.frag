@@ -3,7 +3,7 @@
 // dFdx(p) x dFdy(p) (the triangle's plane), then Lambert: C * (E * max(n.l, 0) + A).
 #include "common/surface.glsl"
 
-void main() {
+void shade() {
     Surface s = surface();
     vec3 n = normalize(cross(dFdx(s.p), dFdy(s.p)));  // faces the viewer by construction
     o_color = encode_output(s.albedo * (u_light_color * lambert(n, s.l) + u_ambient));

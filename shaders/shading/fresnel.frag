@@ -13,7 +13,7 @@ uniform float u_intensity;
 uniform vec3 u_glow_color;
 uniform int u_mode;  // 0 add, 1 replace
 
-void main() {
+void shade() {
     Surface s = surface();
     float f = pow(clamp(1.0 - abs(dot(s.n, s.v)), 0.0, 1.0), u_power);
     vec3 rim = u_intensity * u_glow_color * f;

@@ -19,7 +19,7 @@ uniform float u_beta;
 uniform int u_specular;
 uniform float u_shininess;
 
-void main() {
+void shade() {
     Surface s = surface();
     float ndotl = dot(s.n, s.l);
     vec3 k_cool = vec3(0.0, 0.0, u_blue) + u_alpha * s.albedo;

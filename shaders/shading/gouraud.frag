@@ -4,7 +4,7 @@
 // as fixed-function Gouraud with GL_MODULATE did).
 #include "common/surface.glsl"
 
-void main() {
+void shade() {
     vec3 c = v_color;
 #ifdef INKSHADE_BASE_TEXTURE
     c *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;

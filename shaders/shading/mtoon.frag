@@ -26,7 +26,7 @@ uniform float u_shadow_softness;
 
 float linearstep(float a, float b, float x) { return clamp((x - a) / max(b - a, 1e-6), 0.0, 1.0); }
 
-void main() {
+void shade() {
     Surface s = surface();
     const float kInvPi = 0.31830988618;
     float k = (u_convention == 1) ? kInvPi : 1.0;

@@ -21,7 +21,7 @@ float box_fraction(int axis) {
     return extent > 0.0 ? clamp((v_object_pos[axis] - u_bbox_min[axis]) / extent, 0.0, 1.0) : 0.0;
 }
 
-void main() {
+void shade() {
     Surface s = surface();
     float ndotl = dot(s.n, s.l);
     float t;

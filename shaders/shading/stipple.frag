@@ -71,7 +71,7 @@ float level_ink(vec3 q, vec3 n, float h, float pix, float presence) {
     return ink;
 }
 
-void main() {
+void shade() {
     Surface s = surface();
     vec3 q = normalized_object_pos();
     // Pixel footprint on the surface from the singular values s_min <= s_max of the Jacobian

@@ -4,4 +4,4 @@
 #include "common/threejs.glsl"
 uniform vec3 u_color;  // linear (the parameter is sRGB, decoded on the CPU)
 
-void main() { o_color = threejs_output(surface().albedo * u_color); }
+void shade() { o_color = threejs_output(surface().albedo * u_color); }

@@ -8,7 +8,7 @@ uniform vec3 u_color;     // linear (sRGB parameters are decoded on the CPU)
 uniform vec3 u_emissive;
 uniform float u_emissive_intensity;
 
-void main() {
+void shade() {
     Surface s = surface();
     vec3 irradiance = threejs_direct_light(s.p) * max(dot(s.n, s.l), 0.0) + threejs_ambient();
     vec3 c = irradiance * kThreejsReciprocalPi * (s.albedo * u_color) + u_emissive * u_emissive_intensity;

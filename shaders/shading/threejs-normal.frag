@@ -4,7 +4,7 @@
 #include "common/surface.glsl"
 uniform mat4 u_view;  // world to view (camera) space
 
-void main() {
+void shade() {
     vec3 n = normalize(mat3(u_view) * surface().n);
     o_color = vec4(0.5 * n + 0.5, 1.0);
 }

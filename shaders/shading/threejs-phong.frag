@@ -13,7 +13,7 @@ uniform float u_shininess;
 uniform vec3 u_emissive;
 uniform float u_emissive_intensity;
 
-void main() {
+void shade() {
     Surface s = surface();
     vec3 irradiance = threejs_direct_light(s.p) * max(dot(s.n, s.l), 0.0);
     vec3 h = normalize(s.l + s.v);

@@ -22,7 +22,7 @@ float gradient_irradiance(float u) {
 #endif
 }
 
-void main() {
+void shade() {
     Surface s = surface();
     float g = gradient_irradiance(0.5 * dot(s.n, s.l) + 0.5);
     vec3 irradiance = threejs_direct_light(s.p) * g + threejs_ambient();

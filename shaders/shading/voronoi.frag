@@ -30,7 +30,7 @@ vec3 cell_color(ivec3 c) {
     return mix(vec3(0.15), hue, 0.55 + 0.45 * h.y);
 }
 
-void main() {
+void shade() {
     Surface s = surface();
     vec3 x = normalized_object_pos() * u_scale;
     // Feature points lie within kCellJitter of their cell centres (cell_point), so the nearest

@@ -42,23 +42,19 @@ BaseTexture BaseTexture::white() {
     return BaseTexture(1, 1, texel);
 }
 
-BaseTexture::BaseTexture(int width, int height, const uint8_t* rgba) {
+BaseTexture::BaseTexture(int width, int height, const uint8_t* rgba) : texture_(GlTexture::create(GL_TEXTURE_2D)) {
     const GLsizei levels = GLsizei(std::bit_width(unsigned(std::max(width, height))));
-    glCreateTextures(GL_TEXTURE_2D, 1, &id_);
-    glTextureStorage2D(id_, levels, GL_SRGB8_ALPHA8, width, height);
+    const GLuint id = texture_.id();
+    glTextureStorage2D(id, levels, GL_SRGB8_ALPHA8, width, height);
     // RGBA8 rows are 4-byte aligned, as the default unpack alignment expects.
-    glTextureSubImage2D(id_, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    glGenerateTextureMipmap(id_);
-    glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTextureSubImage2D(id, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glGenerateTextureMipmap(id);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
     if (const float anisotropy = max_anisotropy(); anisotropy > 1.0f)
-        glTextureParameterf(id_, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
-}
-
-BaseTexture::~BaseTexture() {
-    if (id_) glDeleteTextures(1, &id_);
+        glTextureParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
 }
 
 }  // namespace inkshade::gpu

@@ -5,6 +5,7 @@
 #pragma once
 #include <epoxy/gl.h>
 
+#include "gpu/gl_handle.hpp"
 #include "inkshade/mesh.hpp"
 
 namespace inkshade::gpu {
@@ -16,18 +17,13 @@ public:
     // A 1x1 white texel: sRGB 255 decodes to exactly 1.0, so untextured materials of a textured
     // mesh keep their colour bit for bit.
     static BaseTexture white();
-    ~BaseTexture();
-    BaseTexture(BaseTexture&& other) noexcept : id_(other.id_) { other.id_ = 0; }
-    BaseTexture(const BaseTexture&) = delete;
-    BaseTexture& operator=(const BaseTexture&) = delete;
-    BaseTexture& operator=(BaseTexture&&) = delete;
 
-    GLuint id() const { return id_; }
-    void bind(GLuint unit) const { glBindTextureUnit(unit, id_); }
+    GLuint id() const { return texture_.id(); }
+    void bind(GLuint unit) const { glBindTextureUnit(unit, texture_.id()); }
 
 private:
     BaseTexture(int width, int height, const uint8_t* rgba);
-    GLuint id_ = 0;
+    GlTexture texture_;
 };
 
 }  // namespace inkshade::gpu

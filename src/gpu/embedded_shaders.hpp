@@ -1,6 +1,6 @@
-// GLSL sources embedded at build time by cmake/embed_files.cmake.
+// GLSL sources embedded at build time by cmake/embed_files.cmake (shader_source.hpp expands
+// their includes).
 #pragma once
-#include <string>
 #include <vector>
 
 #include "core/embedded_file.hpp"
@@ -9,9 +9,5 @@ namespace inkshade::gpu {
 
 // Every file under shaders/, paths relative to it (e.g. "shading/lambert.frag").
 const std::vector<EmbeddedFile>& embedded_shaders();
-
-// Source of one embedded shader with `#include "file"` lines expanded (paths relative to
-// shaders/). Throws RuntimeError when a file is missing.
-std::string shader_source(const std::string& path);
 
 }  // namespace inkshade::gpu

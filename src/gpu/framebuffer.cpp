@@ -17,58 +17,50 @@ Framebuffer::Framebuffer(int width, int height, int samples)
                            " is outside what this OpenGL supports (1.." + std::to_string(max_size) + ")");
     samples_ = std::min(samples_, std::max(1, int(max_samples)));
 
-    glCreateRenderbuffers(1, &msaa_color_);
-    glCreateRenderbuffers(1, &msaa_depth_);
+    msaa_color_ = GlRenderbuffer::create();
+    msaa_depth_ = GlRenderbuffer::create();
     if (samples_ > 1) {
-        glNamedRenderbufferStorageMultisample(msaa_color_, samples_, GL_RGBA8, width, height);
-        glNamedRenderbufferStorageMultisample(msaa_depth_, samples_, GL_DEPTH32F_STENCIL8, width, height);
+        glNamedRenderbufferStorageMultisample(msaa_color_.id(), samples_, GL_RGBA8, width, height);
+        glNamedRenderbufferStorageMultisample(msaa_depth_.id(), samples_, GL_DEPTH32F_STENCIL8, width, height);
     } else {
         // Multisample storage with 1 sample may still be multisampled (llvmpipe rounds 1 up
         // to 4): samples = 1 must mean no MSAA, so use plain storage.
-        glNamedRenderbufferStorage(msaa_color_, GL_RGBA8, width, height);
-        glNamedRenderbufferStorage(msaa_depth_, GL_DEPTH32F_STENCIL8, width, height);
+        glNamedRenderbufferStorage(msaa_color_.id(), GL_RGBA8, width, height);
+        glNamedRenderbufferStorage(msaa_depth_.id(), GL_DEPTH32F_STENCIL8, width, height);
     }
-    glCreateFramebuffers(1, &msaa_fbo_);
-    glNamedFramebufferRenderbuffer(msaa_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
-    glNamedFramebufferRenderbuffer(msaa_fbo_, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
+    msaa_fbo_ = GlFramebuffer::create();
+    glNamedFramebufferRenderbuffer(msaa_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_.id());
+    glNamedFramebufferRenderbuffer(msaa_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_.id());
 
-    glCreateRenderbuffers(1, &resolve_color_);
-    glNamedRenderbufferStorage(resolve_color_, GL_RGBA8, width, height);
-    glCreateFramebuffers(1, &resolve_fbo_);
-    glNamedFramebufferRenderbuffer(resolve_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color_);
+    resolve_color_ = GlRenderbuffer::create();
+    glNamedRenderbufferStorage(resolve_color_.id(), GL_RGBA8, width, height);
+    resolve_fbo_ = GlFramebuffer::create();
+    glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color_.id());
 
-    if (glCheckNamedFramebufferStatus(msaa_fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
-        glCheckNamedFramebufferStatus(resolve_fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    if (glCheckNamedFramebufferStatus(msaa_fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+        glCheckNamedFramebufferStatus(resolve_fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
                            " framebuffer (out of memory?)");
 }
 
-Framebuffer::~Framebuffer() {
-    glDeleteFramebuffers(1, &msaa_fbo_);
-    glDeleteFramebuffers(1, &resolve_fbo_);
-    glDeleteRenderbuffers(1, &msaa_color_);
-    glDeleteRenderbuffers(1, &msaa_depth_);
-    glDeleteRenderbuffers(1, &resolve_color_);
-}
-
 void Framebuffer::bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_.id());
     glViewport(0, 0, width_, height_);
 }
 
 void Framebuffer::bind_resolved() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_.id());
     glViewport(0, 0, width_, height_);
 }
 
 void Framebuffer::resolve() const {
-    glBlitNamedFramebuffer(msaa_fbo_, resolve_fbo_, 0, 0, width_, height_, 0, 0, width_, height_,
+    glBlitNamedFramebuffer(msaa_fbo_.id(), resolve_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 Image Framebuffer::read(bool unpremultiply) const {
     Image image(width_, height_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
     flip_vertically(image);  // GL's first row is the bottom one; images are stored top row first

@@ -4,6 +4,7 @@
 #pragma once
 #include <epoxy/gl.h>
 
+#include "gpu/gl_handle.hpp"
 #include "inkshade/image.hpp"
 
 namespace inkshade::gpu {
@@ -12,9 +13,6 @@ class Framebuffer {
 public:
     // samples = 1 disables MSAA. Throws RuntimeError when incomplete (size too large, ...).
     Framebuffer(int width, int height, int samples);
-    ~Framebuffer();
-    Framebuffer(const Framebuffer&) = delete;
-    Framebuffer& operator=(const Framebuffer&) = delete;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -31,8 +29,8 @@ public:
 
 private:
     int width_, height_, samples_;
-    GLuint msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
-    GLuint resolve_fbo_ = 0, resolve_color_ = 0;
+    GlRenderbuffer msaa_color_, msaa_depth_, resolve_color_;
+    GlFramebuffer msaa_fbo_, resolve_fbo_;
 };
 
 }  // namespace inkshade::gpu

@@ -1,32 +1,11 @@
 #include "gpu/shader_program.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
-#include <sstream>
 
-#include "gpu/embedded_shaders.hpp"
+#include "gpu/shader_source.hpp"
 #include "inkshade/error.hpp"
 
 namespace inkshade::gpu {
-
-std::string shader_source(const std::string& path) {
-    const char* found = nullptr;
-    for (const auto& s : embedded_shaders())
-        if (path == s.path) found = s.contents;
-    if (!found) throw RuntimeError("shader " + path + " is not embedded in this build");
-    // Expand `#include "file"` (one level is enough for our library files, but recurse anyway).
-    std::istringstream in(found);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        if (line.rfind("#include \"", 0) == 0) {
-            size_t end = line.find('"', 10);
-            out += shader_source(line.substr(10, end - 10));
-        } else {
-            out += line;
-            out += '\n';
-        }
-    }
-    return out;
-}
 
 namespace {
 
@@ -35,25 +14,22 @@ std::string first_line(const std::string& log) {
     return line.empty() ? "unknown error" : line;
 }
 
-GLuint compile(GLenum type, const std::string& path, const std::string& defines,
-               const std::string& epilogue = "") {
-    std::string src = shader_source(path) + epilogue;
-    // Put defines right after the #version line so they precede everything else.
+GlShader compile(GLenum type, const std::string& path, const std::string& defines) {
+    std::string src = shader_source(path);
+    // Defines right after the #version line, so they precede everything else.
     size_t eol = src.find('\n');
-    if (src.rfind("#version", 0) == 0 && eol != std::string::npos)
-        src.insert(eol + 1, defines);
-    GLuint shader = glCreateShader(type);
+    if (src.rfind("#version", 0) == 0 && eol != std::string::npos) src.insert(eol + 1, defines);
+    GlShader shader = GlShader::create(type);
     const char* text = src.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
     GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok) {
         GLint len = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+        glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &len);
         std::string log(size_t(std::max(len, 1)), '\0');
-        glGetShaderInfoLog(shader, len, nullptr, log.data());
-        glDeleteShader(shader);
+        glGetShaderInfoLog(shader.id(), len, nullptr, log.data());
         throw RuntimeError("shader " + path + " does not compile: " + first_line(log));
     }
     return shader;
@@ -62,72 +38,57 @@ GLuint compile(GLenum type, const std::string& path, const std::string& defines,
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                             const std::string& defines, const std::string& fragment_defines,
-                             const std::string& fragment_epilogue) {
-    GLuint vs = compile(GL_VERTEX_SHADER, vertex_path, defines);
-    GLuint fs = 0;
-    try {
-        fs = compile(GL_FRAGMENT_SHADER, fragment_path, defines + fragment_defines, fragment_epilogue);
-    } catch (...) {
-        glDeleteShader(vs);
-        throw;
-    }
-    id_ = glCreateProgram();
-    glAttachShader(id_, vs);
-    glAttachShader(id_, fs);
-    glLinkProgram(id_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+                             const std::string& defines, const std::string& fragment_defines) {
+    // The shaders are deleted when they go out of scope, after the link (GL frees them with the
+    // program they are attached to).
+    const GlShader vs = compile(GL_VERTEX_SHADER, vertex_path, defines);
+    const GlShader fs = compile(GL_FRAGMENT_SHADER, fragment_path, defines + fragment_defines);
+    program_ = GlProgram::create();
+    const GLuint id = program_.id();
+    glAttachShader(id, vs.id());
+    glAttachShader(id, fs.id());
+    glLinkProgram(id);
     GLint ok = 0;
-    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    glGetProgramiv(id, GL_LINK_STATUS, &ok);
     if (!ok) {
         GLint len = 0;
-        glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
+        glGetProgramiv(id, GL_INFO_LOG_LENGTH, &len);
         std::string log(size_t(std::max(len, 1)), '\0');
-        glGetProgramInfoLog(id_, len, nullptr, log.data());
-        glDeleteProgram(id_);
-        throw RuntimeError("program " + vertex_path + " + " + fragment_path +
-                           " does not link: " + first_line(log));
+        glGetProgramInfoLog(id, len, nullptr, log.data());
+        throw RuntimeError("program " + vertex_path + " + " + fragment_path + " does not link: " + first_line(log));
     }
-}
-
-ShaderProgram::~ShaderProgram() {
-    if (id_) glDeleteProgram(id_);
 }
 
 GLint ShaderProgram::location(const std::string& name) {
     auto it = locations_.find(name);
     if (it != locations_.end()) return it->second;
-    GLint loc = glGetUniformLocation(id_, name.c_str());
+    GLint loc = glGetUniformLocation(program_.id(), name.c_str());
     locations_.emplace(name, loc);
     return loc;
 }
 
-void ShaderProgram::set(const std::string& name, float v) { glProgramUniform1f(id_, location(name), v); }
-void ShaderProgram::set(const std::string& name, int v) { glProgramUniform1i(id_, location(name), v); }
+void ShaderProgram::set(const std::string& name, float v) { glProgramUniform1f(id(), location(name), v); }
+void ShaderProgram::set(const std::string& name, int v) { glProgramUniform1i(id(), location(name), v); }
 void ShaderProgram::set(const std::string& name, const glm::vec2& v) {
-    glProgramUniform2fv(id_, location(name), 1, glm::value_ptr(v));
+    glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& name, const glm::ivec2& v) {
-    glProgramUniform2i(id_, location(name), v.x, v.y);
+    glProgramUniform2i(id(), location(name), v.x, v.y);
 }
 void ShaderProgram::set(const std::string& name, const glm::vec3& v) {
-    glProgramUniform3fv(id_, location(name), 1, glm::value_ptr(v));
+    glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& name, const glm::vec4& v) {
-    glProgramUniform4fv(id_, location(name), 1, glm::value_ptr(v));
+    glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& name, const glm::mat3& v) {
-    glProgramUniformMatrix3fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(v));
+    glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& name, const glm::mat4& v) {
-    glProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(v));
+    glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }
-
-}  // namespace inkshade::gpu
-
-namespace inkshade::gpu {
 void ShaderProgram::set_array(const std::string& name, const std::vector<float>& v) {
-    glProgramUniform1fv(id_, location(name), GLsizei(v.size()), v.data());
+    glProgramUniform1fv(id(), location(name), GLsizei(v.size()), v.data());
 }
+
 }  // namespace inkshade::gpu

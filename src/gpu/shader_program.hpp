@@ -8,30 +8,27 @@
 
 #include <glm/glm.hpp>
 
+#include "gpu/gl_handle.hpp"
+
 namespace inkshade::gpu {
 
 class ShaderProgram {
 public:
-    // Paths are relative to shaders/ (embedded). `defines` is inserted after #version.
-    // `fragment_defines` go after `defines` in the fragment shader only, and
-    // `fragment_epilogue` (GLSL text) is appended to it: with `#define main NAME` there, the
-    // epilogue wraps the shader's main (how the line passes add render targets and rim lines
-    // to every shading model, src/render/surface_lines.hpp).
+    // Paths are relative to shaders/ (embedded; `#include "file"` lines expanded, see
+    // shader_source.hpp). `defines` is inserted after #version in both stages,
+    // `fragment_defines` after it in the fragment stage only.
     // Throws RuntimeError naming the file and the compiler's first error line.
     ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                  const std::string& defines = "", const std::string& fragment_defines = "",
-                  const std::string& fragment_epilogue = "");
-    ~ShaderProgram();
-    ShaderProgram(const ShaderProgram&) = delete;
-    ShaderProgram& operator=(const ShaderProgram&) = delete;
+                  const std::string& defines = "", const std::string& fragment_defines = "");
 
-    void use() const { glUseProgram(id_); }
-    GLuint id() const { return id_; }
+    void use() const { glUseProgram(program_.id()); }
+    GLuint id() const { return program_.id(); }
 
     // Setters ignore uniforms the compiler optimised away (location -1).
     void set(const std::string& name, float v);
     void set(const std::string& name, int v);
     void set(const std::string& name, const glm::vec2& v);
+    void set(const std::string& name, const glm::ivec2& v);
     void set(const std::string& name, const glm::vec3& v);
     void set(const std::string& name, const glm::vec4& v);
     void set(const std::string& name, const glm::mat3& v);
@@ -39,10 +36,8 @@ public:
     void set_array(const std::string& name, const std::vector<float>& v);
     GLint location(const std::string& name);
 
-    void set(const std::string& name, const glm::ivec2& v);
-
 private:
-    GLuint id_ = 0;
+    GlProgram program_;
     std::unordered_map<std::string, GLint> locations_;
 };
 

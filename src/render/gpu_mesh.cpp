@@ -50,11 +50,71 @@ bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
     return true;
 }
 
+namespace {
+
+// An immutable buffer holding `size` bytes from `data`.
+gpu::GlBuffer upload_buffer(GLsizeiptr size, const void* data) {
+    gpu::GlBuffer buffer = gpu::GlBuffer::create();
+    glNamedBufferStorage(buffer.id(), size, data, 0);
+    return buffer;
+}
+
+}  // namespace
+
 GpuMesh::GpuMesh(const Mesh& mesh) {
-    // Materials: what the per-material draws need (no pixels), and each distinct image once as
-    // a GL texture (first, so that a texture that fails leaves no buffers behind).
+    // Materials first, so that a texture that fails leaves no buffers behind.
     const bool has_face_materials =
         !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
+    upload_materials(mesh, has_face_materials);
+
+    // Each CPU-side array is uploaded and freed before the next one is built: at 10 M
+    // triangles they add up to about 500 MB beside the GL driver's own copies (docs/benchmarks.md).
+    std::vector<GpuVertex> vertices;
+    std::vector<glm::uvec3> triangles;
+    std::vector<uint32_t> source;
+    const bool split = build_vertex_stream(mesh, vertices, triangles, source);
+    const std::vector<glm::uvec3>& faces = split ? triangles : mesh.triangles;
+    auto source_of = [&](size_t i) { return split ? source[i] : uint32_t(i); };
+    index_count_ = GLsizei(faces.size() * 3);
+    const size_t stream_size = vertices.size();
+    vbo_ = upload_buffer(GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data());
+    std::vector<GpuVertex>().swap(vertices);
+
+    {
+        const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
+        std::vector<glm::vec3> hull_normals(stream_size);
+        for (size_t i = 0; i < stream_size; ++i) hull_normals[i] = welded[source_of(i)];
+        hull_normal_vbo_ = upload_buffer(GLsizeiptr(hull_normals.size() * sizeof(glm::vec3)), hull_normals.data());
+    }
+    // Object id per stream vertex: every face using a vertex has the same id (components are
+    // unions over shared positions; the stream splits vertices by material when faces have
+    // materials), except for meshes with both vertex colours and several materials, where
+    // the last face wins.
+    {
+        const std::vector<uint32_t> face_ids = face_object_ids(mesh);
+        std::vector<uint32_t> vertex_ids(stream_size, 0);
+        for (size_t f = 0; f < faces.size(); ++f)
+            for (int k = 0; k < 3; ++k)
+                if (faces[f][k] < vertex_ids.size()) vertex_ids[faces[f][k]] = face_ids[f];
+        object_id_vbo_ = upload_buffer(GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data());
+    }
+    if (textured()) {
+        std::vector<glm::vec2> uvs(stream_size);
+        for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source_of(i)];
+        uv_vbo_ = upload_buffer(GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data());
+    }
+    // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
+    if (split) source_ = std::move(source);
+    std::vector<uint32_t>().swap(source);
+
+    upload_indices(mesh, faces, has_face_materials);
+    std::vector<glm::uvec3>().swap(triangles);
+
+    make_vertex_array();
+}
+
+// What the per-material draws need (no pixels), and each distinct image once as a GL texture.
+void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
     materials_ = mesh.materials;
     for (Material& m : materials_) {
         m.texture.reset();
@@ -76,51 +136,9 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
             for (size_t& t : material_texture_) t = std::min(t, textures_.size() - 1);
         }
     }
+}
 
-    // Each CPU-side array is uploaded and freed before the next one is built: at 10 M
-    // triangles they add up to about 500 MB beside the GL driver's own copies (docs/benchmarks.md).
-    std::vector<GpuVertex> vertices;
-    std::vector<glm::uvec3> triangles;
-    std::vector<uint32_t> source;
-    const bool split = build_vertex_stream(mesh, vertices, triangles, source);
-    const std::vector<glm::uvec3>& faces = split ? triangles : mesh.triangles;
-    auto source_of = [&](size_t i) { return split ? source[i] : uint32_t(i); };
-    index_count_ = GLsizei(faces.size() * 3);
-    const size_t stream_size = vertices.size();
-    glCreateBuffers(1, &vbo_);
-    glNamedBufferStorage(vbo_, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), 0);
-    std::vector<GpuVertex>().swap(vertices);
-
-    {
-        const std::vector<glm::vec3> welded = welded_vertex_normals(mesh);
-        std::vector<glm::vec3> hull_normals(stream_size);
-        for (size_t i = 0; i < stream_size; ++i) hull_normals[i] = welded[source_of(i)];
-        glCreateBuffers(1, &hull_normal_vbo_);
-        glNamedBufferStorage(hull_normal_vbo_, GLsizeiptr(hull_normals.size() * sizeof(glm::vec3)), hull_normals.data(), 0);
-    }
-    // Object id per stream vertex: every face using a vertex has the same id (components are
-    // unions over shared positions; the stream splits vertices by material when faces have
-    // materials), except for meshes with both vertex colours and several materials, where
-    // the last face wins.
-    {
-        const std::vector<uint32_t> face_ids = face_object_ids(mesh);
-        std::vector<uint32_t> vertex_ids(stream_size, 0);
-        for (size_t f = 0; f < faces.size(); ++f)
-            for (int k = 0; k < 3; ++k)
-                if (faces[f][k] < vertex_ids.size()) vertex_ids[faces[f][k]] = face_ids[f];
-        glCreateBuffers(1, &object_id_vbo_);
-        glNamedBufferStorage(object_id_vbo_, GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data(), 0);
-    }
-    if (textured()) {
-        std::vector<glm::vec2> uvs(stream_size);
-        for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source_of(i)];
-        glCreateBuffers(1, &uv_vbo_);
-        glNamedBufferStorage(uv_vbo_, GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data(), 0);
-    }
-    // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
-    if (split) source_ = std::move(source);
-    std::vector<uint32_t>().swap(source);
-
+void GpuMesh::upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& faces, bool has_face_materials) {
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
@@ -139,51 +157,41 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
                 ranges_.push_back({i * 3, 0, key(order[i])});
             ranges_.back().count += 3;
         }
-        glCreateBuffers(1, &ibo_);
-        glNamedBufferStorage(ibo_, GLsizeiptr(sorted.size() * sizeof(glm::uvec3)), sorted.data(), 0);
+        ibo_ = upload_buffer(GLsizeiptr(sorted.size() * sizeof(glm::uvec3)), sorted.data());
     } else {
         ranges_.push_back({0, index_count_, kNoMaterial});
-        glCreateBuffers(1, &ibo_);
-        glNamedBufferStorage(ibo_, GLsizeiptr(faces.size() * sizeof(glm::uvec3)), faces.data(), 0);
-    }
-    std::vector<glm::uvec3>().swap(triangles);
-
-    glCreateVertexArrays(1, &vao_);
-    glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(GpuVertex));
-    glVertexArrayElementBuffer(vao_, ibo_);
-    const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
-                               offsetof(GpuVertex, color)};
-    for (GLuint a = 0; a < 3; ++a) {
-        glEnableVertexArrayAttrib(vao_, a);
-        glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, offsets[a]);
-        glVertexArrayAttribBinding(vao_, a, 0);
-    }
-    glVertexArrayVertexBuffer(vao_, 1, hull_normal_vbo_, 0, sizeof(glm::vec3));
-    glEnableVertexArrayAttrib(vao_, 3);
-    glVertexArrayAttribFormat(vao_, 3, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_, 3, 1);
-
-    glVertexArrayVertexBuffer(vao_, 2, object_id_vbo_, 0, sizeof(uint32_t));
-    glEnableVertexArrayAttrib(vao_, 4);
-    glVertexArrayAttribIFormat(vao_, 4, 1, GL_UNSIGNED_INT, 0);
-    glVertexArrayAttribBinding(vao_, 4, 2);
-
-    if (uv_vbo_) {
-        glVertexArrayVertexBuffer(vao_, 3, uv_vbo_, 0, sizeof(glm::vec2));
-        glEnableVertexArrayAttrib(vao_, 5);
-        glVertexArrayAttribFormat(vao_, 5, 2, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao_, 5, 3);
+        ibo_ = upload_buffer(GLsizeiptr(faces.size() * sizeof(glm::uvec3)), faces.data());
     }
 }
 
-GpuMesh::~GpuMesh() {
-    glDeleteVertexArrays(1, &vao_);
-    glDeleteBuffers(1, &vbo_);
-    glDeleteBuffers(1, &ibo_);
-    glDeleteBuffers(1, &hull_normal_vbo_);
-    glDeleteBuffers(1, &object_id_vbo_);
-    glDeleteBuffers(1, &uv_vbo_);
-    glDeleteBuffers(1, &scalar_vbo_);
+void GpuMesh::make_vertex_array() {
+    vao_ = gpu::GlVertexArray::create();
+    const GLuint vao = vao_.id();
+    glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(GpuVertex));
+    glVertexArrayElementBuffer(vao, ibo_.id());
+    const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                               offsetof(GpuVertex, color)};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(vao, a, 0);
+    }
+    glVertexArrayVertexBuffer(vao, 1, hull_normal_vbo_.id(), 0, sizeof(glm::vec3));
+    glEnableVertexArrayAttrib(vao, 3);
+    glVertexArrayAttribFormat(vao, 3, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, 3, 1);
+
+    glVertexArrayVertexBuffer(vao, 2, object_id_vbo_.id(), 0, sizeof(uint32_t));
+    glEnableVertexArrayAttrib(vao, 4);
+    glVertexArrayAttribIFormat(vao, 4, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao, 4, 2);
+
+    if (uv_vbo_) {
+        glVertexArrayVertexBuffer(vao, 3, uv_vbo_.id(), 0, sizeof(glm::vec2));
+        glEnableVertexArrayAttrib(vao, 5);
+        glVertexArrayAttribFormat(vao, 5, 2, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao, 5, 3);
+    }
 }
 
 void GpuMesh::set_vertex_scalar(const std::vector<float>& per_mesh_vertex) {
@@ -195,16 +203,15 @@ void GpuMesh::set_vertex_scalar(const std::vector<float>& per_mesh_vertex) {
             if (source_[i] < per_mesh_vertex.size()) stream[i] = per_mesh_vertex[source_[i]];
         data = &stream;
     }
-    glBindVertexArray(vao_);
     if (!scalar_vbo_) {
-        glGenBuffers(1, &scalar_vbo_);
-        glBindBuffer(GL_ARRAY_BUFFER, scalar_vbo_);
-        glEnableVertexAttribArray(6);
-        glVertexAttribPointer(6, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+        // Binding point 4 (0-3 hold the other streams).
+        scalar_vbo_ = gpu::GlBuffer::create();
+        glVertexArrayVertexBuffer(vao_.id(), 4, scalar_vbo_.id(), 0, sizeof(float));
+        glEnableVertexArrayAttrib(vao_.id(), 6);
+        glVertexArrayAttribFormat(vao_.id(), 6, 1, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao_.id(), 6, 4);
     }
-    glBindBuffer(GL_ARRAY_BUFFER, scalar_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data->size() * sizeof(float)), data->data(), GL_DYNAMIC_DRAW);
-    glBindVertexArray(0);
+    glNamedBufferData(scalar_vbo_.id(), GLsizeiptr(data->size() * sizeof(float)), data->data(), GL_DYNAMIC_DRAW);
 }
 
 namespace {
@@ -228,12 +235,12 @@ void draw_indices(size_t first, GLsizei count) {
 }  // namespace
 
 void GpuMesh::draw() const {
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.id());
     draw_indices(0, index_count_);
 }
 
 void GpuMesh::draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const {
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.id());
     for (const Range& r : ranges_) {
         const bool known = r.material < materials_.size();
         if (textured()) textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit);

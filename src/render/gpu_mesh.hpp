@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gpu/base_texture.hpp"
+#include "gpu/gl_handle.hpp"
 #include "inkshade/mesh.hpp"
 
 namespace inkshade::render {
@@ -33,9 +34,6 @@ bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
 class GpuMesh {
 public:
     explicit GpuMesh(const Mesh& mesh);
-    ~GpuMesh();
-    GpuMesh(const GpuMesh&) = delete;
-    GpuMesh& operator=(const GpuMesh&) = delete;
     // All faces in one call (depth, hull and G-buffer passes).
     void draw() const;
 
@@ -54,12 +52,18 @@ public:
     void set_vertex_scalar(const std::vector<float>& per_mesh_vertex);
 
 private:
+    void upload_materials(const Mesh& mesh, bool has_face_materials);
+    // Faces sorted by material when materials change what a draw binds, else in file order.
+    void upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& faces, bool has_face_materials);
+    void make_vertex_array();
+
     struct Range {
         size_t first = 0;  // index offset into the index buffer
         GLsizei count = 0;
         uint32_t material = 0;
     };
-    GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, hull_normal_vbo_ = 0, object_id_vbo_ = 0, uv_vbo_ = 0, scalar_vbo_ = 0;
+    gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_, scalar_vbo_;
+    gpu::GlVertexArray vao_;
     std::vector<uint32_t> source_;  // mesh vertex of each stream vertex (set_vertex_scalar)
     GLsizei index_count_ = 0;
     std::vector<Range> ranges_;

@@ -1,14 +1,20 @@
-#include "render/shadow_pass.hpp"
-
+// `shadow`: the shadow map (render/shadow_map.hpp) of models that cast shadows, drawn again only
+// when the mesh or the light changed.
 #include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "inkshade/error.hpp"
+#include "gpu/gl_state.hpp"
+#include "gpu/shader_program.hpp"
+#include "render/frame.hpp"
 
 namespace inkshade::render {
 
+namespace {
+
+// The light's view-projection enclosing the bounding sphere of `box`: orthographic along the
+// light direction for a directional light, a perspective frustum from a point light.
 glm::mat4 light_view_projection(const Light& light, const BoundingBox& box) {
     const glm::vec3 center = box.center();
     const float radius = std::max(0.5f * box.diagonal(), 1e-6f);
@@ -30,53 +36,48 @@ glm::mat4 light_view_projection(const Light& light, const BoundingBox& box) {
            glm::lookAt(light.position, center, up);
 }
 
-ShadowPass::ShadowPass(int size) : size_(size) {
-    glCreateTextures(GL_TEXTURE_2D, 1, &depth_);
-    glTextureStorage2D(depth_, 1, GL_DEPTH_COMPONENT32F, size, size);
-    glTextureParameteri(depth_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(depth_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(depth_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(depth_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(depth_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(depth_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glCreateFramebuffers(1, &fbo_);
-    glNamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
-    glNamedFramebufferDrawBuffer(fbo_, GL_NONE);
-    glNamedFramebufferReadBuffer(fbo_, GL_NONE);
-    if (glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError("cannot create the shadow-map framebuffer");
-    program_ = std::make_unique<gpu::ShaderProgram>("shadow/depth.vert", "shadow/depth.frag");
-}
+class ShadowPass final : public Pass {
+public:
+    ShadowPass() : program_("shadow/depth.vert", "shadow/depth.frag") {}
 
-ShadowPass::~ShadowPass() {
-    glDeleteFramebuffers(1, &fbo_);
-    glDeleteTextures(1, &depth_);
-}
-
-void ShadowPass::render(const GpuMesh& mesh, const glm::mat4& light_view_proj, bool closed) {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glViewport(0, 0, size_, size_);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    if (closed) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_FRONT);
-    } else {
-        glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
+    // For a closed, outward mesh only the faces turned away from the light are drawn: half the
+    // triangles, and the stored depth lies behind the lit surface, away from acne.
+    void run(Frame& frame) override {
+        FrameTargets& targets = frame.targets;
+        if (!targets.shadow_map) targets.shadow_map = std::make_unique<ShadowMap>();
+        const ShadowMap& map = *targets.shadow_map;
+        const glm::mat4 light_view_proj = light_view_projection(frame.light, frame.bounds);
+        map.bind_for_drawing();
+        const gpu::ViewportScope viewport({0, 0, map.size(), map.size()});
+        glClearDepth(1.0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        const gpu::DepthScope depth(GL_LESS);
+        const gpu::CullScope cull(frame.closed ? std::optional<GLenum>(GL_FRONT) : std::nullopt);  // open meshes cast from both sides
+        // Slope-scaled depth bias against self-shadowing acne (with the lookup's normal offset).
+        const gpu::PolygonOffsetScope offset(2.0f, 4.0f);
+        program_.use();
+        program_.set("u_model", glm::mat4(1.0f));
+        program_.set("u_light_view_proj", light_view_proj);
+        frame.mesh->draw();
+        targets.shadow_light = light_view_proj;
     }
-    // Slope-scaled depth bias against self-shadowing acne (with the lookup's normal offset).
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(2.0f, 4.0f);
-    program_->use();
-    program_->set("u_model", glm::mat4(1.0f));
-    program_->set("u_light_view_proj", light_view_proj);
-    mesh.draw();
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glCullFace(GL_BACK);
-}
 
-void ShadowPass::bind(GLuint unit) const { glBindTextureUnit(unit, depth_); }
+private:
+    gpu::ShaderProgram program_;
+};
+
+// Runs for the shading pass when it reads the map (PassIo), unless the map holds this light.
+const PassRegistration shadow_pass{{
+    .name = "shadow",
+    .stage = Stage::Shadow,
+    .plan = [](const Frame& frame) -> std::optional<PassIo> {
+        if (frame.targets.shadow_map && frame.targets.shadow_light == light_view_projection(frame.light, frame.bounds))
+            return std::nullopt;
+        return PassIo{.reads = {Resource::GpuMesh}, .writes = {Resource::ShadowMap}};
+    },
+    .create = create_pass<ShadowPass>,
+}};
+
+}  // namespace
 
 }  // namespace inkshade::render

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "gpu/gl_state.hpp"
+#include "render/frame.hpp"
+
 namespace inkshade::render {
 
 namespace {
@@ -15,21 +18,17 @@ struct Segment {
 }  // namespace
 
 StrokePass::StrokePass()
-    : program_(std::make_unique<gpu::ShaderProgram>("lines/stroke.vert", "lines/stroke.frag")) {
-    glCreateVertexArrays(1, &vao_);
-    glCreateBuffers(1, &buffer_);
-    glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, sizeof(Segment));
-    glVertexArrayBindingDivisor(vao_, 0, 1);
+    : program_("lines/stroke.vert", "lines/stroke.frag"),
+      vao_(gpu::GlVertexArray::create()),
+      buffer_(gpu::GlBuffer::create()) {
+    const GLuint vao = vao_.id();
+    glVertexArrayVertexBuffer(vao, 0, buffer_.id(), 0, sizeof(Segment));
+    glVertexArrayBindingDivisor(vao, 0, 1);
     for (GLuint a = 0; a < 2; ++a) {
-        glEnableVertexArrayAttrib(vao_, a);
-        glVertexArrayAttribFormat(vao_, a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
-        glVertexArrayAttribBinding(vao_, a, 0);
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
+        glVertexArrayAttribBinding(vao, a, 0);
     }
-}
-
-StrokePass::~StrokePass() {
-    glDeleteVertexArrays(1, &vao_);
-    glDeleteBuffers(1, &buffer_);
 }
 
 void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height,
@@ -55,9 +54,9 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
         if (path.closed && n > 2) add(n - 1, 0);
     }
     if (segments.empty()) return;
-    glNamedBufferData(buffer_, GLsizeiptr(segments.size() * sizeof(Segment)), segments.data(), GL_STREAM_DRAW);
+    glNamedBufferData(buffer_.id(), GLsizeiptr(segments.size() * sizeof(Segment)), segments.data(), GL_STREAM_DRAW);
 
-    gpu::ShaderProgram& p = *program_;
+    gpu::ShaderProgram& p = program_;
     p.use();
     p.set("u_image_size", glm::vec2(width, height));
     p.set("u_color", glm::vec4(style.color, style.opacity));
@@ -65,29 +64,45 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
     p.set("u_depth_test", depth_test ? 1 : 0);
     p.set("u_multisample", samples > 1 ? 1 : 0);
 
-    glDisable(GL_CULL_FACE);
-    if (depth_test) {
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LEQUAL);
-    } else {
-        glDisable(GL_DEPTH_TEST);
-    }
-    glDepthMask(GL_FALSE);
+    const gpu::CullScope cull(std::nullopt);
+    const gpu::DepthScope depth(depth_test ? std::optional<GLenum>(GL_LEQUAL) : std::nullopt, /*write=*/false);
+    std::optional<gpu::StencilScope> once_per_sample;
     if (samples > 1) {
         // Each sample once per draw: no double blending where capsules of joins overlap.
         glClear(GL_STENCIL_BUFFER_BIT);
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_EQUAL, 0, 0xff);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+        once_per_sample.emplace(gpu::StencilFunc{GL_EQUAL, 0, 0xff, GL_KEEP, GL_KEEP, GL_INCR});
     }
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glBindVertexArray(vao_);
+    const gpu::BlendScope blend(gpu::BlendFunc{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});
+    glBindVertexArray(vao_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(segments.size()));
-    glDisable(GL_BLEND);
-    glDisable(GL_STENCIL_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
 }
+
+void StrokePass::run(Frame& frame) {
+    for (LineLayer& layer : frame.drawing->layers) {
+        const Stroke stroke = stroke_of(layer.settings);
+        const StrokeStyle style{stroke.color, stroke.opacity, stroke.width,
+                                line_param(layer.settings, "taper").at(0) != 0.0f};
+        // Hidden parts are already cut away exactly by ray casting; without per-point depth the
+        // stroke pass skips its depth test, which would otherwise nibble at the half of a
+        // contour stroke that lies over the surface it outlines.
+        for (LinePath& path : layer.visible) path.depth.clear();
+        draw(layer.visible, style, frame.options.width, frame.options.height, frame.options.samples);
+    }
+}
+
+namespace {
+
+// Runs when the style has object-space lines.
+const PassRegistration strokes_pass{{
+    .name = "strokes",
+    .stage = Stage::Strokes,
+    .plan = [](const Frame& frame) -> std::optional<PassIo> {
+        if (frame.object_lines.empty()) return std::nullopt;
+        return PassIo{.reads = {Resource::LineDrawing, Resource::Color}, .writes = {Resource::Color}};
+    },
+    .create = create_pass<StrokePass>,
+}};
+
+}  // namespace
 
 }  // namespace inkshade::render

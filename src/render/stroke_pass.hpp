@@ -5,14 +5,14 @@
 // capsule (gl_SampleMask) and the stencil lets a sample be covered once per draw, so joins and
 // overlaps of one layer never blend twice; without MSAA the pixel coverage becomes alpha.
 // Depth-tested against the scene with a bias when every path has per-point depth.
+// As the `strokes` pass it draws the frame's object-space lines (LineDrawing).
 #pragma once
-#include <memory>
 #include <vector>
 
-#include <epoxy/gl.h>
-
+#include "gpu/gl_handle.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/line_drawing.hpp"
+#include "render/pass.hpp"
 
 namespace inkshade::render {
 
@@ -24,20 +24,20 @@ struct StrokeStyle {
     float depth_bias = 2e-4f;   // subtracted from the paths' window depth before the test
 };
 
-class StrokePass {
+class StrokePass final : public Pass {
 public:
     StrokePass();
-    ~StrokePass();
-    StrokePass(const StrokePass&) = delete;
-    StrokePass& operator=(const StrokePass&) = delete;
 
     // Draws `paths` into the bound framebuffer of width x height pixels with `samples`
     // samples (its depth/stencil buffer is used; the stencil is cleared).
     void draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height, int samples);
+    // Draws every layer of the frame's LineDrawing (visible parts; hidden ones are SVG-only).
+    void run(Frame& frame) override;
 
 private:
-    std::unique_ptr<gpu::ShaderProgram> program_;
-    GLuint vao_ = 0, buffer_ = 0;
+    gpu::ShaderProgram program_;
+    gpu::GlVertexArray vao_;
+    gpu::GlBuffer buffer_;
 };
 
 }  // namespace inkshade::render

@@ -1,6 +1,7 @@
 // What the shading pass adds to a shading model when `rim-contour` is on: its fragment test,
-// appended to the model's fragment shader (shaders/lines/surface_lines.glsl, the model's main
-// renamed), so every model gets it without being edited and without another pass.
+// run by every model's main after the model's shade() (shaders/common/shading_main.glsl and
+// shaders/lines/surface_lines.glsl), compiled in by a #define: every model gets it without
+// being edited and without another pass.
 #pragma once
 #include <string>
 
@@ -14,11 +15,8 @@ struct SurfaceLines {
 
     bool active() const { return rim != nullptr; }
     // Fragment-shader `#define`s of the variant (empty when inactive; part of the program
-    // cache key), including `#define main inkshade_shading_main`.
+    // cache key): INKSHADE_RIM_CONTOUR and INKSHADE_RIM_COMPENSATE.
     std::string defines() const;
-    // GLSL appended to the fragment shader `fragment_path` (its expanded source is inspected
-    // for the inputs it already declares).
-    std::string epilogue(const std::string& fragment_path) const;
     // The rim test's uniforms.
     void upload(gpu::ShaderProgram& program) const;
 };

@@ -1,4 +1,9 @@
-#include "render/lines/hull.hpp"
+// `hull`: the inverted hull silhouette (docs/lines-raster.md): a copy of the mesh pushed out
+// along its welded normals, front faces culled, drawn in the line colour after the shaded
+// model so only the rim around it (and around parts in front of others) stays visible.
+#include "gpu/shader_program.hpp"
+#include "render/frame.hpp"
+#include "render/lines/back_face_shell.hpp"
 
 namespace inkshade::render {
 
@@ -21,43 +26,43 @@ const LineTypeRegistration hull_type{{
     .params = hull_params(),
 }};
 
-}  // namespace
+// Draws into the colour target, depth-tested against the shaded model, blended.
+class HullPass final : public Pass {
+public:
+    HullPass() : program_("lines/hull.vert", "lines/hull.frag") {}
 
-void draw_back_face_shell(const GpuMesh& mesh, GLenum depth_func, bool blend) {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth_func);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_FRONT);
-    if (blend) {
-        glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    } else {
-        glDepthMask(GL_FALSE);
+    void run(Frame& frame) override {
+        const LineSettings& settings = *frame.line("hull");
+        const Stroke stroke = stroke_of(settings);
+        const bool world = line_param(settings, "mode").at(0) == 1.0f;
+        if (stroke.opacity <= 0.0f || (world ? line_param(settings, "world-width").at(0) : stroke.width) <= 0.0f)
+            return;
+        const Camera& camera = frame.camera;
+        gpu::ShaderProgram& p = program_;
+        p.use();
+        p.set("u_view_proj", camera.projection(frame.aspect()) * camera.view());
+        p.set("u_world_mode", world ? 1 : 0);
+        p.set("u_world_width", line_param(settings, "world-width").at(0));
+        p.set("u_width_px", stroke.width);
+        p.set("u_viewport_size", glm::vec2(frame.options.width, frame.options.height));
+        p.set("u_color", glm::vec4(stroke.color, stroke.opacity));
+        draw_back_face_shell(*frame.mesh, GL_LESS, stroke.opacity < 1.0f);
     }
-    mesh.draw();
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glCullFace(GL_BACK);
-    glDisable(GL_CULL_FACE);
-}
 
-HullPass::HullPass() : program_(std::make_unique<gpu::ShaderProgram>("lines/hull.vert", "lines/hull.frag")) {}
+private:
+    gpu::ShaderProgram program_;
+};
 
-void HullPass::draw(const GpuMesh& mesh, const Camera& camera, int width, int height, const LineSettings& settings) {
-    const Stroke stroke = stroke_of(settings);
-    const bool world = line_param(settings, "mode").at(0) == 1.0f;
-    if (stroke.opacity <= 0.0f || (world ? line_param(settings, "world-width").at(0) : stroke.width) <= 0.0f) return;
-    gpu::ShaderProgram& p = *program_;
-    p.use();
-    p.set("u_view_proj", camera.projection(float(width) / float(height)) * camera.view());
-    p.set("u_world_mode", world ? 1 : 0);
-    p.set("u_world_width", line_param(settings, "world-width").at(0));
-    p.set("u_width_px", stroke.width);
-    p.set("u_viewport_size", glm::vec2(width, height));
-    p.set("u_color", glm::vec4(stroke.color, stroke.opacity));
+const PassRegistration hull_pass{{
+    .name = "hull",
+    .stage = Stage::MeshLines,
+    .plan = [](const Frame& frame) -> std::optional<PassIo> {
+        if (!frame.line("hull")) return std::nullopt;
+        return PassIo{.reads = {Resource::GpuMesh, Resource::Color}, .writes = {Resource::Color}};
+    },
+    .create = create_pass<HullPass>,
+}};
 
-    draw_back_face_shell(mesh, GL_LESS, stroke.opacity < 1.0f);
-}
+}  // namespace
 
 }  // namespace inkshade::render

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/gl_state.hpp"
+#include "render/frame.hpp"
+
 namespace inkshade::render {
 
 namespace {
@@ -11,11 +14,7 @@ bool on(const LineSettings& s, const char* name) { return line_param(s, name).at
 
 }  // namespace
 
-ImageLinesPass::ImageLinesPass() { glCreateVertexArrays(1, &vao_); }
-
-ImageLinesPass::~ImageLinesPass() { glDeleteVertexArrays(1, &vao_); }
-
-bool ImageLinesPass::needs_face_normals(const LineSettings* edges) { return edges && on(*edges, "normal"); }
+ImageLinesPass::ImageLinesPass() : vao_(gpu::GlVertexArray::create()) {}
 
 glm::ivec4 ImageLinesPass::image_lines_region(const BoundingBox& bounds, const Camera& camera, int width,
                                               int height, int margin) {
@@ -42,15 +41,17 @@ glm::ivec4 ImageLinesPass::image_lines_region(const BoundingBox& bounds, const C
     return {ax, ay, bx - ax, by - ay};
 }
 
-void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, const BoundingBox& bounds, int width,
-                          int height, const LineSettings* edges, const LineSettings* suggestive) {
-    if (!edges && !suggestive) return;
+void ImageLinesPass::run(Frame& frame) {
+    const LineSettings* edges = frame.line("edges");
+    const LineSettings* suggestive = frame.line("suggestive-image");
+    const Camera& camera = frame.camera;
+    const int width = frame.options.width, height = frame.options.height;
     // Pixels farther than this from the object's footprint see only background in all their
     // taps: suggestive-image draws on the surface only; edges reach one spacing for ids and
     // depth, two with Canny's non-maximum suppression.
     const int edge_spacing = edges ? std::max(1, int(std::lround(0.5f * stroke_of(*edges).width))) : 0;
     const int margin = std::max(2, 2 * edge_spacing + 2);
-    const glm::ivec4 region = image_lines_region(bounds, camera, width, height, margin);
+    const glm::ivec4 region = image_lines_region(frame.bounds, camera, width, height, margin);
     if (region.z <= 0 || region.w <= 0) return;
     std::string defines = "#define EDGES " + std::to_string(edges ? 1 : 0) + "\n";
     defines += "#define SUGGESTIVE " + std::to_string(suggestive ? 1 : 0) + "\n";
@@ -65,7 +66,7 @@ void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, const Bo
     gpu::ShaderProgram& p = *program;
     p.use();
     constexpr GLuint kSurfaceUnit = 3, kFaceNormalUnit = 4;
-    gbuffer.bind_textures(kSurfaceUnit, kFaceNormalUnit);
+    frame.targets.gbuffer->bind_textures(kSurfaceUnit, kFaceNormalUnit);
     p.set("u_gbuffer_surface", int(kSurfaceUnit));
     p.set("u_gbuffer_face_normal", int(kFaceNormalUnit));
     p.set("u_image_size", glm::ivec2(width, height));
@@ -86,16 +87,32 @@ void ImageLinesPass::draw(const GBuffer& gbuffer, const Camera& camera, const Bo
         p.set("u_sc_fade", line_param(*suggestive, "fade").at(0));
         p.set("u_sc_min_ndotv", line_param(*suggestive, "min-ndotv").at(0));
     }
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(region.x, region.y, region.z, region.w);
-    glBindVertexArray(vao_);
+    const gpu::DepthScope depth(std::nullopt);
+    const gpu::CullScope cull(std::nullopt);
+    const gpu::BlendScope blend(gpu::BlendFunc{GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});  // premultiplied "over"
+    const gpu::ScissorScope scissor(region);
+    glBindVertexArray(vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
 }
+
+namespace {
+
+// Runs when the style has `edges` or `suggestive-image`; reads the face normals when `edges`
+// looks for creases.
+const PassRegistration image_lines_pass{{
+    .name = "image-lines",
+    .stage = Stage::ImageLines,
+    .plan = [](const Frame& frame) -> std::optional<PassIo> {
+        const LineSettings* edges = frame.line("edges");
+        if (!edges && !frame.line("suggestive-image")) return std::nullopt;
+        PassIo io{.reads = {Resource::GBuffer}, .writes = {Resource::Color}};
+        if (edges && on(*edges, "normal")) io.reads |= {Resource::GBufferFaceNormals};
+        return io;
+    },
+    .per_pixel = true,
+    .create = create_pass<ImageLinesPass>,
+}};
+
+}  // namespace
 
 }  // namespace inkshade::render

@@ -1,0 +1,34 @@
+#include "render/frame.hpp"
+
+namespace inkshade::render {
+
+const LineSettings* Frame::line(const std::string& type) const {
+    const LineSettings* found = nullptr;
+    for (const LineSettings& l : lines)
+        if (l.type == type) found = &l;
+    return found;
+}
+
+void Frame::set_vertex_scalar(std::vector<float> per_mesh_vertex) {
+    if (mesh) mesh->set_vertex_scalar(per_mesh_vertex);
+    else vertex_scalar = std::move(per_mesh_vertex);
+}
+
+std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines) {
+    std::vector<LineSettings> out;
+    for (const LineSettings& l : lines)
+        if (line_type(l.type).space == LineSpace::Object) out.push_back(l);
+    return out;
+}
+
+bool cull_back_faces(bool closed, const BoundingBox& b, const Camera& camera) {
+    if (!closed) return false;
+    const glm::mat4 view = camera.view();
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+        if (-(view * glm::vec4(p, 1.0f)).z <= camera.near_plane) return false;
+    }
+    return true;
+}
+
+}  // namespace inkshade::render

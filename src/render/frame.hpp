@@ -1,0 +1,56 @@
+// One Renderer::render call as its passes see it: what to draw, the scene, and the resources
+// (render/pass.hpp) passes hand each other.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inkshade/camera.hpp"
+#include "inkshade/image.hpp"
+#include "inkshade/line_drawing.hpp"
+#include "inkshade/renderer.hpp"
+#include "render/frame_targets.hpp"
+#include "render/gpu_mesh.hpp"
+#include "render/pass.hpp"
+
+namespace inkshade::render {
+
+struct Frame {
+    // What to draw.
+    const Camera& camera;
+    const Light& light;
+    const ShadingSelection& shading;
+    const ShadingModel& model;
+    const RenderOptions& options;
+    const std::vector<LineSettings>& lines;  // the style's, image- and object-space
+
+    // The scene.
+    const BoundingBox& bounds;
+    bool closed = false;           // closed and outward (back faces invisible from outside)
+    bool cull_back_faces = false;  // closed and wholly in front of the near plane (cull_back_faces())
+    LineExtractor& line_extractor; // MeshLineData
+    GpuMesh* mesh = nullptr;       // GpuMesh: null until the upload (MeshUse::OneFrame)
+    FrameTargets& targets;         // Color, ResolvedColor, ShadowMap, GBuffer
+    Resources reads;               // what the planned passes read (PassPlan::reads)
+
+    // Made during the frame.
+    std::vector<LineSettings> object_lines;  // the style's object-space lines, in order
+    std::optional<LineDrawing> drawing;      // LineDrawing
+    std::optional<std::vector<float>> vertex_scalar;  // VertexScalar computed before the upload
+    Image image;                              // Image
+
+    // The style's settings of line type `type` (the last when listed twice), or null.
+    const LineSettings* line(const std::string& type) const;
+    // VertexScalar: uploaded now, or kept for the upload when the GPU mesh is not made yet.
+    void set_vertex_scalar(std::vector<float> per_mesh_vertex);
+    float aspect() const { return float(options.width) / float(options.height); }
+};
+
+// The object-space lines of `lines`, in order. Throws InputError for an unknown line type.
+std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines);
+
+// Back faces may be culled only when none can be seen: a closed outward surface with the
+// whole bounding box in front of the near plane (the camera outside, nothing clipped open).
+bool cull_back_faces(bool closed, const BoundingBox& bounds, const Camera& camera);
+
+}  // namespace inkshade::render
