@@ -4,8 +4,8 @@
 //  - depth (EDGES_DEPTH): max over the 4 directions o of |z(p+o) + z(p-o) - 2 z(p)| / z(p),
 //    z = linear depth: a second difference, 0 on planes of any slope (a first-derivative Sobel
 //    would fire on slanted planes), large across depth jumps (parts in front of others);
-//  - normals (EDGES_NORMAL): the 3x3 Sobel operator on the unit face normal (seed 001's plan:
-//    Sobel over a normal render target), magnitude sqrt(|Gx|^2 + |Gy|^2) / 4, which is
+//  - normals (EDGES_NORMAL): the 3x3 Sobel operator on the unit face normal (Sobel over a
+//    normal render target, as in Saito & Takahashi 1990's G-buffer edges), magnitude sqrt(|Gx|^2 + |Gy|^2) / 4, which is
 //    |n1 - n2| = 2 sin(angle/2) across a crease; background taps take the centre's normal.
 //    EDGES_CANNY: Canny (1986) on that magnitude: non-maximum suppression along the gradient
 //    direction (quantised to 4), double threshold (t, t/2) with one hysteresis step along the

@@ -5,7 +5,7 @@
 //   location 1 (RGBA8_SNORM, INKSHADE_GBUFFER_FACE_NORMALS): face normal dFdx(p) x dFdy(p),
 //                         view space (faces the viewer by construction)
 // n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl),
-// w = v - (n.v) n (seed 000 eq. 8).
+// w = v - (n.v) n (the projected view vector of DeCarlo et al. 2003).
 #include "common/lighting.glsl"
 
 in vec3 v_world_pos;

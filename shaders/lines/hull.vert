@@ -1,7 +1,7 @@
 #version 450 core
-// hull: inverted hull (seed 000 section 3.6, seed 001 "edge lines"): p' = p + alpha * n with
+// hull: inverted hull (the classic inverted hull; Qu, Chen & Zwicker 2022, section 3.6): p' = p + alpha * n with
 // n the welded (position-averaged) normal, so split normals at creases do not crack the hull.
-//   world mode:  alpha = world-width (world units, seed 000's offset)
+//   world mode:  alpha = world-width (world units, Qu et al. 2022's offset)
 //   screen mode: the vertex moves width pixels in the image along the projected normal
 //                direction d(proj(p + t n))/dt at t = 0, whatever the distance and resolution.
 layout(location = 0) in vec3 a_position;

@@ -1,4 +1,4 @@
-// suggestive-image: seed 000 section 3.8 computed on the GPU. Suggestive contours are where
+// suggestive-image: the image-space method of Qu, Chen & Zwicker 2022 (section 3.8) computed on the GPU. Suggestive contours are where
 // n.v has a local minimum in the direction of w (DeCarlo et al. 2003): D_w(n.v) = 0 and
 // D_w D_w(n.v) > 0, w = v - (n.v) n. Per pixel p, f = n.v from the G-buffer, d = the unit
 // image direction of w (view-space w.xy), h = u_sc_step pixels:
@@ -8,7 +8,7 @@
 // (central differences smoothed across with the Sobel weights: n.v from interpolated normals
 // has kinks at triangle edges, which plain second differences turn into dotted lines)
 //   D_w f = f_x d.x + f_y d.y        D_w D_w f = f_xx d.x^2 + 2 f_xy d.x d.y + f_yy d.y^2
-// (seed 000 used one-sided differences, eqs. 10 and 11; central ones put the line on the
+// (Qu et al. 2022 used one-sided differences, their eqs. 10 and 11; central ones put the line on the
 // minimum rather than half a pixel off). Image-space derivatives along the projection of w
 // vanish where the surface ones do, and the second derivative keeps its sign there.
 // A pixel draws when S = D_w D_w f * H^2 (H = image height: derivatives per image height,

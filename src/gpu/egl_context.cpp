@@ -1,4 +1,4 @@
-// Headless EGL context. PLATFORM.md: eglGetDisplay(EGL_DEFAULT_DISPLAY) fails without an X
+// Headless EGL context. eglGetDisplay(EGL_DEFAULT_DISPLAY) fails (Mesa on Debian 12) without an X
 // server, so use EGL_MESA_platform_surfaceless, falling back to EGL_EXT_platform_device.
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>

@@ -1,6 +1,6 @@
 // `edges`: image-space discontinuities of the G-buffer (depth, face normal, object id), the
-// multiple-render-target approach seeds 001 and 004 planned; drawn by ImageLinesPass
-// (shaders/lines/edges.glsl).
+// approach of Saito & Takahashi 1990, "Comprehensible Rendering of 3-D Shapes"; drawn by
+// ImageLinesPass (shaders/lines/edges.glsl).
 #include "inkshade/lines.hpp"
 
 namespace inkshade::render {
@@ -28,7 +28,7 @@ std::vector<ParamSpec> edges_params() {
 
 const LineTypeRegistration edges_type{{
     .name = "edges",
-    .summary = "image-space edges: Sobel/Canny on a G-buffer of depth, face normals and object ids (seeds 001, 004)",
+    .summary = "image-space edges: Sobel/Canny on a G-buffer of depth, face normals and object ids (Saito & Takahashi 1990)",
     .space = LineSpace::Image,
     .params = edges_params(),
 }};

@@ -13,15 +13,15 @@ std::vector<ParamSpec> hull_params() {
     std::vector<ParamSpec> p = stroke_params(glm::vec3(0.0f), 2.0f);
     p.push_back(choice_param("mode", {"screen", "world"}, 0,
                              "screen: width pixels whatever the distance (offset in clip space); world: "
-                             "world-width units along the normal (seed 000's vertex offset)"));
+                             "world-width units along the normal (the vertex offset of Qu, Chen & Zwicker 2022)"));
     p.push_back(float_param("world-width", 0.25f, 0.0f, 1000.0f,
-                            "world mode: offset along the normal in world units (seed 000 uses 0.25)"));
+                            "world mode: offset along the normal in world units (Qu et al. 2022 use 0.25)"));
     return p;
 }
 
 const LineTypeRegistration hull_type{{
     .name = "hull",
-    .summary = "inverted hull silhouette: mesh pushed out along welded normals, front faces culled (seeds 000, 001)",
+    .summary = "inverted hull silhouette: mesh pushed out along welded normals, front faces culled (the classic inverted hull)",
     .space = LineSpace::Image,
     .params = hull_params(),
 }};

@@ -8,7 +8,7 @@ namespace {
 std::vector<ParamSpec> rim_params() {
     std::vector<ParamSpec> p = stroke_params(glm::vec3(0.0f), 2.0f);
     p.push_back(float_param("threshold", 0.175f, 0.0f, 1.0f,
-                            "band |n.v| < threshold (seed 000 section 3.7 uses 0.175)"));
+                            "band |n.v| < threshold (Qu et al. 2022's contour tolerance, 0.175)"));
     p.push_back(compile_time(bool_param(
         "compensate", false,
         "width compensation by curvature: band = pixels within width px of the contour, distance |n.v| / (2 |grad n.v|)")));
@@ -17,7 +17,7 @@ std::vector<ParamSpec> rim_params() {
 
 const LineTypeRegistration rim_contour_type{{
     .name = "rim-contour",
-    .summary = "fragment test |n.v| < threshold, anti-aliased, optional constant pixel width (seeds 000, 004)",
+    .summary = "fragment test |n.v| < threshold, anti-aliased, optional constant pixel width",
     .space = LineSpace::Image,
     .params = rim_params(),
 }};

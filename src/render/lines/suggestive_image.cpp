@@ -1,4 +1,4 @@
-// `suggestive-image`: seed 000's image-space suggestive contours (section 3.8) computed on the
+// `suggestive-image`: the image-space suggestive contours of Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading Techniques for Anime-Style Rendering" (section 3.8), computed on the
 // GPU by ImageLinesPass (shaders/lines/suggestive_image.glsl).
 #include "inkshade/lines.hpp"
 
@@ -8,7 +8,7 @@ namespace {
 std::vector<ParamSpec> suggestive_params() {
     std::vector<ParamSpec> p = stroke_params(glm::vec3(0.0f), 1.5f);
     p.push_back(int_param("step", 2, 1, 8,
-                          "finite-difference spacing h in pixels (seed 000 uses 1; 2 smooths the "
+                          "finite-difference spacing h in pixels (Qu et al. 2022 use 1; 2 smooths the "
                           "kinks of interpolated normals at triangle edges)"));
     p.push_back(float_param("threshold", 20.0f, 0.0f, 1e6f,
                             "minimum D_w D_w(n.v), derivatives per image height, the valley sharpness "
@@ -24,7 +24,7 @@ std::vector<ParamSpec> suggestive_params() {
 
 const LineTypeRegistration suggestive_image_type{{
     .name = "suggestive-image",
-    .summary = "image-space suggestive contours: D_w(n.v) = 0, D_w D_w(n.v) > 0 by finite differences on the GPU (seed 000, DeCarlo 2003)",
+    .summary = "image-space suggestive contours: D_w(n.v) = 0, D_w D_w(n.v) > 0 by finite differences on the GPU (DeCarlo et al. 2003; finite differences as in Qu et al. 2022)",
     .space = LineSpace::Image,
     .params = suggestive_params(),
 }};
