@@ -124,6 +124,12 @@ class CheckLayers(unittest.TestCase):
         self.tree.write("apps/viewer/viewer.cpp", '#include "viewer.hpp"', '#include "../inkshade/commands.hpp"')
         self.assertFails("apps/viewer/viewer.cpp:2: part viewer may not include cli (../inkshade/commands.hpp)")
 
+    def test_gl_is_render_s_alone(self):
+        self.tree.write("src/styles/preview.cpp", '#include "gpu/shader_program.hpp"')
+        self.tree.write("src/batch/runner.cpp", '#include "inkshade/renderer.hpp"', '#include "gpu/gl_context.hpp"')
+        self.assertFails("src/batch/runner.cpp:2: part batch may not include gpu (gpu/gl_context.hpp)",
+                         "src/styles/preview.cpp:1: part styles may not include gpu (gpu/shader_program.hpp)")
+
     def test_library_may_not_include_a_front_end(self):
         self.tree.write("src/batch/runner.cpp", '#include "viewer/viewer.hpp"')
         self.assertFails("src/batch/runner.cpp:1: part batch may not include viewer (viewer/viewer.hpp)")
