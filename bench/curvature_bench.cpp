@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/curvature.hpp"
 #include "geometry/normals.hpp"
 

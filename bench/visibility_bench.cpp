@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/contours.hpp"
 #include "geometry/visibility.hpp"
 #include "inkshade/line_drawing.hpp"

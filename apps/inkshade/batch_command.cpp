@@ -10,9 +10,9 @@
 #include <map>
 #include <set>
 
+#include "batch/jobs.hpp"
 #include "batch_progress.hpp"
 #include "commands.hpp"
-#include "core/batch_jobs.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/style.hpp"

@@ -21,12 +21,6 @@ struct RenderOptions {
     bool srgb_output = false;                // default: formula values written as they are
 };
 
-struct ShadingSelection {
-    std::string model = "lambert";
-    ParamValues params;               // overrides of the model's defaults
-    glm::vec3 base_color{1.0f};       // multiplies vertex/material colours (C)
-};
-
 struct PassTiming {
     std::string pass;
     double milliseconds = 0.0;      // wall time, the pass finished (glFinish) before and after

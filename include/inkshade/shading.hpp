@@ -31,6 +31,14 @@ std::vector<const ShadingModel*> shading_models();
 // Throws InputError("unknown shading model 'x' (choose ...)") when absent.
 const ShadingModel& shading_model(const std::string& name);
 
+// The shading of a render: a model by name with overrides of its parameters (what a style
+// holds, inkshade/style.hpp, and Renderer::render takes).
+struct ShadingSelection {
+    std::string model = "lambert";
+    ParamValues params;               // overrides of the model's defaults
+    glm::vec3 base_color{1.0f};       // multiplies vertex/material colours (C)
+};
+
 // Registration helper: `static const ShadingModelRegistration reg{{...}};` in the model's file.
 struct ShadingModelRegistration {
     explicit ShadingModelRegistration(ShadingModel model);

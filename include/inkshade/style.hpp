@@ -7,8 +7,9 @@
 #include <string_view>
 #include <vector>
 
+#include "inkshade/camera.hpp"
 #include "inkshade/lines.hpp"
-#include "inkshade/renderer.hpp"
+#include "inkshade/shading.hpp"
 
 namespace inkshade {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/weld.hpp"
 #include "inkshade/error.hpp"

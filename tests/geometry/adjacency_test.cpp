@@ -6,7 +6,7 @@
 #include <set>
 #include <utility>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 
 namespace inkshade::geometry {
 namespace {

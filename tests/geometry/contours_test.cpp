@@ -11,7 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/chaining.hpp"
 
 namespace inkshade::geometry {

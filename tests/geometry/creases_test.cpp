@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/chaining.hpp"
 
 namespace inkshade::geometry {

@@ -8,8 +8,8 @@
 #include <limits>
 #include <numbers>
 
-#include "core/builtin_models.hpp"
 #include "geometry/analytic_meshes.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {

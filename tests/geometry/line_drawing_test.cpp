@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "inkshade/error.hpp"
 
 namespace inkshade {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/orientation.hpp"
 
 namespace inkshade::geometry {

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/chaining.hpp"
 #include "geometry/normals.hpp"
 

@@ -7,8 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "core/builtin_models.hpp"
 #include "geometry/analytic_meshes.hpp"
+#include "geometry/builtin_models.hpp"
 #include "geometry/chaining.hpp"
 #include "geometry/normals.hpp"
 

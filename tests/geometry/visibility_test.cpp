@@ -5,7 +5,7 @@
 #include <cmath>
 #include <optional>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "inkshade/line_drawing.hpp"
 
 namespace inkshade::geometry {

@@ -14,7 +14,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "../../fuzz/manifest_target.hpp"
 #include "../../fuzz/mesh_targets.hpp"
 #include "io/gltf_files.hpp"
 #include "io/mesh_files.hpp"
@@ -57,7 +56,6 @@ TEST(FuzzRegressions, ReplayPly) { replay("ply", fuzz::ply_input); }
 TEST(FuzzRegressions, ReplayOff) { replay("off", fuzz::off_input); }
 TEST(FuzzRegressions, ReplayGltf) { replay("gltf", fuzz::gltf_input); }
 TEST(FuzzRegressions, ReplayMeshPipeline) { replay("mesh_pipeline", fuzz::mesh_pipeline_input); }
-TEST(FuzzRegressions, ReplayManifest) { replay("manifest", fuzz::manifest_input); }
 
 std::shared_ptr<const Texture> decode_texture_for_test(const std::string& bytes, std::string& problem) {
     return io::decode_texture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), "test.png", problem);

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {

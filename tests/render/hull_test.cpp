@@ -3,7 +3,7 @@
 // change with camera distance or resolution; a cube with split normals does not crack open.
 #include <cmath>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 #include "render/sphere_ring.hpp"
 

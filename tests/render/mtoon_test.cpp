@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <functional>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {

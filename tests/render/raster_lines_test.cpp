@@ -3,7 +3,7 @@
 // the old render() is the new one with no lines.
 #include <cstring>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {

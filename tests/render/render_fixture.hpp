@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "inkshade/camera.hpp"
 #include "inkshade/renderer.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {

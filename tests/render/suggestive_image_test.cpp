@@ -6,7 +6,7 @@
 // facing away). Lines appear there (within 2 px) and nowhere else; none on a sphere or a plane.
 #include <cmath>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "inkshade/lines.hpp"
 #include "render/render_fixture.hpp"
 #include "render/sphere_ring.hpp"

@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "render/ortho_raycast.hpp"
 #include "render/render_fixture.hpp"
 

@@ -9,7 +9,7 @@
 #include <map>
 #include <sstream>
 
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 #include "inkshade/io.hpp"
 #include "render/cell_hash.hpp"
 #include "render/render_fixture.hpp"

@@ -1,5 +1,5 @@
 // Batch jobs from models x views x styles (inkshade/batch.hpp): names, stems, shared values.
-#include "core/batch_jobs.hpp"
+#include "batch/jobs.hpp"
 
 #include <filesystem>
 #include <map>

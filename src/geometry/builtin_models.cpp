@@ -2,7 +2,7 @@
 // (and shared poles), so seams are shared by construction rather than welded afterwards, and
 // quads are split so that the right-hand rule over (u, v) gives ∂S/∂u × ∂S/∂v, which each
 // parametrisation below makes point outward.
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 
 #include <algorithm>
 #include <array>
@@ -21,7 +21,7 @@
 
 namespace inkshade::builtin {
 
-namespace teapot_data {  // src/core/teapot_data.cpp
+namespace teapot_data {  // src/geometry/teapot_data.cpp
 extern const uint16_t kPatches[32][16];
 extern const float kControlPoints[306][3];
 }  // namespace teapot_data
@@ -156,7 +156,7 @@ Mesh torus_knot(int p, int q, float tube_radius, int segments, int tube_segments
 // derivatives vanish, take the angle-weighted normal instead.
 //
 // Not closed — Newell's data has no shell thickness and no trimming. Measured after welding at
-// n = 16 (tests/core/builtin_models_test.cpp checks it): 32·2n² − 8n = 16256 triangles, 8257
+// n = 16 (tests/geometry/builtin_models_test.cpp checks it): 32·2n² − 8n = 16256 triangles, 8257
 // vertices, 24512 edges, no non-manifold edges, 16n = 256 boundary edges in 6 loops (the rim's
 // inner lip and the lid's edge, 4n each, with the classic gap between them; both ends of the
 // handle and of the spout, 2n each, which pass into the body without sharing an edge), 3

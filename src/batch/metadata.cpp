@@ -1,6 +1,6 @@
-// Batch job metadata (io/batch_metadata.hpp): written last, so its presence with the right
+// Batch job metadata (batch/metadata.hpp): written last, so its presence with the right
 // hash marks a complete job.
-#include "io/batch_metadata.hpp"
+#include "batch/metadata.hpp"
 
 #include <algorithm>
 #include <charconv>

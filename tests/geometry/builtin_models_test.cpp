@@ -1,4 +1,4 @@
-#include "core/builtin_models.hpp"
+#include "geometry/builtin_models.hpp"
 
 #include <gtest/gtest.h>
 

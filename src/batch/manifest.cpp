@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/batch_jobs.hpp"
+#include "batch/jobs.hpp"
 #include "inkshade/error.hpp"
 #include "io/text_scanner.hpp"
 

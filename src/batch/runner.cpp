@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "batch/metadata.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/image.hpp"
@@ -14,7 +15,6 @@
 #include "inkshade/renderer.hpp"
 #include "inkshade/style.hpp"
 #include "io/atomic_file.hpp"
-#include "io/batch_metadata.hpp"
 
 namespace inkshade {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <set>
 
-#include "core/batch_jobs.hpp"
+#include "batch/jobs.hpp"
 #include "inkshade/error.hpp"
 #include "io/text_scanner.hpp"
 
