@@ -218,6 +218,11 @@ PYBIND11_MODULE(inkshade, m) {
             defaults.styles.clear();
             for (const auto& s : styles) defaults.styles += (defaults.styles.empty() ? "" : ",") + s;
             std::tie(defaults.width, defaults.height) = size;
+            SceneRequest shared;  // the options every job shares, checked as render's keywords are
+            shared.names = OptionNames::Keywords;
+            shared.size = {defaults.width, defaults.height};
+            shared.samples = samples;
+            make_scene(shared);
             defaults.outputs = {};
             defaults.outputs.png = false;
             for (const auto& f : formats) {

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/scene.hpp"
 #include "inkshade/style.hpp"
 
 namespace inkshade::cli {
@@ -88,9 +89,15 @@ BatchDefaults defaults_from(const BatchArgs& a) {
         if (batch::split_list(a.styles, ",;").empty()) throw InputError("no style given");
     });
     d.styles = a.styles;
-    named("--size", [&] { batch::parse_size(a.size, d.width, d.height); });
+    // The options every job shares, checked as every front end checks them.
+    SceneRequest shared;
+    shared.size = parse_image_size("--size", a.size);
+    shared.samples = a.samples;
+    shared.camera.fov_degrees = a.fov;
+    shared.camera.orthographic = a.ortho;
+    make_scene(shared);
+    d.width = shared.size.x, d.height = shared.size.y;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
-    if (!(a.fov > 0.0f && a.fov < 180.0f)) throw InputError("--fov: expected degrees in (0, 180)");
     d.fov_degrees = a.fov;
     d.orthographic = a.ortho;
     return d;
@@ -127,7 +134,6 @@ int run_batch_command(const BatchArgs& args) {
     if (args.manifest.empty() == args.models.empty())
         throw InputError("give a MANIFEST or --models DIR (one of the two)");
     if (args.output.empty() && !args.dry_run) throw InputError("-o DIR: the output directory is required");
-    if (args.samples < 1 || args.samples > 16) throw InputError("--samples: expected 1..16");
     const BatchDefaults defaults = defaults_from(args);
     std::vector<BatchJob> jobs = args.models.empty() ? load_manifest(args.manifest, defaults)
                                                      : expand_jobs(find_models(args.models), defaults);

@@ -88,6 +88,10 @@ Scene make_scene(const SceneRequest& request);
 void apply_threejs_scene(const std::string& path, SceneRequest& request,
                          const std::function<bool(const std::string& option)>& given);
 
+// The camera checks of make_scene, for front ends that take camera options before they have a
+// whole request (batch manifests and --fov).
+void check_camera_options(const CameraOptions& camera, OptionNames names);
+
 // What a line drawing draws when neither the request nor the style names an object-space type.
 const std::vector<std::string>& default_vector_lines();
 

@@ -65,16 +65,6 @@ BatchOutputs parse_formats(const std::string& text) {
     return o;
 }
 
-void parse_size(const std::string& text, int& width, int& height) {
-    int w = 0, h = 0;
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w <= 0 || h <= 0 || w > 16384 || h > 16384)
-        throw InputError("size: expected WxH with each side in 1..16384, got " + io::quote_token(text));
-    width = w;
-    height = h;
-}
-
 void check_relative_stem(const std::string& what, const std::string& stem) {
     if (stem.empty()) throw InputError(what + ": empty");
     if (stem.front() == '/') throw InputError(what + ": " + io::quote_token(stem) + " must be relative to the output directory");

@@ -40,8 +40,6 @@ std::string trim(std::string_view text);
 
 // "png", "svg", "png,svg" (also '+' or ';' between). Throws InputError.
 BatchOutputs parse_formats(const std::string& text);
-// "WxH", each side 1..16384. Throws InputError.
-void parse_size(const std::string& text, int& width, int& height);
 // A relative path inside the output directory: no root, no "..", no empty components.
 void check_relative_stem(const std::string& what, const std::string& stem);
 

@@ -12,6 +12,7 @@
 
 #include "batch/jobs.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/scene.hpp"
 #include "io/text_scanner.hpp"
 
 namespace inkshade {
@@ -53,14 +54,20 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
     else if (key == "views" || key == "view") g.views = value;
     else if (key == "styles" || key == "style") g.styles = value;
     else if (key == "output") g.output = value;
-    else if (key == "size") batch::parse_size(value, g.width, g.height);
+    else if (key == "size") {
+        const glm::ivec2 size = parse_image_size("size", value);
+        g.width = size.x, g.height = size.y;
+    }
     else if (key == "format") g.outputs = batch::parse_formats(value);
     else if (key == "fov") {
         double v = 0;
         auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-        if (ec != std::errc() || ptr != value.data() + value.size() || !(v > 0.0 && v < 180.0))
-            throw InputError("fov: expected degrees in (0, 180), got " + io::quote_token(value));
-        g.fov_degrees = float(v);
+        if (ec != std::errc() || ptr != value.data() + value.size())
+            throw InputError("fov: expected degrees, got " + io::quote_token(value));
+        CameraOptions camera;
+        camera.fov_degrees = io::to_float(v);
+        check_camera_options(camera, OptionNames::Keywords);  // the range every front end takes
+        g.fov_degrees = camera.fov_degrees;
     } else if (key == "ortho") {
         if (value == "true" || value == "1" || value == "yes") g.orthographic = true;
         else if (value == "false" || value == "0" || value == "no") g.orthographic = false;

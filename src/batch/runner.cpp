@@ -13,6 +13,7 @@
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/renderer.hpp"
+#include "inkshade/scene.hpp"
 #include "inkshade/style.hpp"
 #include "io/atomic_file.hpp"
 
@@ -26,26 +27,20 @@ double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Drawn in the SVG when the style has no object-space line type: what `inkshade lines` draws
-// without --lines (lines_command.cpp), so the SVG of a batch job equals that command's.
-const std::vector<std::string> kDefaultSvgLines = {"contour", "suggestive", "crease", "border"};
-
+// A job's style, loaded once for the whole batch to check it and hash its text.
 struct ResolvedStyle {
     Style style;
-    std::string toml;  // format_style: hashed and recorded, so an edited style file re-renders
-    std::vector<LineSettings> svg_lines;
-    std::string error;  // load_style failed: every job of the style fails with this
+    std::string toml;   // format_style: hashed and recorded, so an edited style file re-renders
+    std::string error;  // the style does not load: every job of the style fails with this
 };
 
 ResolvedStyle resolve_style(const std::string& name) {
     ResolvedStyle r;
     try {
-        r.style = load_style(name);
+        SceneRequest request;
+        request.style = name;
+        r.style = make_scene(request).style;
         r.toml = format_style(r.style);
-        for (const LineSettings& l : r.style.lines)
-            if (line_type(l.type).space == LineSpace::Object) r.svg_lines.push_back(l);
-        if (r.svg_lines.empty())
-            for (const std::string& type : kDefaultSvgLines) r.svg_lines.push_back({type, {}});
     } catch (const std::exception& e) {
         r.error = e.what();
     }
@@ -265,8 +260,16 @@ private:
 
     JobFiles render_job(size_t i, const ModelGroup& group, LoadedModel& model, const BoundingBox& bounds) {
         const BatchJob& job = jobs_[i];
-        const ResolvedStyle& rs = styles_.at(job.style);
-        const Camera camera = frame_camera(bounds, job.view.camera, float(job.width) / float(job.height));
+        // The job as `inkshade render` and `inkshade lines` take it: the same request path.
+        SceneRequest request;
+        request.model = job.model;
+        request.style = job.style;
+        request.size = {job.width, job.height};
+        request.camera = job.view.camera;
+        request.samples = options_.samples;
+        request.outputs = {.image = true, .line_drawing = true};
+        const Scene scene = make_scene(request);
+        const Camera camera = scene.frame(bounds);
         JobFiles files;
         batch::JobRecord& record = files.record;
         record.job = &job;
@@ -276,28 +279,20 @@ private:
         record.triangles = model.mesh->triangle_count();
         record.camera = camera;
         record.samples = options_.samples;
-        record.style_toml = rs.toml;
-        for (const LineSettings& l : rs.style.lines) record.lines.push_back(l.type);
-        for (const LineSettings& l : rs.svg_lines) record.svg_lines.push_back(l.type);
+        record.style_toml = styles_.at(job.style).toml;
+        for (const LineSettings& l : scene.style.lines) record.lines.push_back(l.type);
+        for (const LineSettings& l : scene.vector_lines) record.svg_lines.push_back(l.type);
         record.timings_ms.emplace_back("load", model.milliseconds);
-        files.background = rs.style.background;
+        files.background = scene.style.background;
         if (job.outputs.png) {
-            // As `inkshade render` with the same options: the default light and the style's.
-            Light light = default_light(bounds, camera);
-            apply_style_light(rs.style, light);
-            RenderOptions ro;
-            ro.width = job.width;
-            ro.height = job.height;
-            ro.samples = options_.samples;
-            ro.background = rs.style.background;
             const auto start = Clock::now();
-            files.image = renderer_->render(camera, light, rs.style.shading, rs.style.lines, ro);
+            files.image = render_scene(*renderer_, scene, camera, scene.light(bounds, camera));
             record.timings_ms.emplace_back("render", ms_since(start));
             record.gl_renderer = gl_renderer_;
         }
         if (job.outputs.svg) {
             const auto start = Clock::now();
-            files.drawing = model.extractor->draw(camera, job.width, job.height, rs.svg_lines);
+            files.drawing = draw_scene_lines(*model.extractor, scene, camera);
             record.timings_ms.emplace_back("svg", ms_since(start));
         }
         return files;

@@ -7,6 +7,7 @@
 #include "inkshade/color.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/scene.hpp"
+#include "io/text_scanner.hpp"
 
 namespace inkshade {
 
@@ -15,7 +16,7 @@ glm::ivec2 parse_image_size(const std::string& option, const std::string& text) 
     char x = 0;
     std::istringstream in(text);
     if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w <= 0 || h <= 0 || w > 16384 || h > 16384)
-        throw InputError(option + ": expected WxH with each side in 1..16384, got '" + text + "'");
+        throw InputError(option + ": expected WxH with each side in 1..16384, got " + io::quote_token(text));
     return {w, h};
 }
 
@@ -28,10 +29,10 @@ glm::vec3 parse_vec3(const std::string& option, const std::string& text) {
         float f = 0;
         auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), f);
         if (i >= 3 || item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(f))
-            throw InputError(option + ": expected x,y,z but got '" + text + "'");
+            throw InputError(option + ": expected x,y,z but got " + io::quote_token(text));
         v[i++] = f;
     }
-    if (i != 3) throw InputError(option + ": expected x,y,z but got '" + text + "'");
+    if (i != 3) throw InputError(option + ": expected x,y,z but got " + io::quote_token(text));
     return v;
 }
 
@@ -46,7 +47,7 @@ glm::vec4 parse_color(const std::string& option, const std::string& text) {
 LightType parse_light_type(const std::string& option, const std::string& text) {
     if (text == "directional") return LightType::Directional;
     if (text == "point") return LightType::Point;
-    throw InputError(option + ": expected directional or point, got '" + text + "'");
+    throw InputError(option + ": expected directional or point, got " + io::quote_token(text));
 }
 
 }  // namespace inkshade

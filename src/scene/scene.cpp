@@ -13,7 +13,9 @@ namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-void check_camera(const CameraOptions& o, OptionNames names) {
+}  // namespace
+
+void check_camera_options(const CameraOptions& o, OptionNames names) {
     auto name = [&](const char* option) { return option_name(names, option); };
     for (auto [value, option] : {std::pair{o.azimuth_degrees, "azimuth"}, std::pair{o.elevation_degrees, "elevation"}})
         if (value && !std::isfinite(*value)) throw InputError(name(option) + ": must be a finite number");
@@ -34,6 +36,8 @@ void check_camera(const CameraOptions& o, OptionNames names) {
     if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
         throw InputError(name("ortho-height") + ": must be a positive number");
 }
+
+namespace {
 
 void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNames names) {
     if (!c) return;
@@ -127,7 +131,7 @@ Scene make_scene(const SceneRequest& r) {
         throw InputError(name("size") + ": each side must be in 1..16384, got " + std::to_string(r.size.x) + "x" +
                          std::to_string(r.size.y));
     if (r.samples < 1 || r.samples > 16) throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
-    check_camera(r.camera, r.names);
+    check_camera_options(r.camera, r.names);
     for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
         if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
     for (auto [value, option] :
