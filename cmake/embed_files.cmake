@@ -1,6 +1,18 @@
 # Writes OUTPUT: a C++ file defining `const std::vector<inkshade::EmbeddedFile>& FUNCTION()`
 # in namespace NAMESPACE, a table of {relative path, contents} for every file under DIR whose
 # name matches one of GLOBS ('|'-separated, e.g. "*.frag|*.vert").
+#
+# With EXPAND_INCLUDES=ON (the shaders) each file is embedded with its `#include "path"` lines
+# expanded (paths relative to DIR, naming a file of the table): the line is replaced by the
+# included file's text, itself expanded, and each file is expanded at most once per embedded
+# file, like `#pragma once` (a repeated include line is dropped). Other lines are copied as they
+# are, each ended by "\n" (file(READ) drops the "\r" of a "\r\n"). A missing include, an include
+# cycle, or a malformed include line (one whose first token is `#include` or `# include` but
+# which is not `#include "path"`, optionally followed by a // comment) stops the build with a
+# one-line error naming FILE:LINE of the including file.
+# Without it (the style presets) files are embedded byte for byte.
+cmake_minimum_required(VERSION 3.25)  # script mode: IN_LIST, quoted if() arguments
+set(globs_text "${GLOBS}")
 string(REPLACE "|" ";" GLOBS "${GLOBS}")
 set(patterns "")
 foreach(g IN LISTS GLOBS)
@@ -8,10 +20,70 @@ foreach(g IN LISTS GLOBS)
 endforeach()
 file(GLOB_RECURSE files RELATIVE "${DIR}" ${patterns})
 list(SORT files)
+
+# Stops with `text` on one line: message() wraps non-indented text, indented text stays as it is.
+function(fail text)
+  message(FATAL_ERROR " ${text}")
+endfunction()
+
+# Appends the expansion of `path` (relative to DIR) to the caller's `expanded`. The caller's
+# `expanded_done` lists the files expanded so far for this embedded file (including `path`)
+# and `expanded_chain` the open include chain; both are updated.
+function(expand_includes path)
+  list(APPEND expanded_chain "${path}")
+  file(READ "${DIR}/${path}" rest)
+  set(number 0)
+  while(NOT rest STREQUAL "")
+    math(EXPR number "${number} + 1")
+    string(FIND "${rest}" "\n" eol)
+    if(eol EQUAL -1)
+      set(line "${rest}")
+      set(rest "")
+    else()
+      string(SUBSTRING "${rest}" 0 ${eol} line)
+      math(EXPR eol "${eol} + 1")
+      string(SUBSTRING "${rest}" ${eol} -1 rest)
+    endif()
+    if(NOT line MATCHES "^[ \t]*#[ \t]*include")
+      string(APPEND expanded "${line}\n")
+      continue()
+    endif()
+    set(where "${DIR}/${path}:${number}")
+    if(NOT line MATCHES "^#include \"([^\"]+)\"[ \t]*(//.*)?$")
+      fail("${where}: malformed include line (want #include \"file\"): ${line}")
+    endif()
+    set(target "${CMAKE_MATCH_1}")
+    if(NOT target IN_LIST files)
+      fail("${where}: #include \"${target}\": no such file (looked for ${DIR}/${target} matching ${globs_text})")
+    endif()
+    if(target IN_LIST expanded_chain)
+      list(APPEND expanded_chain "${target}")
+      list(JOIN expanded_chain " -> " chain)
+      fail("${where}: #include \"${target}\" is an include cycle: ${chain}")
+    endif()
+    if(NOT target IN_LIST expanded_done)
+      list(APPEND expanded_done "${target}")
+      expand_includes("${target}")
+    endif()
+  endwhile()
+  list(POP_BACK expanded_chain)
+  set(expanded "${expanded}" PARENT_SCOPE)
+  set(expanded_done "${expanded_done}" PARENT_SCOPE)
+  set(expanded_chain "${expanded_chain}" PARENT_SCOPE)
+endfunction()
+
 set(body "")
 set(entries "")
 foreach(f IN LISTS files)
-  file(READ "${DIR}/${f}" content HEX)
+  if(EXPAND_INCLUDES)
+    set(expanded "")
+    set(expanded_done "${f}")
+    set(expanded_chain "")
+    expand_includes("${f}")
+    string(HEX "${expanded}" content)
+  else()
+    file(READ "${DIR}/${f}" content HEX)
+  endif()
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${content}")
   string(MAKE_C_IDENTIFIER "${f}" id)
   string(APPEND body "static const unsigned char ${id}[] = {${bytes}0x00};\n")

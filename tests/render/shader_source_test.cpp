@@ -1,74 +1,76 @@
-// gpu/shader_source.hpp: `#include "file"` lines are expanded where they stand, each file once
-// per source; a missing include, a cycle or a malformed line is an error naming the including
-// file and line. Every embedded shader expands.
+// gpu/shader_source.hpp: the embedded shaders hold their sources with every `#include` already
+// expanded (cmake/embed_files.cmake; the expansion itself is tested by
+// tests/embed/embed_files_test.py), and every shader stage compiles as embedded.
 #include <gtest/gtest.h>
 
-#include <map>
+#include <algorithm>
+#include <regex>
+#include <string>
 
 #include "gpu/embedded_shaders.hpp"
+#include "gpu/gl_handle.hpp"
 #include "gpu/shader_source.hpp"
 #include "inkshade/error.hpp"
+#include "render/render_fixture.hpp"
 
 namespace inkshade::test {
 namespace {
 
-std::string expand(const std::map<std::string, std::string>& files, const std::string& path) {
-    return gpu::expand_includes(path, [&](const std::string& p) -> const char* {
-        auto it = files.find(p);
-        return it == files.end() ? nullptr : it->second.c_str();
-    });
+bool ends_with(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-std::string error_of(const std::map<std::string, std::string>& files, const std::string& path) {
-    try {
-        expand(files, path);
-    } catch (const RuntimeError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-TEST(ShaderSource, IncludesExpandInPlaceOncePerSource) {
-    const std::map<std::string, std::string> files = {
-        {"main.frag", "#version 450 core\n#include \"a.glsl\"  // why\n#include \"b.glsl\"\nvoid main() {}\n"},
-        {"a.glsl", "#include \"common.glsl\"\nfloat a;\n"},
-        {"b.glsl", "#include \"common.glsl\"\nfloat b;\n"},
-        {"common.glsl", "float common;\n"},
-    };
-    EXPECT_EQ(expand(files, "main.frag"), "#version 450 core\nfloat common;\nfloat a;\nfloat b;\nvoid main() {}\n");
-}
-
-TEST(ShaderSource, MissingIncludeNamesTheIncludingFileAndLine) {
-    const std::map<std::string, std::string> files = {
-        {"main.frag", "#version 450 core\n#include \"a.glsl\"\n"},
-        {"a.glsl", "float a;\n#include \"common/nope.glsl\"\n"},
-    };
-    const std::string error = error_of(files, "main.frag");
-    EXPECT_NE(error.find("a.glsl line 2"), std::string::npos) << error;
-    EXPECT_NE(error.find("common/nope.glsl is not embedded"), std::string::npos) << error;
-    EXPECT_NE(error_of(files, "missing.frag").find("missing.frag is not embedded"), std::string::npos);
-}
-
-TEST(ShaderSource, CyclesAndMalformedIncludesAreErrors) {
-    const std::map<std::string, std::string> cycle = {
-        {"a.glsl", "#include \"b.glsl\"\n"},
-        {"b.glsl", "\n#include \"a.glsl\"\n"},
-    };
-    const std::string error = error_of(cycle, "a.glsl");
-    EXPECT_NE(error.find("b.glsl line 2: #include \"a.glsl\" includes itself"), std::string::npos) << error;
-    const std::map<std::string, std::string> malformed = {{"a.glsl", "#include \"b.glsl\n"}};
-    EXPECT_NE(error_of(malformed, "a.glsl").find("a.glsl line 1: malformed #include"), std::string::npos);
-}
-
-TEST(ShaderSource, EveryEmbeddedShaderExpands) {
+TEST(ShaderSource, EveryEmbeddedShaderIsExpandedAtBuildTime) {
+    const std::regex include_line(R"(^[ \t]*#[ \t]*include)", std::regex::multiline);
     int count = 0;
     for (const EmbeddedFile& f : gpu::embedded_shaders()) {
         std::string source;
         ASSERT_NO_THROW(source = gpu::shader_source(f.path)) << f.path;
-        EXPECT_EQ(source.find("#include"), std::string::npos) << f.path;
+        EXPECT_EQ(source, f.contents) << f.path;  // looked up, not rewritten
+        EXPECT_FALSE(std::regex_search(source, include_line)) << f.path;
         ++count;
     }
     EXPECT_GT(count, 30);
+}
+
+TEST(ShaderSource, UnknownShaderIsAnError) {
+    try {
+        gpu::shader_source("shading/nope.frag");
+        FAIL();
+    } catch (const RuntimeError& e) {
+        EXPECT_NE(std::string(e.what()).find("shading/nope.frag is not embedded"), std::string::npos) << e.what();
+    }
+}
+
+// Each vertex and fragment stage compiles on its own, without the #defines of a variant (the
+// variants are compiled by the renderer tests).
+TEST(ShaderSource, EveryEmbeddedStageCompiles) {
+    shared_renderer();  // a current context
+    int count = 0;
+    for (const EmbeddedFile& f : gpu::embedded_shaders()) {
+        const std::string path = f.path;
+        GLenum type = 0;
+        if (ends_with(path, ".vert")) type = GL_VERTEX_SHADER;
+        else if (ends_with(path, ".frag")) type = GL_FRAGMENT_SHADER;
+        else continue;
+        const auto shader = gpu::GlShader::create(type);
+        const std::string source = gpu::shader_source(path);
+        const char* text = source.c_str();
+        glShaderSource(shader.id(), 1, &text, nullptr);
+        glCompileShader(shader.id());
+        GLint ok = 0;
+        glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+        std::string log;
+        if (!ok) {
+            GLint len = 0;
+            glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &len);
+            log.assign(size_t(std::max(len, 1)), '\0');
+            glGetShaderInfoLog(shader.id(), len, nullptr, log.data());
+        }
+        EXPECT_TRUE(ok) << path << ": " << log;
+        ++count;
+    }
+    EXPECT_GT(count, 25);
 }
 
 }  // namespace
