@@ -7,19 +7,11 @@
 #include "commands.hpp"
 #include "geometry/mesh_stats.hpp"
 #include "inkshade/io.hpp"
+#include "mesh_warnings.hpp"
 
 namespace inkshade::cli {
 
 namespace {
-
-// What the load got past (a texture not found, skipped primitives): one line each on stderr,
-// not an error.
-void print_warnings(const Mesh& mesh) {
-    for (std::string line : mesh.warnings) {
-        std::replace(line.begin(), line.end(), '\n', ' ');
-        std::fprintf(stderr, "inkshade: warning: %s\n", line.c_str());
-    }
-}
 
 // Distinct images among the materials' textures (materials may share one).
 size_t texture_count(const Mesh& mesh) {
@@ -38,7 +30,7 @@ Command add_info_command(CLI::App& app) {
     return [model] {
         auto start = std::chrono::steady_clock::now();
         Mesh mesh = load_mesh(*model);
-        print_warnings(mesh);
+        print_mesh_warnings(mesh);
         double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         geometry::MeshStats s = geometry::mesh_stats(mesh);
         BoundingBox b = mesh.bounds();

@@ -15,6 +15,7 @@
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/scene.hpp"
 #include "io/atomic_file.hpp"
+#include "mesh_warnings.hpp"
 #include "output_path.hpp"
 #include "scene_options.hpp"
 #include "timing_report.hpp"
@@ -90,6 +91,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
 
     const auto load_start = std::chrono::steady_clock::now();
     Mesh mesh = load_mesh(scene.model);
+    print_mesh_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const Camera camera = scene.frame(mesh.bounds());

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "mesh_warnings.hpp"
 #include "inkshade/scene.hpp"
 #include "output_path.hpp"
 #include "scene_options.hpp"
@@ -16,15 +17,6 @@
 namespace inkshade::cli {
 
 namespace {
-
-// What the load got past (a texture not found, skipped primitives): one line each on stderr,
-// not an error.
-void print_warnings(const Mesh& mesh) {
-    for (std::string line : mesh.warnings) {
-        std::replace(line.begin(), line.end(), '\n', ' ');
-        std::fprintf(stderr, "inkshade: warning: %s\n", line.c_str());
-    }
-}
 
 struct RenderArgs {
     SceneOptions scene;
@@ -41,7 +33,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const RenderOptions& options = scene.options;
     const auto load_start = std::chrono::steady_clock::now();
     Mesh mesh = load_mesh(scene.model);
-    print_warnings(mesh);
+    print_mesh_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();

@@ -12,6 +12,8 @@ namespace inkshade::builtin::teapot_data {
 extern const uint16_t kPatches[32][16];
 extern const float kControlPoints[306][3];
 
+// One patch or point a line, as in the published listing.
+// clang-format off
 const uint16_t kPatches[32][16] = {
     {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16},
     {4, 17, 18, 19, 8, 20, 21, 22, 12, 23, 24, 25, 16, 26, 27, 28},
@@ -151,5 +153,7 @@ const float kControlPoints[306][3] = {
     {0.84f, -1.5f, 0.15f}, {1.5f, -0.84f, 0.15f}, {0.84f, -1.5f, 0.075f},
     {1.5f, -0.84f, 0.075f}, {0.798f, -1.425f, 0.0f}, {1.425f, -0.798f, 0.0f},
 };
+
+// clang-format on
 
 }  // namespace inkshade::builtin::teapot_data

@@ -1,5 +1,5 @@
-// GLSL sources embedded at build time by cmake/embed_files.cmake (shader_source.hpp expands
-// their includes).
+// GLSL sources embedded at build time by cmake/embed_files.cmake, their #include lines already
+// expanded there (shader_source.hpp looks them up).
 #pragma once
 #include <vector>
 
