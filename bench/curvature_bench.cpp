@@ -49,5 +49,10 @@ void BM_Curvature(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_Curvature)->Arg(1)->Arg(2)->Iterations(5)->Repetitions(3)->ReportAggregatesOnly(true)
+BENCHMARK(BM_Curvature)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(5)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true)
     ->Unit(benchmark::kMillisecond);

@@ -61,8 +61,7 @@ void BM_LinesSuggestive(benchmark::State& state) {
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
     size_t n = 0;
     for (auto _ : state) {
-        const auto segs =
-            geometry::extract_suggestive_contours(s.mesh, s.mesh.normals, s.curvature, s.camera);
+        const auto segs = geometry::extract_suggestive_contours(s.mesh, s.mesh.normals, s.curvature, s.camera);
         n = segs.size();
         benchmark::DoNotOptimize(segs.data());
     }
@@ -75,10 +74,9 @@ void BM_LinesPerView(benchmark::State& state) {
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
     size_t n = 0;
     for (auto _ : state) {
-        const auto contours = geometry::chain_segments(
-            geometry::extract_contours(s.mesh, s.mesh.normals, s.camera));
-        const auto suggestive = geometry::chain_segments(geometry::extract_suggestive_contours(
-            s.mesh, s.mesh.normals, s.curvature, s.camera));
+        const auto contours = geometry::chain_segments(geometry::extract_contours(s.mesh, s.mesh.normals, s.camera));
+        const auto suggestive = geometry::chain_segments(
+            geometry::extract_suggestive_contours(s.mesh, s.mesh.normals, s.curvature, s.camera));
         n = contours.size() + suggestive.size();
         benchmark::DoNotOptimize(contours.data());
         benchmark::DoNotOptimize(suggestive.data());

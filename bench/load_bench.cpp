@@ -143,12 +143,22 @@ void run_load(benchmark::State& state, const char* ext, Load load) {
                                                 benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void BM_LoadPly(benchmark::State& s) { run_load(s, ".ply", [](auto& p) { return inkshade::load_mesh(p); }); }
-void BM_LoadStl(benchmark::State& s) { run_load(s, ".stl", [](auto& p) { return inkshade::load_mesh(p); }); }
-void BM_LoadObj(benchmark::State& s) { run_load(s, ".obj", [](auto& p) { return inkshade::load_mesh(p); }); }
+void BM_LoadPly(benchmark::State& s) {
+    run_load(s, ".ply", [](auto& p) { return inkshade::load_mesh(p); });
+}
+void BM_LoadStl(benchmark::State& s) {
+    run_load(s, ".stl", [](auto& p) { return inkshade::load_mesh(p); });
+}
+void BM_LoadObj(benchmark::State& s) {
+    run_load(s, ".obj", [](auto& p) { return inkshade::load_mesh(p); });
+}
 // Parsing alone, without validation, welding and normals.
-void BM_ReadPly(benchmark::State& s) { run_load(s, ".ply", [](auto& p) { return inkshade::io::read_ply(p); }); }
-void BM_ReadStl(benchmark::State& s) { run_load(s, ".stl", [](auto& p) { return inkshade::io::read_stl(p); }); }
+void BM_ReadPly(benchmark::State& s) {
+    run_load(s, ".ply", [](auto& p) { return inkshade::io::read_ply(p); });
+}
+void BM_ReadStl(benchmark::State& s) {
+    run_load(s, ".stl", [](auto& p) { return inkshade::io::read_stl(p); });
+}
 
 // The last generated mesh, reused across the iterations of one size.
 const Mesh& cached(int64_t triangles, bool soup) {

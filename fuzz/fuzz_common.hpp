@@ -105,7 +105,8 @@ inline void check_mesh(const Mesh& mesh) {
 // What every InputError promises: one line, starting with the file it is about.
 inline void check_error(const InputError& e, const std::string& path) {
     const std::string what = e.what();
-    if (what.find('\n') != std::string::npos || what.find('\r') != std::string::npos) broken("multi-line error: " + what);
+    if (what.find('\n') != std::string::npos || what.find('\r') != std::string::npos)
+        broken("multi-line error: " + what);
     if (what.rfind(path + ": ", 0) != 0) broken("error does not start with the file name: " + what);
 }
 

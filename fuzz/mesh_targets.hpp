@@ -23,10 +23,14 @@ inline constexpr std::string_view kPartMarker = "\n#%%\n";
 inline void obj_input(std::string_view data) {
     const auto parts = split(data, kPartMarker, 3);
     const std::string path = write_file("input.obj", parts[0]);
-    if (parts.size() > 1) write_file("m.mtl", parts[1]);
-    else remove_file("m.mtl");
-    if (parts.size() > 2) write_file("t.png", parts[2]);
-    else remove_file("t.png");
+    if (parts.size() > 1)
+        write_file("m.mtl", parts[1]);
+    else
+        remove_file("m.mtl");
+    if (parts.size() > 2)
+        write_file("t.png", parts[2]);
+    else
+        remove_file("t.png");
     Mesh mesh;
     load_checked(path, mesh);
 }
@@ -48,8 +52,10 @@ inline void off_input(std::string_view data) {
 inline void ply_input(std::string_view data) {
     const auto parts = split(data, kPartMarker, 2);
     const std::string path = write_file("input.ply", parts[0]);
-    if (parts.size() > 1) write_file("t.png", parts[1]);
-    else remove_file("t.png");
+    if (parts.size() > 1)
+        write_file("t.png", parts[1]);
+    else
+        remove_file("t.png");
     Mesh mesh;
     load_checked(path, mesh);
 }
@@ -62,8 +68,10 @@ inline void gltf_input(std::string_view data) {
     const char* name = static_cast<unsigned char>(data[0]) % 2 == 0 ? "input.gltf" : "input.glb";
     const auto parts = split(data.substr(1), kPartMarker, 2);
     const std::string path = write_file(name, parts[0]);
-    if (parts.size() > 1) write_file("b.bin", parts[1]);
-    else remove_file("b.bin");
+    if (parts.size() > 1)
+        write_file("b.bin", parts[1]);
+    else
+        remove_file("b.bin");
     Mesh mesh;
     load_checked(path, mesh);
 }
@@ -80,7 +88,8 @@ inline void mesh_pipeline_input(std::string_view data) {
     const std::string ext = kExtensions[static_cast<unsigned char>(data[0]) % std::size(kExtensions)];
     const unsigned options = static_cast<unsigned char>(data[1]);
     Mesh mesh;
-    if (!load_checked(write_file("input" + ext, data.substr(2)), mesh) || mesh.triangle_count() > kMaxPipelineTriangles) return;
+    if (!load_checked(write_file("input" + ext, data.substr(2)), mesh) || mesh.triangle_count() > kMaxPipelineTriangles)
+        return;
 
     // Eight views around the model, auto-framed as `inkshade lines` does, from above or below,
     // sometimes orthographic; sometimes hidden lines too, every piece kept and smoothed.

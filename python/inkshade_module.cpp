@@ -22,9 +22,10 @@ namespace {
 
 // The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
 // with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
-const std::vector<std::string> kSceneKeywords = {
-    "size", "azimuth", "elevation", "distance", "eye", "target", "up", "fov", "ortho", "ortho_height", "near",
-    "far", "light_pos", "light_target", "light_type", "light_color", "ambient", "base_color", "srgb"};
+const std::vector<std::string> kSceneKeywords = {"size",        "azimuth", "elevation",  "distance",     "eye",
+                                                 "target",      "up",      "fov",        "ortho",        "ortho_height",
+                                                 "near",        "far",     "light_pos",  "light_target", "light_type",
+                                                 "light_color", "ambient", "base_color", "srgb"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -32,7 +33,8 @@ glm::vec4 to_color(const std::string& key, const py::handle& value, bool alpha) 
     if (py::isinstance<py::str>(value)) return parse_color(key, value.cast<std::string>());
     const auto v = value.cast<std::vector<float>>();
     if (v.size() != 3 && !(alpha && v.size() == 4))
-        throw InputError(key + ": expected " + (alpha ? "3 or 4" : "3") + " components, got " + std::to_string(v.size()));
+        throw InputError(key + ": expected " + (alpha ? "3 or 4" : "3") + " components, got " +
+                         std::to_string(v.size()));
     return glm::vec4(v[0], v[1], v[2], v.size() == 4 ? v[3] : 1.0f);
 }
 
@@ -64,24 +66,42 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
         if (key == "size") {
             const auto [w, h] = value.cast<std::pair<int, int>>();
             r.size = {w, h};
-        } else if (key == "azimuth") c.azimuth_degrees = value.cast<float>();
-        else if (key == "elevation") c.elevation_degrees = value.cast<float>();
-        else if (key == "distance") c.distance = value.cast<float>();
-        else if (key == "eye") c.eye = to_vec3(key, value);
-        else if (key == "target") c.target = to_vec3(key, value);
-        else if (key == "up") c.up = to_vec3(key, value);
-        else if (key == "fov") c.fov_degrees = value.cast<float>();
-        else if (key == "ortho") c.orthographic = value.cast<bool>();
-        else if (key == "ortho_height") c.ortho_height = value.cast<float>();
-        else if (key == "near") c.near_plane = value.cast<float>();
-        else if (key == "far") c.far_plane = value.cast<float>();
-        else if (key == "light_pos") r.light_position = to_vec3(key, value);
-        else if (key == "light_target") r.light_target = to_vec3(key, value);
-        else if (key == "light_type") r.light_type = parse_light_type(key, value.cast<std::string>());
-        else if (key == "light_color") r.light_color = glm::vec3(to_color(key, value, false));
-        else if (key == "ambient") r.ambient = glm::vec3(to_color(key, value, false));
-        else if (key == "base_color") r.base_color = glm::vec3(to_color(key, value, false));
-        else if (key == "srgb") r.srgb = value.cast<bool>();
+        } else if (key == "azimuth")
+            c.azimuth_degrees = value.cast<float>();
+        else if (key == "elevation")
+            c.elevation_degrees = value.cast<float>();
+        else if (key == "distance")
+            c.distance = value.cast<float>();
+        else if (key == "eye")
+            c.eye = to_vec3(key, value);
+        else if (key == "target")
+            c.target = to_vec3(key, value);
+        else if (key == "up")
+            c.up = to_vec3(key, value);
+        else if (key == "fov")
+            c.fov_degrees = value.cast<float>();
+        else if (key == "ortho")
+            c.orthographic = value.cast<bool>();
+        else if (key == "ortho_height")
+            c.ortho_height = value.cast<float>();
+        else if (key == "near")
+            c.near_plane = value.cast<float>();
+        else if (key == "far")
+            c.far_plane = value.cast<float>();
+        else if (key == "light_pos")
+            r.light_position = to_vec3(key, value);
+        else if (key == "light_target")
+            r.light_target = to_vec3(key, value);
+        else if (key == "light_type")
+            r.light_type = parse_light_type(key, value.cast<std::string>());
+        else if (key == "light_color")
+            r.light_color = glm::vec3(to_color(key, value, false));
+        else if (key == "ambient")
+            r.ambient = glm::vec3(to_color(key, value, false));
+        else if (key == "base_color")
+            r.base_color = glm::vec3(to_color(key, value, false));
+        else if (key == "srgb")
+            r.srgb = value.cast<bool>();
     }
     return r;
 }
@@ -177,25 +197,30 @@ PYBIND11_MODULE(inkshade, m) {
     py::class_<Mesh>(m, "Mesh")
         .def_property_readonly("vertex_count", &Mesh::vertex_count)
         .def_property_readonly("triangle_count", &Mesh::triangle_count)
-        .def_property_readonly("bounds", [](const Mesh& mesh) {
-            const BoundingBox b = mesh.bounds();
-            return std::make_pair(std::array<float, 3>{b.min.x, b.min.y, b.min.z},
-                                  std::array<float, 3>{b.max.x, b.max.y, b.max.z});
-        })
+        .def_property_readonly(
+            "bounds",
+            [](const Mesh& mesh) {
+        const BoundingBox b = mesh.bounds();
+        return std::make_pair(std::array<float, 3>{b.min.x, b.min.y, b.min.z},
+                              std::array<float, 3>{b.max.x, b.max.y, b.max.z});
+            })
         .def_readonly("warnings", &Mesh::warnings)
         .def("__repr__", [](const Mesh& mesh) {
             return "<inkshade.Mesh " + std::to_string(mesh.vertex_count()) + " vertices, " +
                    std::to_string(mesh.triangle_count()) + " triangles>";
         });
-    m.def("load_mesh", [](const std::string& path) { return load_mesh(path); }, py::arg("path"),
-          "Loads OBJ/STL/PLY/OFF/glTF/GLB/VRM or builtin:NAME (sphere, torus, torus-knot, teapot).");
+    m.def(
+        "load_mesh", [](const std::string& path) { return load_mesh(path); }, py::arg("path"),
+        "Loads OBJ/STL/PLY/OFF/glTF/GLB/VRM or builtin:NAME (sphere, torus, torus-knot, teapot).");
     m.def("styles", &builtin_style_names, "Built-in style names (presets and shading models).");
     m.def("line_types", [] {
         std::vector<std::string> names;
         for (const LineType* t : line_types()) names.push_back(t->name);
         return names;
     });
-    m.def("shading_models", [] {
+    m.def(
+        "shading_models",
+        [] {
         py::dict models;
         for (const ShadingModel* model : shading_models()) {
             py::dict params;
@@ -203,7 +228,8 @@ PYBIND11_MODULE(inkshade, m) {
             models[py::str(model->name)] = py::dict(py::arg("summary") = model->summary, py::arg("params") = params);
         }
         return models;
-    }, "{model name: {summary, params: {name: description}}}");
+        },
+        "{model name: {summary, params: {name: description}}}");
 
     // Batch rendering: a manifest (CSV/JSON Lines) or models x views x styles, as `inkshade
     // batch`; progress(event_dict) is called after each job with the GIL held.
@@ -213,50 +239,55 @@ PYBIND11_MODULE(inkshade, m) {
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
            int samples, std::optional<py::function> progress) {
-            BatchDefaults defaults;
-            defaults.views = views;
-            defaults.styles.clear();
-            for (const auto& s : styles) defaults.styles += (defaults.styles.empty() ? "" : ",") + s;
-            std::tie(defaults.width, defaults.height) = size;
-            SceneRequest shared;  // the options every job shares, checked as render's keywords are
-            shared.names = OptionNames::Keywords;
-            shared.size = {defaults.width, defaults.height};
-            shared.samples = samples;
-            make_scene(shared);
-            defaults.outputs = {};
-            defaults.outputs.png = false;
-            for (const auto& f : formats) {
-                if (f == "png") defaults.outputs.png = true;
-                else if (f == "svg") defaults.outputs.svg = true;
-                else throw InputError("formats: expected png and/or svg, got '" + f + "'");
-            }
-            if (manifest.has_value() == models.has_value())
-                throw InputError("batch: give exactly one of manifest= or models=");
-            std::vector<BatchJob> jobs = manifest ? load_manifest(*manifest, defaults)
-                                                  : expand_jobs(find_models(*models), defaults);
-            if (shard_of) jobs = shard(jobs, shard_of->first, shard_of->second);
-            BatchOptions options{.output_dir = output_dir, .force = force, .samples = samples};
-            BatchProgress report;
-            if (progress)
-                report = [&](const BatchEvent& e) {
-                    py::gil_scoped_acquire gil;
-                    const char* status = e.status == BatchStatus::Done ? "done"
-                                         : e.status == BatchStatus::Skipped ? "skipped" : "failed";
-                    (*progress)(py::dict(py::arg("status") = status, py::arg("stem") = e.job ? e.job->stem : "",
-                                         py::arg("reason") = e.reason, py::arg("finished") = e.finished,
-                                         py::arg("total") = e.total, py::arg("seconds") = e.seconds));
-                };
-            BatchSummary summary;
-            {
-                py::gil_scoped_release release;
-                summary = run_batch(jobs, options, report);
-            }
-            py::list failures;
-            for (const auto& f : summary.failures)
-                failures.append(py::dict(py::arg("stem") = f.stem, py::arg("model") = f.model, py::arg("reason") = f.reason));
-            return py::dict(py::arg("total") = summary.total, py::arg("done") = summary.done,
-                            py::arg("skipped") = summary.skipped, py::arg("failed") = summary.failed,
-                            py::arg("seconds") = summary.seconds, py::arg("failures") = failures);
+        BatchDefaults defaults;
+        defaults.views = views;
+        defaults.styles.clear();
+        for (const auto& s : styles) defaults.styles += (defaults.styles.empty() ? "" : ",") + s;
+        std::tie(defaults.width, defaults.height) = size;
+        SceneRequest shared;  // the options every job shares, checked as render's keywords are
+        shared.names = OptionNames::Keywords;
+        shared.size = {defaults.width, defaults.height};
+        shared.samples = samples;
+        make_scene(shared);
+        defaults.outputs = {};
+        defaults.outputs.png = false;
+        for (const auto& f : formats) {
+            if (f == "png")
+                defaults.outputs.png = true;
+            else if (f == "svg")
+                defaults.outputs.svg = true;
+            else
+                throw InputError("formats: expected png and/or svg, got '" + f + "'");
+        }
+        if (manifest.has_value() == models.has_value())
+            throw InputError("batch: give exactly one of manifest= or models=");
+        std::vector<BatchJob> jobs =
+            manifest ? load_manifest(*manifest, defaults) : expand_jobs(find_models(*models), defaults);
+        if (shard_of) jobs = shard(jobs, shard_of->first, shard_of->second);
+        BatchOptions options{.output_dir = output_dir, .force = force, .samples = samples};
+        BatchProgress report;
+        if (progress)
+            report = [&](const BatchEvent& e) {
+                py::gil_scoped_acquire gil;
+                const char* status = e.status == BatchStatus::Done      ? "done"
+                                     : e.status == BatchStatus::Skipped ? "skipped"
+                                                                        : "failed";
+                (*progress)(py::dict(py::arg("status") = status, py::arg("stem") = e.job ? e.job->stem : "",
+                                     py::arg("reason") = e.reason, py::arg("finished") = e.finished,
+                                     py::arg("total") = e.total, py::arg("seconds") = e.seconds));
+            };
+        BatchSummary summary;
+        {
+            py::gil_scoped_release release;
+            summary = run_batch(jobs, options, report);
+        }
+        py::list failures;
+        for (const auto& f : summary.failures)
+            failures.append(
+                py::dict(py::arg("stem") = f.stem, py::arg("model") = f.model, py::arg("reason") = f.reason));
+        return py::dict(py::arg("total") = summary.total, py::arg("done") = summary.done,
+                        py::arg("skipped") = summary.skipped, py::arg("failed") = summary.failed,
+                        py::arg("seconds") = summary.seconds, py::arg("failures") = failures);
         },
         py::arg("output_dir"), py::kw_only(), py::arg("manifest") = py::none(), py::arg("models") = py::none(),
         py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
@@ -273,10 +304,10 @@ PYBIND11_MODULE(inkshade, m) {
             "render",
             [](PyRenderer& r, const std::string& style, const std::vector<std::string>& set, int samples,
                const py::object& background, const py::kwargs& kwargs) {
-                SceneRequest request = request_of(style, set, kwargs, {.image = true, .line_drawing = false});
-                request.samples = samples;
-                if (!background.is_none()) request.background = to_color("background", background, true);
-                return r.render(make_scene(request));
+        SceneRequest request = request_of(style, set, kwargs, {.image = true, .line_drawing = false});
+        request.samples = samples;
+        if (!background.is_none()) request.background = to_color("background", background, true);
+        return r.render(make_scene(request));
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(),
@@ -286,7 +317,7 @@ PYBIND11_MODULE(inkshade, m) {
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
                const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
-                return to_python(r.lines(line_scene(std::move(types), style, set, hidden, kwargs)));
+        return to_python(r.lines(line_scene(std::move(types), style, set, hidden, kwargs)));
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false,
@@ -296,8 +327,8 @@ PYBIND11_MODULE(inkshade, m) {
             "svg",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
                const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
-                const Scene scene = line_scene(std::move(types), style, set, hidden, kwargs);
-                return format_svg(r.lines(scene), scene.style.background);
+        const Scene scene = line_scene(std::move(types), style, set, hidden, kwargs);
+        return format_svg(r.lines(scene), scene.style.background);
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, "The SVG text `inkshade lines` writes.");

@@ -67,7 +67,8 @@ public:
     StopSignals& operator=(const StopSignals&) = delete;
 
 private:
-    struct sigaction old_int_ {}, old_term_ {};
+    struct sigaction old_int_ {
+    }, old_term_{};
 };
 
 // The options' values, checked with the option's name in the message.
@@ -122,7 +123,8 @@ void check_output_dir(const std::string& dir) {
     if (dir.empty()) throw InputError("-o: empty path");
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError(dir + ": output is not a directory");
     fs::create_directories(dir, ec);
-    if (!fs::is_directory(dir, ec)) throw InputError(dir + ": cannot create the output directory (" + ec.message() + ")");
+    if (!fs::is_directory(dir, ec))
+        throw InputError(dir + ": cannot create the output directory (" + ec.message() + ")");
     if (::access(dir.c_str(), W_OK) != 0) throw InputError(dir + ": output directory is not writable");
 }
 
@@ -135,8 +137,8 @@ int run_batch_command(const BatchArgs& args) {
         throw InputError("give a MANIFEST or --models DIR (one of the two)");
     if (args.output.empty() && !args.dry_run) throw InputError("-o DIR: the output directory is required");
     const BatchDefaults defaults = defaults_from(args);
-    std::vector<BatchJob> jobs = args.models.empty() ? load_manifest(args.manifest, defaults)
-                                                     : expand_jobs(find_models(args.models), defaults);
+    std::vector<BatchJob> jobs =
+        args.models.empty() ? load_manifest(args.manifest, defaults) : expand_jobs(find_models(args.models), defaults);
     check_styles(jobs);
     const size_t all = jobs.size();
     if (!args.shard.empty()) {

@@ -27,8 +27,7 @@ Command add_demo_command(CLI::App& app) {
     return [args] {
         std::error_code ec;
         std::filesystem::create_directories(args->out, ec);
-        if (!std::filesystem::is_directory(args->out))
-            throw InputError(args->out + ": cannot create output folder");
+        if (!std::filesystem::is_directory(args->out)) throw InputError(args->out + ": cannot create output folder");
         SceneRequest request;
         request.model = args->model;
         request.size = {args->size, args->size};

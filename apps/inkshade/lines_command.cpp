@@ -43,8 +43,7 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
         std::vector<LineTiming> timings;
         const auto start = std::chrono::steady_clock::now();
         draw_scene_lines(extractor, scene, camera, &timings);
-        totals.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        totals.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         for (const auto& t : timings) {
             if (!per_stage.count(t.stage)) order.push_back(t.stage);
             per_stage[t.stage].push_back(t.milliseconds);
@@ -54,10 +53,9 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
     for (const LineSettings& l : scene.vector_lines) names += (names.empty() ? "" : ",") + l.type;
     size_t paths = 0;
     for (const LineLayer& l : drawing.layers) paths += l.visible.size() + l.hidden.size();
-    std::printf("timing: lines %s, %zu triangles, %dx%d, %zu paths, %d views\n", names.c_str(),
-                triangles, drawing.width, drawing.height, paths, args.timing);
-    for (const auto& stage : order)
-        std::printf("  %-10s median %8.2f ms\n", stage.c_str(), median(per_stage[stage]));
+    std::printf("timing: lines %s, %zu triangles, %dx%d, %zu paths, %d views\n", names.c_str(), triangles,
+                drawing.width, drawing.height, paths, args.timing);
+    for (const auto& stage : order) std::printf("  %-10s median %8.2f ms\n", stage.c_str(), median(per_stage[stage]));
     std::printf("  %-10s median %8.2f ms\n", "total", median(totals));
     std::string once;
     for (const LineTiming& t : setup)
@@ -66,8 +64,8 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
             std::snprintf(buf, sizeof buf, "%s%s %.0f ms", once.empty() ? "" : ", ", t.stage.c_str(), t.milliseconds);
             once += buf;
         }
-    std::printf("  once per mesh: %s; load %.0f ms, peak RSS %.0f MiB\n", once.empty() ? "none" : once.c_str(),
-                load_ms, peak_rss_mib());
+    std::printf("  once per mesh: %s; load %.0f ms, peak RSS %.0f MiB\n", once.empty() ? "none" : once.c_str(), load_ms,
+                peak_rss_mib());
 }
 
 // The line types --lines names, comma-separated; unset when it is not given.

@@ -32,10 +32,10 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("inkshade ") + inkshade::kVersion);
     app.footer("Exit status: 0 success, 1 rendering or runtime failure, 2 bad input or bad usage.");
     std::map<CLI::App*, inkshade::cli::Command> commands;
-    for (auto add : {inkshade::cli::add_render_command, inkshade::cli::add_lines_command,
-                     inkshade::cli::add_view_command, inkshade::cli::add_info_command,
-                     inkshade::cli::add_styles_command, inkshade::cli::add_demo_command,
-                     inkshade::cli::add_batch_command}) {
+    for (auto add :
+         {inkshade::cli::add_render_command, inkshade::cli::add_lines_command, inkshade::cli::add_view_command,
+          inkshade::cli::add_info_command, inkshade::cli::add_styles_command, inkshade::cli::add_demo_command,
+          inkshade::cli::add_batch_command}) {
         size_t before = app.get_subcommands({}).size();
         auto run = add(app);
         commands[app.get_subcommands({})[before]] = run;

@@ -57,7 +57,8 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
             std::vector<PassTiming> timings;
             auto start = std::chrono::steady_clock::now();
             image = render_scene(renderer, scene, camera, light, &timings);
-            totals.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            totals.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             double gpu = 0.0;
             for (const auto& t : timings) {
                 if (!per_pass.count(t.pass)) order.push_back(t.pass);
@@ -67,9 +68,9 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
             }
             gpu_totals.push_back(gpu);
         }
-        std::printf("timing: %s, %zu triangles, %dx%d, %d samples, %d frames on %s\n", scene.style.shading.model.c_str(),
-                    triangles, options.width, options.height, options.samples, args.timing,
-                    renderer.gl_renderer().c_str());
+        std::printf("timing: %s, %zu triangles, %dx%d, %d samples, %d frames on %s\n",
+                    scene.style.shading.model.c_str(), triangles, options.width, options.height, options.samples,
+                    args.timing, renderer.gl_renderer().c_str());
         for (const auto& pass : order)
             std::printf("  %-10s median %8.2f ms  gpu %8.3f ms\n", pass.c_str(), median(per_pass[pass]),
                         median(per_pass_gpu[pass]));

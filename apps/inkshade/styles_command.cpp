@@ -24,12 +24,18 @@ std::string range_text(const ParamSpec& p) {
 
 const char* type_text(ParamType t) {
     switch (t) {
-        case ParamType::Float: return "float";
-        case ParamType::Int: return "int";
-        case ParamType::Bool: return "bool";
-        case ParamType::Color: return "colour";
-        case ParamType::Choice: return "choice";
-        case ParamType::FloatList: return "list";
+        case ParamType::Float:
+            return "float";
+        case ParamType::Int:
+            return "int";
+        case ParamType::Bool:
+            return "bool";
+        case ParamType::Color:
+            return "colour";
+        case ParamType::Choice:
+            return "choice";
+        case ParamType::FloatList:
+            return "list";
     }
     return "?";
 }
@@ -43,13 +49,15 @@ void print_params(const std::vector<ParamSpec>& params) {
 }  // namespace
 
 Command add_styles_command(CLI::App& app) {
-    CLI::App* cmd = app.add_subcommand("styles", "list styles, shading models, debug views, line types and their parameters");
+    CLI::App* cmd =
+        app.add_subcommand("styles", "list styles, shading models, debug views, line types and their parameters");
     return [cmd] {
         (void)cmd;
         std::printf("Styles (--style NAME, or --style FILE.toml; docs/styles.md):\n");
         for (const std::string& name : builtin_style_names()) {
             Style style = load_style(name);
-            std::printf("  %-12s %s  [model %s]\n", name.c_str(), style.description.c_str(), style.shading.model.c_str());
+            std::printf("  %-12s %s  [model %s]\n", name.c_str(), style.description.c_str(),
+                        style.shading.model.c_str());
         }
         bool debug_header = false;
         std::printf("\nShading models (--shading NAME, --set [NAME.]param=value):\n");

@@ -108,8 +108,8 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), scene_(options
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: the window keeps its apparent size
-    window_ = glfwCreateWindow(options_.scene.options.width, options_.scene.options.height, "inkshade", nullptr,
-                               nullptr);
+    window_ =
+        glfwCreateWindow(options_.scene.options.width, options_.scene.options.height, "inkshade", nullptr, nullptr);
     if (!window_) {
         glfwTerminate();
         throw RuntimeError("cannot open an OpenGL 4.5 window (" + g_glfw_error + "); use `inkshade render` instead");
@@ -170,8 +170,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), scene_(options
     // The renderer draws with the window's context (one context: no sharing or switching).
     renderer_ = std::make_unique<Renderer>([w = window_] { glfwMakeContextCurrent(w); });
     glGenTextures(1, &texture_);
-    if (!open_model(options_.scene.model.empty() ? "builtin:teapot" : options_.scene.model))
-        throw InputError(message_);
+    if (!open_model(options_.scene.model.empty() ? "builtin:teapot" : options_.scene.model)) throw InputError(message_);
 }
 
 Viewer::~Viewer() {
@@ -254,8 +253,10 @@ void Viewer::toggle_line_type(size_t index) {
     if (index >= types.size()) return;
     auto it = std::find_if(scene_.style.lines.begin(), scene_.style.lines.end(),
                            [&](const LineSettings& l) { return l.type == types[index]->name; });
-    if (it != scene_.style.lines.end()) scene_.style.lines.erase(it);
-    else scene_.style.lines.push_back({types[index]->name, {}});
+    if (it != scene_.style.lines.end())
+        scene_.style.lines.erase(it);
+    else
+        scene_.style.lines.push_back({types[index]->name, {}});
     dirty_ = true;
 }
 
@@ -283,16 +284,26 @@ void Viewer::save_style_file(const std::string& path) {
 
 void Viewer::handle_key(int key) {
     switch (key) {
-        case GLFW_KEY_F: cycle_shading_model(); break;
-        case GLFW_KEY_H: gui_ = !gui_; break;
-        case GLFW_KEY_S: save_frame(frame_path_); break;
-        case GLFW_KEY_R: reset_camera(); break;
+        case GLFW_KEY_F:
+            cycle_shading_model();
+            break;
+        case GLFW_KEY_H:
+            gui_ = !gui_;
+            break;
+        case GLFW_KEY_S:
+            save_frame(frame_path_);
+            break;
+        case GLFW_KEY_R:
+            reset_camera();
+            break;
         case GLFW_KEY_O:
             camera_.orthographic = !camera_.orthographic;
             fit_clip_planes(camera_, box_);
             dirty_ = true;
             break;
-        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
+        case GLFW_KEY_ESCAPE:
+            glfwSetWindowShouldClose(window_, GLFW_TRUE);
+            break;
         default:
             if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) toggle_line_type(size_t(key - GLFW_KEY_1));
             break;
@@ -413,7 +424,8 @@ void Viewer::draw_gui() {
         bool point = scene_.light_type == LightType::Point;
         if (ImGui::Checkbox("point light", &point))
             scene_.light_type = point ? LightType::Point : LightType::Directional, dirty_ = true;
-        glm::vec3 lc = scene_.style.light_color.value_or(light_.color), amb = scene_.style.ambient.value_or(light_.ambient);
+        glm::vec3 lc = scene_.style.light_color.value_or(light_.color),
+                  amb = scene_.style.ambient.value_or(light_.ambient);
         if (ImGui::ColorEdit3("light colour", &lc.x)) scene_.style.light_color = lc, dirty_ = true;
         if (ImGui::ColorEdit3("ambient", &amb.x)) scene_.style.ambient = amb, dirty_ = true;
         if (ImGui::Checkbox("orthographic (O)", &camera_.orthographic)) fit_clip_planes(camera_, box_), dirty_ = true;
@@ -436,8 +448,12 @@ void Viewer::draw_gui() {
 void Viewer::run_script_command(const ScriptCommand& c) {
     const std::string& a = c.argument;
     switch (c.kind) {
-        case ScriptCommand::Frames: wait_frames_ = c.count; break;
-        case ScriptCommand::Key: handle_key(c.count); break;
+        case ScriptCommand::Frames:
+            wait_frames_ = c.count;
+            break;
+        case ScriptCommand::Key:
+            handle_key(c.count);
+            break;
         case ScriptCommand::Set:
             try {
                 apply_set(scene_.style, a);
@@ -456,14 +472,29 @@ void Viewer::run_script_command(const ScriptCommand& c) {
         case ScriptCommand::LightPos:
             scene_.light_position = c.vector, dirty_ = true;
             break;
-        case ScriptCommand::Orbit: orbit(camera_, c.vector.x, c.vector.y), fit_clip_planes(camera_, box_), dirty_ = true; break;
-        case ScriptCommand::Zoom: zoom(camera_, c.vector.x, box_), dirty_ = true; break;
-        case ScriptCommand::Open: open_model(a); break;
-        case ScriptCommand::Screenshot: break;  // after the frame is drawn (run loop)
-        case ScriptCommand::SaveFrame: save_frame(a); break;
-        case ScriptCommand::SaveStyle: save_style_file(a); break;
-        case ScriptCommand::Gui: gui_ = c.count != 0; break;
-        case ScriptCommand::Quit: quit_ = true; break;
+        case ScriptCommand::Orbit:
+            orbit(camera_, c.vector.x, c.vector.y), fit_clip_planes(camera_, box_), dirty_ = true;
+            break;
+        case ScriptCommand::Zoom:
+            zoom(camera_, c.vector.x, box_), dirty_ = true;
+            break;
+        case ScriptCommand::Open:
+            open_model(a);
+            break;
+        case ScriptCommand::Screenshot:
+            break;  // after the frame is drawn (run loop)
+        case ScriptCommand::SaveFrame:
+            save_frame(a);
+            break;
+        case ScriptCommand::SaveStyle:
+            save_style_file(a);
+            break;
+        case ScriptCommand::Gui:
+            gui_ = c.count != 0;
+            break;
+        case ScriptCommand::Quit:
+            quit_ = true;
+            break;
     }
 }
 
@@ -472,16 +503,20 @@ int Viewer::run() {
     while (!glfwWindowShouldClose(window_) && !quit_) {
         // Interactive: sleep until input arrives; scripted: poll and run one command per frame.
         const bool scripted = !script_.empty() || options_.frames > 0;
-        if (scripted) glfwPollEvents();
-        else glfwWaitEventsTimeout(0.25);
+        if (scripted)
+            glfwPollEvents();
+        else
+            glfwWaitEventsTimeout(0.25);
 
         std::string screenshot;
         if (wait_frames_ > 0) {
             --wait_frames_;
         } else if (script_pos_ < script_.size()) {
             const ScriptCommand& c = script_[script_pos_++];
-            if (c.kind == ScriptCommand::Screenshot) screenshot = c.argument;
-            else run_script_command(c);
+            if (c.kind == ScriptCommand::Screenshot)
+                screenshot = c.argument;
+            else
+                run_script_command(c);
         } else if (!script_.empty() && options_.frames == 0) {
             break;  // the script has ended
         }

@@ -16,10 +16,10 @@ struct ViewerOptions {
     // The model (empty: builtin:teapot), style, camera, light and image options as every front
     // end gives them (make_scene); the image size is the window's size in screen coordinates.
     Scene scene;
-    bool gui = true;                  // H toggles
-    std::string script;               // commands run one per frame (see docs/viewer.md)
-    std::string screenshot;           // with `frames`: save the window after N frames and exit
-    int frames = 0;                   // > 0: exit after N frames
+    bool gui = true;         // H toggles
+    std::string script;      // commands run one per frame (see docs/viewer.md)
+    std::string screenshot;  // with `frames`: save the window after N frames and exit
+    int frames = 0;          // > 0: exit after N frames
 };
 
 // Opens the window and runs until it is closed, the script ends or `frames` are shown.

@@ -57,8 +57,8 @@ ScriptCommand parse_script_line(const std::string& line) {
     } else if (verb == "style" || verb == "open" || verb == "screenshot" || verb == "save-frame" ||
                verb == "save-style") {
         if (rest.empty()) throw InputError(verb + ": expected a name or path");
-        c.kind = verb == "style" ? ScriptCommand::StyleName
-                 : verb == "open" ? ScriptCommand::Open
+        c.kind = verb == "style"        ? ScriptCommand::StyleName
+                 : verb == "open"       ? ScriptCommand::Open
                  : verb == "screenshot" ? ScriptCommand::Screenshot
                  : verb == "save-frame" ? ScriptCommand::SaveFrame
                                         : ScriptCommand::SaveStyle;

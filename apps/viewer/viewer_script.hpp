@@ -24,9 +24,9 @@ namespace inkshade::viewer {
 struct ScriptCommand {
     enum Kind { Frames, Key, Set, StyleName, LightPos, Orbit, Zoom, Open, Screenshot, SaveFrame, SaveStyle, Gui, Quit };
     Kind kind = Quit;
-    std::string argument;     // paths, names, set text
-    int count = 0;            // frames, key code (GLFW = upper-case ASCII), gui on/off
-    glm::vec3 vector{0.0f};   // light-pos; orbit (yaw, pitch); zoom (factor)
+    std::string argument;    // paths, names, set text
+    int count = 0;           // frames, key code (GLFW = upper-case ASCII), gui on/off
+    glm::vec3 vector{0.0f};  // light-pos; orbit (yaw, pitch); zoom (factor)
 };
 
 // Reads and checks a whole script first, so a typo fails before the window opens.

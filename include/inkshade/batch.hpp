@@ -37,8 +37,8 @@ struct BatchJob {
 
 // What a manifest line (or --models) leaves out.
 struct BatchDefaults {
-    std::string views = "35:20";      // parse_views; the auto-framing default view
-    std::string styles = "lambert";   // comma-separated
+    std::string views = "35:20";     // parse_views; the auto-framing default view
+    std::string styles = "lambert";  // comma-separated
     int width = 512, height = 512;
     BatchOutputs outputs;
     float fov_degrees = 30.0f;
@@ -116,14 +116,14 @@ struct BatchEvent {
     BatchStatus status = BatchStatus::Done;
     // The job (for a model that failed to load, its first job); valid during the callback only.
     const BatchJob* job = nullptr;
-    size_t jobs = 1;                // jobs this event settles (a failed model: all of its jobs)
-    std::string reason;             // Failed: one line
-    bool model_failed = false;      // the model could not be loaded (or drawn at all)
-    size_t finished = 0;            // jobs settled so far, this event included
-    size_t total = 0;               // jobs in the batch
-    size_t rendered = 0;            // jobs rendered so far (Done)
-    size_t to_render = 0;           // jobs that needed rendering when the batch started
-    double seconds = 0.0;           // since the batch started
+    size_t jobs = 1;            // jobs this event settles (a failed model: all of its jobs)
+    std::string reason;         // Failed: one line
+    bool model_failed = false;  // the model could not be loaded (or drawn at all)
+    size_t finished = 0;        // jobs settled so far, this event included
+    size_t total = 0;           // jobs in the batch
+    size_t rendered = 0;        // jobs rendered so far (Done)
+    size_t to_render = 0;       // jobs that needed rendering when the batch started
+    double seconds = 0.0;       // since the batch started
 };
 using BatchProgress = std::function<void(const BatchEvent&)>;
 

@@ -23,13 +23,13 @@ struct LinePath {
 };
 
 struct LineLayer {
-    LineSettings settings;         // the line type and its parameters
+    LineSettings settings;  // the line type and its parameters
     std::vector<LinePath> visible;
     std::vector<LinePath> hidden;  // only when the type's "hidden" parameter asks for them
 };
 
 struct LineDrawing {
-    int width = 0, height = 0;     // image size in pixels (the SVG viewBox)
+    int width = 0, height = 0;      // image size in pixels (the SVG viewBox)
     std::vector<LineLayer> layers;  // one per object-space line type, in the style's order
 };
 

@@ -19,7 +19,7 @@ namespace inkshade {
 // texel row = (1 - v) * height. Uploaded as is with glTexImage2D (row 0 at t = 0), sample at
 // vec2(u, 1 - v). Wrapping: repeat (the glTF sampler default and OBJ's).
 struct Texture {
-    std::string source;         // file path, or "FILE#image N" for an image embedded in a glTF/GLB
+    std::string source;  // file path, or "FILE#image N" for an image embedded in a glTF/GLB
     int width = 0;
     int height = 0;
     std::vector<uint8_t> rgba;  // width * height * 4 bytes, row-major, top row first

@@ -28,10 +28,10 @@ struct ParamSpec {
     std::string name;  // e.g. "shininess"; the uniform is "u_" + name with '-' -> '_'
     ParamType type = ParamType::Float;
     ParamValue default_value;
-    float min = 0.0f, max = 1.0f;       // allowed range of every component
-    std::string doc;                    // one line: meaning and source of the default
-    std::vector<std::string> choices;   // Choice: the names (value = index)
-    int max_count = 1;                  // FloatList: uniform array size
+    float min = 0.0f, max = 1.0f;      // allowed range of every component
+    std::string doc;                   // one line: meaning and source of the default
+    std::vector<std::string> choices;  // Choice: the names (value = index)
+    int max_count = 1;                 // FloatList: uniform array size
     // Bool/Choice that switches a code path: compiled into the shader as
     // `#define INKSHADE_NAME value` (NAME upper-case, '-' -> '_') instead of a uniform, since
     // llvmpipe runs a switched-off branch anyway. Each value used gets its own program.
@@ -52,8 +52,7 @@ ParamSpec color_param(std::string name, glm::vec3 value, std::string doc);
 // A Color whose value is sRGB-encoded (ParamSpec::srgb).
 ParamSpec srgb_color_param(std::string name, glm::vec3 value, std::string doc);
 ParamSpec choice_param(std::string name, std::vector<std::string> choices, int value, std::string doc);
-ParamSpec list_param(std::string name, std::vector<float> values, int max_count, float min, float max,
-                     std::string doc);
+ParamSpec list_param(std::string name, std::vector<float> values, int max_count, float min, float max, std::string doc);
 
 // The parameter called `name` in `params`, or nullptr.
 const ParamSpec* find_param(const std::vector<ParamSpec>& params, const std::string& name);

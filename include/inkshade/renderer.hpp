@@ -16,9 +16,9 @@ namespace inkshade {
 struct RenderOptions {
     int width = 1024;
     int height = 1024;
-    int samples = 4;                         // MSAA samples, resolved before readback
+    int samples = 4;                               // MSAA samples, resolved before readback
     glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};  // alpha 0 = transparent PNG
-    bool srgb_output = false;                // default: formula values written as they are
+    bool srgb_output = false;                      // default: formula values written as they are
 };
 
 struct PassTiming {

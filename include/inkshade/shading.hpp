@@ -9,11 +9,11 @@
 namespace inkshade {
 
 struct ShadingModel {
-    std::string name;          // as selected by --shading
-    std::string summary;       // one line with the formula
-    std::string fragment;      // shader file under shaders/, e.g. "shading/phong.frag"
+    std::string name;      // as selected by --shading
+    std::string summary;   // one line with the formula
+    std::string fragment;  // shader file under shaders/, e.g. "shading/phong.frag"
     std::string vertex = "mesh.vert";
-    bool debug_view = false;   // debug views (normal, view, w, ndotv)
+    bool debug_view = false;  // debug views (normal, view, w, ndotv)
     // Casts shadows from a shadow map when its compile-time bool parameter "shadows" is on:
     // the renderer then runs a depth pass from the light and binds it
     // (shaders/common/shadow.glsl).
@@ -35,8 +35,8 @@ const ShadingModel& shading_model(const std::string& name);
 // holds, inkshade/style.hpp, and Renderer::render takes).
 struct ShadingSelection {
     std::string model = "lambert";
-    ParamValues params;               // overrides of the model's defaults
-    glm::vec3 base_color{1.0f};       // multiplies vertex/material colours (C)
+    ParamValues params;          // overrides of the model's defaults
+    glm::vec3 base_color{1.0f};  // multiplies vertex/material colours (C)
 };
 
 // Registration helper: `static const ShadingModelRegistration reg{{...}};` in the model's file.

@@ -20,7 +20,7 @@ struct Style {
     std::optional<glm::vec3> light_color;  // E; unset = the renderer's default
     std::optional<glm::vec3> ambient;      // A; unset = the renderer's default
     glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
-    std::vector<LineSettings> lines;       // drawn in this order, each type at most once
+    std::vector<LineSettings> lines;  // drawn in this order, each type at most once
 };
 
 // Sets the light colour and ambient the style asks for (others stay as they are).

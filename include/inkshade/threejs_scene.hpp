@@ -19,10 +19,10 @@ namespace inkshade {
 struct ThreejsCamera {
     bool orthographic = false;
     glm::vec3 position{0.0f};
-    glm::vec3 target{0.0f};          // camera.lookAt(target); default the origin
+    glm::vec3 target{0.0f};  // camera.lookAt(target); default the origin
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fov_degrees = 50.0f;       // perspective: vertical fov, divided by zoom as three.js does
-    float ortho_height = 2.0f;       // orthographic: (top - bottom) / zoom
+    float fov_degrees = 50.0f;  // perspective: vertical fov, divided by zoom as three.js does
+    float ortho_height = 2.0f;  // orthographic: (top - bottom) / zoom
     float near_plane = 0.1f;
     float far_plane = 2000.0f;
 };
@@ -48,7 +48,7 @@ struct ThreejsScene {
     glm::vec3 light_color{1.0f};
     glm::vec3 ambient{0.0f};
 
-    std::optional<ThreejsCamera> camera;  // nullopt: Inkshade's auto-framing
+    std::optional<ThreejsCamera> camera;           // nullopt: Inkshade's auto-framing
     glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};  // as written to the image; three.js clears to black
     std::optional<glm::ivec2> size;                // renderer.setSize
     bool antialias = false;                        // WebGLRenderer's antialias (default off)

@@ -57,9 +57,12 @@ std::vector<std::string> split_list(std::string_view text, std::string_view sepa
 BatchOutputs parse_formats(const std::string& text) {
     BatchOutputs o{false, false};
     for (const std::string& f : split_list(text, ",;+")) {
-        if (f == "png") o.png = true;
-        else if (f == "svg") o.svg = true;
-        else throw InputError("format: unknown output format " + io::quote_token(f) + " (choose png, svg or png,svg)");
+        if (f == "png")
+            o.png = true;
+        else if (f == "svg")
+            o.svg = true;
+        else
+            throw InputError("format: unknown output format " + io::quote_token(f) + " (choose png, svg or png,svg)");
     }
     if (!o.png && !o.svg) throw InputError("format: no output format given (choose png, svg or png,svg)");
     return o;
@@ -67,9 +70,11 @@ BatchOutputs parse_formats(const std::string& text) {
 
 void check_relative_stem(const std::string& what, const std::string& stem) {
     if (stem.empty()) throw InputError(what + ": empty");
-    if (stem.front() == '/') throw InputError(what + ": " + io::quote_token(stem) + " must be relative to the output directory");
+    if (stem.front() == '/')
+        throw InputError(what + ": " + io::quote_token(stem) + " must be relative to the output directory");
     for (const std::string& part : split_list(stem, "/"))
-        if (part == "..") throw InputError(what + ": " + io::quote_token(stem) + " must stay inside the output directory");
+        if (part == "..")
+            throw InputError(what + ": " + io::quote_token(stem) + " must stay inside the output directory");
     if (stem.back() == '/' || stem.find("//") != std::string::npos)
         throw InputError(what + ": " + io::quote_token(stem) + " has an empty path component");
     for (char c : stem)
@@ -96,16 +101,17 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
     std::map<std::string, std::string> style_names;  // stem name -> style, to catch a clash
     for (const std::string& s : styles) {
         auto [it, fresh] = style_names.emplace(style_stem_name(s), s);
-        if (!fresh) throw InputError("styles: " + io::quote_token(s) + " and " + io::quote_token(it->second) +
-                                     " would write the same files (" + it->first + ")");
+        if (!fresh)
+            throw InputError("styles: " + io::quote_token(s) + " and " + io::quote_token(it->second) +
+                             " would write the same files (" + it->first + ")");
     }
     const std::string name = group.name.empty() ? model_name(group.model) : group.name;
     check_relative_stem("name", name);
     if (!group.output.empty()) {
         check_relative_stem("output", group.output);
         if (views.size() * styles.size() != 1)
-            throw InputError("output: names one job, but the line gives " + std::to_string(views.size()) +
-                             " views x " + std::to_string(styles.size()) + " styles (drop output or use name)");
+            throw InputError("output: names one job, but the line gives " + std::to_string(views.size()) + " views x " +
+                             std::to_string(styles.size()) + " styles (drop output or use name)");
     }
     for (const std::string& style : styles) {
         for (BatchView view : views) {
@@ -131,8 +137,8 @@ void check_unique_stems(const std::vector<BatchJob>& jobs) {
         auto [it, fresh] = seen.emplace(job.stem, &job);
         if (!fresh)
             throw InputError(io::one_line(job.source + ": output " + job.stem + " (" + job.model + ", " + job.style +
-                                      ") is also written by " + it->second->source + " (" + it->second->model +
-                                      ", " + it->second->style + "); give the models different names"));
+                                          ") is also written by " + it->second->source + " (" + it->second->model +
+                                          ", " + it->second->style + "); give the models different names"));
     }
 }
 

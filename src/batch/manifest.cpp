@@ -19,11 +19,11 @@ namespace inkshade {
 
 namespace {
 
-using batch::JobGroup;
 using batch::default_group;
+using batch::JobGroup;
 
-const std::set<std::string> kColumns = {"model", "name", "views", "view", "styles", "style",
-                                        "size",  "format", "fov", "ortho", "output"};
+const std::set<std::string> kColumns = {"model", "name",   "views", "view",  "styles", "style",
+                                        "size",  "format", "fov",   "ortho", "output"};
 const char* kColumnList = "model, name, views, styles, size, format, fov, ortho, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
@@ -49,16 +49,21 @@ bool skipped(std::string_view line) {
 
 // Sets one field of a group from its text form (CSV cells; JSON strings).
 void set_field(JobGroup& g, const std::string& key, const std::string& value) {
-    if (key == "model") g.model = value;
-    else if (key == "name") g.name = value;
-    else if (key == "views" || key == "view") g.views = value;
-    else if (key == "styles" || key == "style") g.styles = value;
-    else if (key == "output") g.output = value;
+    if (key == "model")
+        g.model = value;
+    else if (key == "name")
+        g.name = value;
+    else if (key == "views" || key == "view")
+        g.views = value;
+    else if (key == "styles" || key == "style")
+        g.styles = value;
+    else if (key == "output")
+        g.output = value;
     else if (key == "size") {
         const glm::ivec2 size = parse_image_size("size", value);
         g.width = size.x, g.height = size.y;
-    }
-    else if (key == "format") g.outputs = batch::parse_formats(value);
+    } else if (key == "format")
+        g.outputs = batch::parse_formats(value);
     else if (key == "fov") {
         double v = 0;
         auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
@@ -69,12 +74,14 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         check_camera_options(camera, OptionNames::Keywords);  // the range every front end takes
         g.fov_degrees = camera.fov_degrees;
     } else if (key == "ortho") {
-        if (value == "true" || value == "1" || value == "yes") g.orthographic = true;
-        else if (value == "false" || value == "0" || value == "no") g.orthographic = false;
-        else throw InputError("ortho: expected true or false, got " + io::quote_token(value));
+        if (value == "true" || value == "1" || value == "yes")
+            g.orthographic = true;
+        else if (value == "false" || value == "0" || value == "no")
+            g.orthographic = false;
+        else
+            throw InputError("ortho: expected true or false, got " + io::quote_token(value));
     }
 }
-
 
 void check_column(const std::string& key, std::set<std::string>& seen) {
     if (!kColumns.count(key))
@@ -136,8 +143,9 @@ void parse_csv(const std::vector<std::pair<int, std::string_view>>& lines, const
                 std::set<std::string> seen;
                 for (const std::string& f : fields) check_column(f, seen);
                 if (!seen.count("model"))
-                    throw InputError("the header line has no 'model' column (a CSV manifest starts with a header "
-                                     "such as model,views,styles)");
+                    throw InputError(
+                        "the header line has no 'model' column (a CSV manifest starts with a header "
+                        "such as model,views,styles)");
                 header = fields;
                 continue;
             }
@@ -197,7 +205,8 @@ void parse_jsonl(const std::vector<std::pair<int, std::string_view>>& lines, con
             } catch (const nlohmann::json::exception& e) {
                 std::string what = e.what();
                 const size_t colon = what.find("] ");
-                throw InputError("not valid JSON (" + (colon == std::string::npos ? what : what.substr(colon + 2)) + ")");
+                throw InputError("not valid JSON (" + (colon == std::string::npos ? what : what.substr(colon + 2)) +
+                                 ")");
             }
             if (!object.is_object()) throw InputError("expected a JSON object such as {\"model\": \"a.obj\"}");
             JobGroup g = default_group(defaults);
@@ -231,8 +240,10 @@ std::vector<BatchJob> parse_manifest(std::string_view text, const std::string& s
     try {
         const auto lines = numbered_lines(text);
         std::vector<BatchJob> jobs;
-        if (is_json_lines(text, source)) parse_jsonl(lines, source, defaults, jobs);
-        else parse_csv(lines, source, defaults, jobs);
+        if (is_json_lines(text, source))
+            parse_jsonl(lines, source, defaults, jobs);
+        else
+            parse_csv(lines, source, defaults, jobs);
         if (jobs.empty()) throw InputError(source + ": no jobs (the manifest lists no models)");
         batch::check_unique_stems(jobs);
         return jobs;
@@ -243,7 +254,8 @@ std::vector<BatchJob> parse_manifest(std::string_view text, const std::string& s
 
 std::vector<BatchJob> load_manifest(const std::string& path, const BatchDefaults& defaults) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory (use --models DIR for a directory of models)");
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path, "is a directory (use --models DIR for a directory of models)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "cannot open file");
     std::stringstream ss;

@@ -54,7 +54,8 @@ void write_pretty(const Json& j, int indent, std::string& out) {
             out += ++n < j.size() ? ",\n" : "\n";
         }
         out += pad + "}";
-    } else if (j.is_array() && !j.empty() && !std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_primitive(); })) {
+    } else if (j.is_array() && !j.empty() &&
+               !std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_primitive(); })) {
         out += "[\n";
         for (size_t i = 0; i < j.size(); ++i) {
             out += inner;

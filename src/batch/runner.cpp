@@ -123,8 +123,10 @@ public:
             report_settled(group);
             if (group.pending.empty()) continue;
             LoadedModel model;
-            if (next.valid() && next_group == g) model = next.get();
-            else model = load_model(group.model, group.svg);
+            if (next.valid() && next_group == g)
+                model = next.get();
+            else
+                model = load_model(group.model, group.svg);
             prefetch_after(g);
             render_model(group, model);
         }
@@ -301,9 +303,11 @@ private:
     void write_job(JobFiles& files) const {
         const BatchJob& job = *files.record.job;
         const auto start = Clock::now();
-        std::filesystem::create_directories(std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
+        std::filesystem::create_directories(
+            std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
         if (job.outputs.png) write_png(batch::job_file(options_.output_dir, job, ".png"), files.image);
-        if (job.outputs.svg) write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
+        if (job.outputs.svg)
+            write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
         files.record.timings_ms.emplace_back("write", ms_since(start));
         // Last: the metadata marks the job complete (batch::job_complete).
         io::write_file_atomic(batch::job_file(options_.output_dir, job, ".json"), batch::format_metadata(files.record));

@@ -85,7 +85,8 @@ void parse_orbit_item(const std::string& item, std::vector<BatchView>& out) {
         check_count(item, a, kMaxViewsPerItem);
         check_count(item, e, 90);
         for (int k = 0; k < e; ++k)
-            for (int i = 0; i < a; ++i) out.push_back(orbit_view(360.0f * float(i) / float(a), 90.0f * float(k) / float(e), {}));
+            for (int i = 0; i < a; ++i)
+                out.push_back(orbit_view(360.0f * float(i) / float(a), 90.0f * float(k) / float(e), {}));
         return;
     }
     const std::vector<std::string> parts = batch::split_list(item, ":");
@@ -128,8 +129,10 @@ BatchView parse_camera_item(const std::string& item, int index) {
         const std::string key = token.substr(0, eq), value = eq == std::string::npos ? "" : token.substr(eq + 1);
         if (eq == std::string::npos || value.empty()) bad(item, "expected KEY=VALUE, got " + io::quote_token(token));
         if (!seen.insert(key).second) bad(item, key + " is given twice");
-        if (key == "eye") v.camera.eye = vec3_value(item, key, value);
-        else if (key == "target") v.camera.target = vec3_value(item, key, value);
+        if (key == "eye")
+            v.camera.eye = vec3_value(item, key, value);
+        else if (key == "target")
+            v.camera.target = vec3_value(item, key, value);
         else if (key == "up") {
             v.camera.up = vec3_value(item, key, value);
             if (glm::length(*v.camera.up) == 0.0f) bad(item, "up must not be zero");

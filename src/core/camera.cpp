@@ -49,9 +49,12 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect
     glm::vec3 dir = o.eye ? glm::vec3(0.0f)
                           : orbit_direction(o.azimuth_degrees.value_or(kDefaultAzimuth),
                                             o.elevation_degrees.value_or(kDefaultElevation));
-    if (o.eye) cam.eye = *o.eye;
-    else cam.eye = cam.target + dir * o.distance.value_or(fit);
-    if (glm::length(cam.eye - cam.target) < 1e-6f * radius) cam.eye = cam.target + glm::vec3(0, 0, fit), dir = {0, 0, 1};
+    if (o.eye)
+        cam.eye = *o.eye;
+    else
+        cam.eye = cam.target + dir * o.distance.value_or(fit);
+    if (glm::length(cam.eye - cam.target) < 1e-6f * radius)
+        cam.eye = cam.target + glm::vec3(0, 0, fit), dir = {0, 0, 1};
     cam.up = safe_up(cam.target - cam.eye, cam.up);
 
     // Tighter auto-framing: the distance at which all eight box corners fit the view
@@ -60,8 +63,7 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect
     const glm::vec3 r = glm::normalize(glm::cross(f, cam.up)), u = glm::cross(r, f);
     float need = 0.0f, half_x = 0.0f, half_y = 0.0f;
     for (int i = 0; i < 8; ++i) {
-        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                    (i & 4) ? box.max.z : box.min.z);
+        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z);
         glm::vec3 q = p - cam.target;
         float x = std::abs(glm::dot(q, r)), y = std::abs(glm::dot(q, u)), z = -glm::dot(q, f);
         need = std::max({need, z + x / std::tan(half_h), z + y / std::tan(half_v)});

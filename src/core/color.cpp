@@ -22,10 +22,10 @@ namespace {
 
 glm::vec4 parse_color(const std::string& text) {
     static const std::map<std::string, glm::vec4> names = {
-        {"black", {0, 0, 0, 1}},   {"white", {1, 1, 1, 1}},      {"grey", {0.5f, 0.5f, 0.5f, 1}},
-        {"gray", {0.5f, 0.5f, 0.5f, 1}}, {"red", {1, 0, 0, 1}}, {"green", {0, 1, 0, 1}},
-        {"blue", {0, 0, 1, 1}},    {"yellow", {1, 1, 0, 1}},     {"cyan", {0, 1, 1, 1}},
-        {"magenta", {1, 0, 1, 1}}, {"orange", {1, 0.5f, 0, 1}}, {"transparent", {0, 0, 0, 0}}};
+        {"black", {0, 0, 0, 1}},         {"white", {1, 1, 1, 1}},     {"grey", {0.5f, 0.5f, 0.5f, 1}},
+        {"gray", {0.5f, 0.5f, 0.5f, 1}}, {"red", {1, 0, 0, 1}},       {"green", {0, 1, 0, 1}},
+        {"blue", {0, 0, 1, 1}},          {"yellow", {1, 1, 0, 1}},    {"cyan", {0, 1, 1, 1}},
+        {"magenta", {1, 0, 1, 1}},       {"orange", {1, 0.5f, 0, 1}}, {"transparent", {0, 0, 0, 0}}};
     std::string lower = text;
     std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
     if (auto it = names.find(lower); it != names.end()) return it->second;
@@ -36,7 +36,8 @@ glm::vec4 parse_color(const std::string& text) {
         if (hex.size() != 6 && hex.size() != 8) bad(text);
         if (!std::all_of(hex.begin(), hex.end(), [](unsigned char c) { return std::isxdigit(c); })) bad(text);
         glm::vec4 c(0, 0, 0, 1);
-        for (size_t i = 0; i < hex.size() / 2; ++i) c[int(i)] = float(std::stoi(hex.substr(2 * i, 2), nullptr, 16)) / 255.0f;
+        for (size_t i = 0; i < hex.size() / 2; ++i)
+            c[int(i)] = float(std::stoi(hex.substr(2 * i, 2), nullptr, 16)) / 255.0f;
         return c;
     }
 

@@ -16,7 +16,8 @@ void orbit(Camera& camera, float yaw_degrees, float pitch_degrees) {
     float new_elevation = std::clamp(elevation + pitch_degrees, -89.0f, 89.0f);
     float azimuth = glm::degrees(std::atan2(offset.x, offset.z)) + yaw_degrees;
     float az = glm::radians(azimuth), el = glm::radians(new_elevation);
-    camera.eye = camera.target + dist * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+    camera.eye =
+        camera.target + dist * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
     camera.up = {0.0f, 1.0f, 0.0f};
 }
 
@@ -28,9 +29,8 @@ void pan(Camera& camera, float dx_pixels, float dy_pixels, int viewport_height) 
     const glm::vec3 right = glm::normalize(glm::cross(f, camera.up));
     const glm::vec3 up = glm::cross(right, f);
     // World units per pixel at the target's depth.
-    const float view_height = camera.orthographic
-                                  ? camera.ortho_height
-                                  : 2.0f * dist * std::tan(0.5f * glm::radians(camera.fov_degrees));
+    const float view_height =
+        camera.orthographic ? camera.ortho_height : 2.0f * dist * std::tan(0.5f * glm::radians(camera.fov_degrees));
     const float scale = view_height / float(viewport_height);
     const glm::vec3 move = (-dx_pixels * right + dy_pixels * up) * scale;
     camera.eye += move;

@@ -65,7 +65,7 @@ EdgeAdjacency build_edge_adjacency(const Mesh& mesh) {
     std::vector<uint32_t> sides;
     for (size_t v0 = 0; v0 < n;) {
         const uint32_t base = start[v0 + 1];  // the start of bucket v0 (nothing filled yet)
-        size_t v1 = v0 + 1;  // at least one vertex, however many sides it has
+        size_t v1 = v0 + 1;                   // at least one vertex, however many sides it has
         while (v1 < n && start[v1 + 2] - base <= block_sides) ++v1;
         sides.resize(start[v1 + 1] - base);
         for (size_t f = 0; f < tris.size(); ++f) {
@@ -91,8 +91,7 @@ EdgeAdjacency build_edge_adjacency(const Mesh& mesh) {
                     if (run - it >= 2) adj.more_faces.emplace_back(e, *run / 3);
                 const size_t count = size_t(run - it);
                 adj.faces.emplace_back(*it / 3, count > 1 ? it[1] / 3 : EdgeAdjacency::kNoFace);
-                adj.flags.push_back(uint8_t((count == 1 ? kEdgeBorder : 0) |
-                                            (count > 2 ? kEdgeNonManifold : 0)));
+                adj.flags.push_back(uint8_t((count == 1 ? kEdgeBorder : 0) | (count > 2 ? kEdgeNonManifold : 0)));
                 it = run;
             }
         }

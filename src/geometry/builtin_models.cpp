@@ -62,8 +62,7 @@ Mesh tube(int rows, int cols, double radius, Ring ring) {
     const auto idx = [&](int i, int j) { return uint32_t((i % rows) * cols + (j % cols)); };
     m.triangles.reserve(size_t(2) * rows * cols);
     for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < cols; ++j)
-            add_quad(m, idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+        for (int j = 0; j < cols; ++j) add_quad(m, idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
     return m;
 }
 
@@ -86,8 +85,7 @@ Mesh sphere(int rings, int segments, float radius) {
     require(radius > 0.0f && std::isfinite(radius), "sphere", "radius must be positive");
     Mesh m;
     const auto add = [&](double theta, double phi) {
-        const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
-                           -std::sin(theta) * std::sin(phi));
+        const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
         m.positions.emplace_back(double(radius) * n);
         m.normals.emplace_back(n);
     };
@@ -99,8 +97,7 @@ Mesh sphere(int rings, int segments, float radius) {
     const auto idx = [&](int k, int s) { return uint32_t(1 + (k - 1) * segments + s % segments); };
     for (int s = 0; s < segments; ++s) {
         m.triangles.emplace_back(north, idx(1, s), idx(1, s + 1));  // quad with a = d = pole
-        for (int k = 1; k + 1 < rings; ++k)
-            add_quad(m, idx(k, s), idx(k + 1, s), idx(k + 1, s + 1), idx(k, s + 1));
+        for (int k = 1; k + 1 < rings; ++k) add_quad(m, idx(k, s), idx(k + 1, s), idx(k + 1, s + 1), idx(k, s + 1));
         m.triangles.emplace_back(idx(rings - 1, s), south, idx(rings - 1, s + 1));  // b = c = pole
     }
     return m;
@@ -110,8 +107,7 @@ Mesh sphere(int rings, int segments, float radius) {
 // n = (cos u, sin u, 0) (away from the axis), b = (0, 0, −1), so the normal is
 // (cos v cos u, cos v sin u, sin v).
 Mesh torus(float major_radius, float minor_radius, int major_segments, int minor_segments) {
-    require(major_segments >= 3 && minor_segments >= 3, "torus",
-            "needs at least 3 segments each way");
+    require(major_segments >= 3 && minor_segments >= 3, "torus", "needs at least 3 segments each way");
     require(major_radius > 0.0f && minor_radius > 0.0f && minor_radius < major_radius, "torus",
             "needs 0 < minor radius < major radius");
     return tube(major_segments, minor_segments, minor_radius, [&](int i) {
@@ -128,19 +124,16 @@ Mesh torus(float major_radius, float minor_radius, int major_segments, int minor
 // of constant radius is a canal surface, whose normal is exactly the unit offset from the
 // centre line.
 Mesh torus_knot(int p, int q, float tube_radius, int segments, int tube_segments) {
-    require(p >= 1 && q >= 1 && std::gcd(p, q) == 1, "torus-knot",
-            "p and q must be coprime positive integers");
-    require(segments >= 3 && tube_segments >= 3, "torus-knot",
-            "needs at least 3 segments each way");
+    require(p >= 1 && q >= 1 && std::gcd(p, q) == 1, "torus-knot", "p and q must be coprime positive integers");
+    require(segments >= 3 && tube_segments >= 3, "torus-knot", "needs at least 3 segments each way");
     require(tube_radius > 0.0f && tube_radius < 0.4f, "torus-knot", "needs 0 < tube radius < 0.4");
     constexpr double R = 1.0, r = 0.4;
     return tube(segments, tube_segments, tube_radius, [&](int i) {
         const double t = kTwoPi * i / segments;
-        const double ct = std::cos(q * t), st = std::sin(q * t), cp = std::cos(p * t),
-                     sp = std::sin(p * t);
+        const double ct = std::cos(q * t), st = std::sin(q * t), cp = std::cos(p * t), sp = std::sin(p * t);
         const glm::dvec3 c((R + r * ct) * cp, (R + r * ct) * sp, r * st);
-        const glm::dvec3 dc(-r * q * st * cp - (R + r * ct) * p * sp,
-                            -r * q * st * sp + (R + r * ct) * p * cp, r * q * ct);
+        const glm::dvec3 dc(-r * q * st * cp - (R + r * ct) * p * sp, -r * q * st * sp + (R + r * ct) * p * cp,
+                            r * q * ct);
         const glm::dvec3 tangent = glm::normalize(dc);
         const glm::dvec3 b = glm::normalize(glm::cross(tangent, c));
         return std::array<glm::dvec3, 3>{c, glm::cross(b, tangent), b};
@@ -195,20 +188,17 @@ Mesh teapot(int subdivisions) {
                 const double len = glm::length(normal);
                 m.positions.push_back(y_up(s));
                 // Zero marks a cusp (vanishing derivative): filled in after welding.
-                m.normals.push_back(len > 1e-9 * glm::length(su + sv) + 1e-12 ? y_up(normal / len)
-                                                                              : glm::vec3(0.0f));
+                m.normals.push_back(len > 1e-9 * glm::length(su + sv) + 1e-12 ? y_up(normal / len) : glm::vec3(0.0f));
             }
         }
         const auto idx = [&](int i, int j) { return base + uint32_t(i * (n + 1) + j); };
         // Quads split as (a, c, b), (a, d, c): counter-clockwise around ∂v × ∂u.
         for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j)
-                add_quad(m, idx(i, j), idx(i, j + 1), idx(i + 1, j + 1), idx(i + 1, j));
+            for (int j = 0; j < n; ++j) add_quad(m, idx(i, j), idx(i, j + 1), idx(i + 1, j + 1), idx(i + 1, j));
     }
 
     geometry::weld(m, {.relative_epsilon = 1e-5f});
-    std::erase_if(m.triangles,
-                  [](const glm::uvec3& t) { return t.x == t.y || t.y == t.z || t.x == t.z; });
+    std::erase_if(m.triangles, [](const glm::uvec3& t) { return t.x == t.y || t.y == t.z || t.x == t.z; });
     // A cusp's first copy may be a cusp-row vertex with a zero normal (weld keeps the first).
     const std::vector<glm::vec3> fallback = geometry::angle_weighted_vertex_normals(m);
     for (size_t v = 0; v < m.normals.size(); ++v)
@@ -227,8 +217,7 @@ namespace {
 // "key=value,key=value" after "NAME:" -> numbers, with unknown keys and bad numbers refused.
 class BuiltinOptions {
 public:
-    BuiltinOptions(const std::string& spec, const std::string& model, std::vector<std::string> allowed)
-        : spec_(spec) {
+    BuiltinOptions(const std::string& spec, const std::string& model, std::vector<std::string> allowed) : spec_(spec) {
         size_t start = 0;
         while (start < model.size()) {
             size_t comma = model.find(',', start);
@@ -271,8 +260,8 @@ constexpr double kMaxBuiltinTriangles = 1e8;
 
 void check_size(const std::string& spec, double triangles) {
     if (triangles > kMaxBuiltinTriangles)
-        throw InputError(spec, "tessellation would make " + std::to_string(int64_t(triangles)) +
-                                   " triangles (limit 100000000)");
+        throw InputError(
+            spec, "tessellation would make " + std::to_string(int64_t(triangles)) + " triangles (limit 100000000)");
 }
 
 }  // namespace

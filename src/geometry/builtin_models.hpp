@@ -12,13 +12,11 @@ namespace inkshade::builtin {
 Mesh sphere(int rings = 64, int segments = 128, float radius = 1.0f);
 
 // Torus around the z axis: major radius R (centre of tube), minor radius r.
-Mesh torus(float major_radius = 1.0f, float minor_radius = 0.4f, int major_segments = 128,
-           int minor_segments = 64);
+Mesh torus(float major_radius = 1.0f, float minor_radius = 0.4f, int major_segments = 128, int minor_segments = 64);
 
 // (p, q) torus knot: tube of radius `tube_radius` around the curve
 // ((R + r cos(q t)) cos(p t), (R + r cos(q t)) sin(p t), r sin(q t)), R = 1, r = 0.4.
-Mesh torus_knot(int p = 2, int q = 3, float tube_radius = 0.15f, int segments = 512,
-                int tube_segments = 32);
+Mesh torus_knot(int p = 2, int q = 3, float tube_radius = 0.15f, int segments = 512, int tube_segments = 32);
 
 // Utah teapot from Newell's 32 bicubic Bézier patches, tessellated `subdivisions` per patch
 // side and welded; y up, base on y = 0.

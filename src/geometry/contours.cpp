@@ -38,8 +38,7 @@ glm::dvec3 ViewVector::at(const glm::vec3& p) const {
     return len > 0.0 && std::isfinite(len) ? d / len : glm::dvec3(0.0);
 }
 
-EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i,
-                                uint32_t j) {
+EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i, uint32_t j) {
     if (j < i) std::swap(i, j);
     const double gi = g[i], gj = g[j];
     EdgeCrossing c;
@@ -49,8 +48,7 @@ EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, u
     return c;
 }
 
-std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3>& normals,
-                                   const Camera& camera) {
+std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Camera& camera) {
     if (normals.size() != mesh.positions.size())
         throw std::invalid_argument("view_dot_normal: need one normal per vertex");
     const ViewVector view(camera);
@@ -105,8 +103,7 @@ std::vector<SilhouetteEdge> mesh_silhouette_edges(const Mesh& mesh, const Camera
         for (size_t f = range.begin(); f != range.end(); ++f) {
             const glm::uvec3 t = tris[f];
             if (!valid(t, n) || fn[f] == glm::vec3(0.0f)) continue;
-            const glm::vec3 c =
-                (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f;
+            const glm::vec3 c = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f;
             const double d = glm::dot(glm::dvec3(fn[f]), view.at(c));
             facing[f] = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
         }
@@ -129,10 +126,8 @@ std::vector<SilhouetteEdge> mesh_silhouette_edges(const Mesh& mesh, const Camera
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
         bool front = false, back = false;
-        for (; j < edges.size() && edges[j].first == edges[i].first; ++j)
-            (edges[j].second > 0 ? front : back) = true;
-        if (front && back)
-            out.push_back({uint32_t(edges[i].first >> 32), uint32_t(edges[i].first & 0xffffffffu)});
+        for (; j < edges.size() && edges[j].first == edges[i].first; ++j) (edges[j].second > 0 ? front : back) = true;
+        if (front && back) out.push_back({uint32_t(edges[i].first >> 32), uint32_t(edges[i].first & 0xffffffffu)});
         i = j;
     }
     return out;

@@ -23,9 +23,7 @@ constexpr uint64_t vertex_key(uint32_t v) { return edge_key(v, v); }
 // Key of a segment end strictly inside face f (a line trimmed by a threshold there); `end`
 // (0 or 1) tells the two ends of one face apart. The high word exceeds the low word, which
 // edge and vertex keys never do, so such an end meets no other segment and ends its chain.
-constexpr uint64_t face_interior_key(uint32_t f, uint32_t end) {
-    return (uint64_t(0xffffffffu - end) << 32) | f;
-}
+constexpr uint64_t face_interior_key(uint32_t f, uint32_t end) { return (uint64_t(0xffffffffu - end) << 32) | f; }
 
 // One straight piece of a line, shared by every line type (contour, suggestive, crease,
 // border, ridge) so one chainer and one visibility test serve them all. The ends carry node
@@ -37,8 +35,8 @@ constexpr uint64_t face_interior_key(uint32_t f, uint32_t end) {
 // seen from the outside (the face's counter-clockwise side).
 struct LineSegment {
     glm::vec3 a{0.0f}, b{0.0f};
-    uint64_t edge_a = 0, edge_b = 0;  // node keys of a and b (edge_a != edge_b)
-    uint32_t face = 0;                // the face the segment crosses (edge lines: lowest incident face)
+    uint64_t edge_a = 0, edge_b = 0;             // node keys of a and b (edge_a != edge_b)
+    uint32_t face = 0;                           // the face the segment crosses (edge lines: lowest incident face)
     float strength_a = 1.0f, strength_b = 1.0f;  // in [0, 1], for fading; contours and creases 1
 };
 
@@ -65,13 +63,11 @@ struct EdgeCrossing {
     double t = 0.0;
     glm::vec3 p{0.0f};
 };
-EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i,
-                                uint32_t j);
+EdgeCrossing edge_zero_crossing(const Mesh& mesh, const std::vector<float>& g, uint32_t i, uint32_t j);
 
 // g per vertex: n·v with v the unit vector from the vertex to the eye (perspective) or
 // −view direction (orthographic). Non-finite values become 0.
-std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3>& normals,
-                                   const Camera& camera);
+std::vector<float> view_dot_normal(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Camera& camera);
 
 // Contour segments (strength 1) in face order (deterministic, parallel over faces). `normals`
 // holds one normal per vertex (throws std::invalid_argument otherwise). A vertex with g = 0 counts as

@@ -89,8 +89,7 @@ void classify(const Mesh& mesh, const EdgeAdjacency& adjacency, double cos_limit
 
 }  // namespace
 
-CreaseLines extract_creases(const Mesh& mesh, const EdgeAdjacency& adjacency,
-                            const CreaseOptions& options) {
+CreaseLines extract_creases(const Mesh& mesh, const EdgeAdjacency& adjacency, const CreaseOptions& options) {
     const double cos_limit = std::cos(glm::radians(double(options.angle_degrees)));
     // Fixed blocks (not TBB's adaptive ranges) so the joined lists do not depend on threads.
     constexpr size_t kBlock = size_t(1) << 16;
@@ -104,7 +103,8 @@ CreaseLines extract_creases(const Mesh& mesh, const EdgeAdjacency& adjacency,
         size_t total = 0;
         for (const CreaseLines& part : parts) total += (part.*list).size();
         (out.*list).reserve(total);
-        for (const CreaseLines& part : parts) (out.*list).insert((out.*list).end(), (part.*list).begin(), (part.*list).end());
+        for (const CreaseLines& part : parts)
+            (out.*list).insert((out.*list).end(), (part.*list).begin(), (part.*list).end());
     };
     join(&CreaseLines::ridges);
     join(&CreaseLines::valleys);

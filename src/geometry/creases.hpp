@@ -32,7 +32,6 @@ struct CreaseLines {
 // direction (inconsistent orientation) the second normal is flipped first, so an orientation
 // seam is not taken for a crease. Edges touching a zero-area face are neither creases nor
 // valleys (no normal), but still count as borders or non-manifold by their face count.
-CreaseLines extract_creases(const Mesh& mesh, const EdgeAdjacency& adjacency,
-                            const CreaseOptions& options = {});
+CreaseLines extract_creases(const Mesh& mesh, const EdgeAdjacency& adjacency, const CreaseOptions& options = {});
 
 }  // namespace inkshade::geometry

@@ -65,7 +65,7 @@ glm::vec3 any_tangent(const glm::vec3& n) {
 // exit, so that it vectorises across faces; a failed solve leaves garbage in rhs.
 template <int N>
 [[gnu::always_inline]] inline int32_t solve_tridiagonal(std::array<float, N> d, const std::array<float, N - 1>& o,
-                                                     std::array<float, N>& rhs) {
+                                                        std::array<float, N>& rhs) {
     const float eps = 1e-6f * (std::abs(d[0]) + std::abs(d[N - 1]));
     std::array<float, N> inv;  // reciprocal pivots: N divisions instead of 2N - 1
     int32_t ok = 1;
@@ -215,7 +215,8 @@ void for_each_face_block(size_t nf, const Block& block, const Scatter& scatter) 
     for (size_t begin = 0; begin < nf; begin += kChunk) {
         const size_t end = std::min(nf, begin + kChunk);
         const size_t blocks = (end - begin + kLanes - 1) / kLanes;
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks, kGrain / 4 / kLanes), [&](const tbb::blocked_range<size_t>& r) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks, kGrain / 4 / kLanes),
+                          [&](const tbb::blocked_range<size_t>& r) {
             BlockResults results;
             for (size_t b = r.begin(); b != r.end(); ++b) {
                 const size_t first = begin + b * kLanes;
@@ -269,8 +270,8 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
     };
     // Gathers the positions and normals of the faces of a block; faces past `count` or with bad
     // indices or zero normals get zeros and usable = false (no face is read out of range).
-    const auto gather = [&](size_t first, int count, CornerBlock& pos, CornerBlock& nrm, int32_t* usable,
-                            const auto& more) {
+    const auto gather =
+        [&](size_t first, int count, CornerBlock& pos, CornerBlock& nrm, int32_t* usable, const auto& more) {
         for (int i = 0; i < kLanes; ++i) {
             const glm::uvec3 f = i < count ? tris[first + i] : glm::uvec3(0);
             usable[i] = i < count && usable_indices(f) ? 1 : 0;
@@ -287,45 +288,45 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
     for_each_face_block(
         nf,
         [&](size_t first, int count, BlockResults& res) {
-            CornerBlock pos, nrm, dir;  // dir: each vertex's initial tangent pdir1
-            int32_t usable[kLanes];
-            gather(first, count, pos, nrm, usable, [&](int j, int i, uint32_t v, bool ok) {
-                dir.set(j, i, ok ? out.pdir1[v] : glm::vec3(1.0f, 0.0f, 0.0f));
-            });
-            for (int i = 0; i < kLanes; ++i) {
-                const FaceFrame fr = face_frame(pos.at(0, i), pos.at(1, i), pos.at(2, i));
-                // Least squares for II = [[ku, kuv], [kuv, kv]] from II·(u, v) = (dnu, dnv) on each edge.
-                float uu = 0, uv = 0, vv = 0;
-                std::array<float, 3> m{0, 0, 0};
+        CornerBlock pos, nrm, dir;  // dir: each vertex's initial tangent pdir1
+        int32_t usable[kLanes];
+        gather(first, count, pos, nrm, usable, [&](int j, int i, uint32_t v, bool ok) {
+            dir.set(j, i, ok ? out.pdir1[v] : glm::vec3(1.0f, 0.0f, 0.0f));
+        });
+        for (int i = 0; i < kLanes; ++i) {
+            const FaceFrame fr = face_frame(pos.at(0, i), pos.at(1, i), pos.at(2, i));
+            // Least squares for II = [[ku, kuv], [kuv, kv]] from II·(u, v) = (dnu, dnv) on each edge.
+            float uu = 0, uv = 0, vv = 0;
+            std::array<float, 3> m{0, 0, 0};
 #pragma GCC unroll 3
-                for (int j = 0; j < 3; ++j) {
-                    const float u = fr.u[j], v = fr.v[j];
-                    uu += u * u, uv += u * v, vv += v * v;
-                    const glm::vec3 dn = nrm.at(prev(j), i) - nrm.at(next(j), i);
-                    const float dnu = glm::dot(dn, fr.t), dnv = glm::dot(dn, fr.b);
-                    m[0] += dnu * u;
-                    m[1] += dnu * v + dnv * u;
-                    m[2] += dnv * v;
-                }
-                const int32_t solved = solve_tridiagonal<3>({uu, uu + vv, vv}, {uv, uv}, m);
-                const glm::vec3 ii{m[0], m[1], m[2]};
-#pragma GCC unroll 3
-                for (int j = 0; j < 3; ++j) {
-                    const Rotation r = frame_change(fr.t, fr.b, fr.n, dir.at(j, i), nrm.at(j, i));
-                    const glm::vec3 k = fr.ca[j] * rotate_tensor(ii, r);
-                    res.values[j][i] = fr.ca[j];
-                    res.values[3 + 3 * j][i] = k[0], res.values[4 + 3 * j][i] = k[1], res.values[5 + 3 * j][i] = k[2];
-                }
-                res.ok[i] = usable[i] & nonzero(fr.ca) & solved & finite(ii);
+            for (int j = 0; j < 3; ++j) {
+                const float u = fr.u[j], v = fr.v[j];
+                uu += u * u, uv += u * v, vv += v * v;
+                const glm::vec3 dn = nrm.at(prev(j), i) - nrm.at(next(j), i);
+                const float dnu = glm::dot(dn, fr.t), dnv = glm::dot(dn, fr.b);
+                m[0] += dnu * u;
+                m[1] += dnu * v + dnv * u;
+                m[2] += dnv * v;
             }
+            const int32_t solved = solve_tridiagonal<3>({uu, uu + vv, vv}, {uv, uv}, m);
+            const glm::vec3 ii{m[0], m[1], m[2]};
+#pragma GCC unroll 3
+            for (int j = 0; j < 3; ++j) {
+                const Rotation r = frame_change(fr.t, fr.b, fr.n, dir.at(j, i), nrm.at(j, i));
+                const glm::vec3 k = fr.ca[j] * rotate_tensor(ii, r);
+                res.values[j][i] = fr.ca[j];
+                res.values[3 + 3 * j][i] = k[0], res.values[4 + 3 * j][i] = k[1], res.values[5 + 3 * j][i] = k[2];
+            }
+            res.ok[i] = usable[i] & nonzero(fr.ca) & solved & finite(ii);
+        }
         },
         [&](size_t i, const CornerValues& cv) {
-            const glm::uvec3 f = tris[i];
-            for (int j = 0; j < 3; ++j) {
-                out.point_area[f[j]] += cv[j];
-                out.dcurv[f[j]] += glm::vec4(cv[3 + 3 * j], cv[4 + 3 * j], cv[5 + 3 * j], 0.0f);
-            }
-        });
+        const glm::uvec3 f = tris[i];
+        for (int j = 0; j < 3; ++j) {
+            out.point_area[f[j]] += cv[j];
+            out.dcurv[f[j]] += glm::vec4(cv[3 + 3 * j], cv[4 + 3 * j], cv[5 + 3 * j], 0.0f);
+        }
+    });
 
     // Diagonalise per vertex (one Jacobi rotation), k1 >= k2.
     for_each_index(nv, [&](size_t v) {
@@ -360,58 +361,58 @@ Curvature compute_curvature(const Mesh& mesh, const std::vector<glm::vec3>& vert
     for_each_face_block(
         nf,
         [&](size_t first, int count, BlockResults& res) {
-            CornerBlock pos, nrm, dir1, dir2;
-            float k1[3][kLanes], k2[3][kLanes];
-            int32_t usable[kLanes];
-            gather(first, count, pos, nrm, usable, [&](int j, int i, uint32_t v, bool ok) {
-                dir1.set(j, i, ok ? out.pdir1[v] : glm::vec3(1.0f, 0.0f, 0.0f));
-                dir2.set(j, i, ok ? out.pdir2[v] : glm::vec3(0.0f, 1.0f, 0.0f));
-                k1[j][i] = ok ? out.k1[v] : 0.0f;
-                k2[j][i] = ok ? out.k2[v] : 0.0f;
-            });
-            for (int i = 0; i < kLanes; ++i) {
-                const FaceFrame fr = face_frame(pos.at(0, i), pos.at(1, i), pos.at(2, i));
-                // r[j]: the face frame rotated into vertex j's tangent plane, in its principal
-                // frame. Its inverse takes the derivative tensor from the face frame back.
-                std::array<Rotation, 3> r;
-                std::array<glm::vec3, 3> fcurv;  // each vertex's II in the face frame
+        CornerBlock pos, nrm, dir1, dir2;
+        float k1[3][kLanes], k2[3][kLanes];
+        int32_t usable[kLanes];
+        gather(first, count, pos, nrm, usable, [&](int j, int i, uint32_t v, bool ok) {
+            dir1.set(j, i, ok ? out.pdir1[v] : glm::vec3(1.0f, 0.0f, 0.0f));
+            dir2.set(j, i, ok ? out.pdir2[v] : glm::vec3(0.0f, 1.0f, 0.0f));
+            k1[j][i] = ok ? out.k1[v] : 0.0f;
+            k2[j][i] = ok ? out.k2[v] : 0.0f;
+        });
+        for (int i = 0; i < kLanes; ++i) {
+            const FaceFrame fr = face_frame(pos.at(0, i), pos.at(1, i), pos.at(2, i));
+            // r[j]: the face frame rotated into vertex j's tangent plane, in its principal
+            // frame. Its inverse takes the derivative tensor from the face frame back.
+            std::array<Rotation, 3> r;
+            std::array<glm::vec3, 3> fcurv;  // each vertex's II in the face frame
 #pragma GCC unroll 3
-                for (int j = 0; j < 3; ++j) {
-                    r[j] = frame_change(dir1.at(j, i), dir2.at(j, i), nrm.at(j, i), fr.t, fr.n);
-                    fcurv[j] = rotate_tensor({k1[j][i], 0.0f, k2[j][i]}, r[j]);
-                }
-                // Least squares for C from ΔII(e) = C(e): d ku = a u + b v, d kuv = b u + c v,
-                // d kv = c u + d v (the kuv equation counts twice, as the off-diagonal entry of
-                // II does).
-                float uu = 0, uv = 0, vv = 0;
-                std::array<float, 4> m{0, 0, 0, 0};
-#pragma GCC unroll 3
-                for (int j = 0; j < 3; ++j) {
-                    const float u = fr.u[j], v = fr.v[j];
-                    uu += u * u, uv += u * v, vv += v * v;
-                    const glm::vec3 d = fcurv[prev(j)] - fcurv[next(j)];
-                    m[0] += u * d[0];
-                    m[1] += v * d[0] + 2.0f * u * d[1];
-                    m[2] += 2.0f * v * d[1] + u * d[2];
-                    m[3] += v * d[2];
-                }
-                const int32_t solved =
-                    solve_tridiagonal<4>({uu, 2.0f * uu + vv, uu + 2.0f * vv, vv}, {uv, 2.0f * uv, uv}, m);
-                const glm::vec4 dc{m[0], m[1], m[2], m[3]};
-#pragma GCC unroll 3
-                for (int j = 0; j < 3; ++j) {
-                    const glm::vec4 d = fr.ca[j] * rotate_derivative(dc, r[j].inverse());
-#pragma GCC unroll 4
-                    for (int k = 0; k < 4; ++k) res.values[4 * j + k][i] = d[k];
-                }
-                res.ok[i] = usable[i] & nonzero(fr.ca) & solved & finite(dc);
+            for (int j = 0; j < 3; ++j) {
+                r[j] = frame_change(dir1.at(j, i), dir2.at(j, i), nrm.at(j, i), fr.t, fr.n);
+                fcurv[j] = rotate_tensor({k1[j][i], 0.0f, k2[j][i]}, r[j]);
             }
+            // Least squares for C from ΔII(e) = C(e): d ku = a u + b v, d kuv = b u + c v,
+            // d kv = c u + d v (the kuv equation counts twice, as the off-diagonal entry of
+            // II does).
+            float uu = 0, uv = 0, vv = 0;
+            std::array<float, 4> m{0, 0, 0, 0};
+#pragma GCC unroll 3
+            for (int j = 0; j < 3; ++j) {
+                const float u = fr.u[j], v = fr.v[j];
+                uu += u * u, uv += u * v, vv += v * v;
+                const glm::vec3 d = fcurv[prev(j)] - fcurv[next(j)];
+                m[0] += u * d[0];
+                m[1] += v * d[0] + 2.0f * u * d[1];
+                m[2] += 2.0f * v * d[1] + u * d[2];
+                m[3] += v * d[2];
+            }
+            const int32_t solved =
+                solve_tridiagonal<4>({uu, 2.0f * uu + vv, uu + 2.0f * vv, vv}, {uv, 2.0f * uv, uv}, m);
+            const glm::vec4 dc{m[0], m[1], m[2], m[3]};
+#pragma GCC unroll 3
+            for (int j = 0; j < 3; ++j) {
+                const glm::vec4 d = fr.ca[j] * rotate_derivative(dc, r[j].inverse());
+#pragma GCC unroll 4
+                for (int k = 0; k < 4; ++k) res.values[4 * j + k][i] = d[k];
+            }
+            res.ok[i] = usable[i] & nonzero(fr.ca) & solved & finite(dc);
+        }
         },
         [&](size_t i, const CornerValues& cv) {
-            const glm::uvec3 f = tris[i];
-            for (int j = 0; j < 3; ++j)
-                out.dcurv[f[j]] += glm::vec4(cv[4 * j], cv[4 * j + 1], cv[4 * j + 2], cv[4 * j + 3]);
-        });
+        const glm::uvec3 f = tris[i];
+        for (int j = 0; j < 3; ++j)
+            out.dcurv[f[j]] += glm::vec4(cv[4 * j], cv[4 * j + 1], cv[4 * j + 2], cv[4 * j + 3]);
+    });
 
     for_each_index(nv, [&](size_t v) {
         const float area = out.point_area[v];

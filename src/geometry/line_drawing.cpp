@@ -176,8 +176,8 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         const LineSettings* settings = object_lines[i];
         const std::vector<LineSegment>& segments = segments_per_type[i];
         const bool want_hidden = line_number(*settings, "hidden") != 0.0f;
-        VisibilitySplit split =
-            timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, {}, &incident); });
+        VisibilitySplit split = timer(
+            "visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, {}, &incident); });
         auto chained = timer("chain", [&] {
             std::pair<std::vector<Polyline>, std::vector<Polyline>> out;
             out.first = chain_segments(split.visible);

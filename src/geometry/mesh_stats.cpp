@@ -17,9 +17,7 @@ namespace {
 
 class UnionFind {
 public:
-    explicit UnionFind(size_t n) : parent_(n), size_(n, 1) {
-        std::iota(parent_.begin(), parent_.end(), uint32_t(0));
-    }
+    explicit UnionFind(size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), uint32_t(0)); }
     uint32_t find(uint32_t x) {
         while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
         return x;
@@ -96,8 +94,7 @@ MeshStats mesh_stats(const Mesh& mesh) {
 
     // A face is a duplicate when an earlier face has the same vertex set: total minus unique.
     tbb::parallel_sort(sorted_faces.begin(), sorted_faces.end());
-    const size_t unique_faces =
-        size_t(std::unique(sorted_faces.begin(), sorted_faces.end()) - sorted_faces.begin());
+    const size_t unique_faces = size_t(std::unique(sorted_faces.begin(), sorted_faces.end()) - sorted_faces.begin());
     s.duplicate_faces = sorted_faces.size() - unique_faces;
 
     size_t referenced_count = 0;

@@ -12,9 +12,7 @@ namespace {
 
 constexpr size_t kGrain = 16384;  // faces per TBB task: small meshes stay on one thread
 
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 bool valid(const glm::uvec3& t, size_t n) { return t.x < n && t.y < n && t.z < n; }
 
@@ -53,8 +51,7 @@ std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh) {
             const glm::uvec3 t = tris[f];
             if (fn[f] == glm::vec3(0.0f)) continue;  // degenerate or invalid: contributes nothing
             const glm::vec3 a = p[t.x], b = p[t.y], c = p[t.z];
-            angles[f] = {angle_between(b - a, c - a), angle_between(c - b, a - b),
-                         angle_between(a - c, b - c)};
+            angles[f] = {angle_between(b - a, c - a), angle_between(c - b, a - b), angle_between(a - c, b - c)};
         }
     });
     std::vector<glm::vec3> sum(p.size(), glm::vec3(0.0f));
@@ -66,8 +63,7 @@ std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh) {
         for (size_t v = range.begin(); v != range.end(); ++v) {
             const float len = glm::length(sum[v]);
             // Isolated vertices (and ones whose faces cancel out) still need a usable normal.
-            sum[v] =
-                (len > 0.0f && std::isfinite(len)) ? sum[v] / len : glm::vec3(0.0f, 0.0f, 1.0f);
+            sum[v] = (len > 0.0f && std::isfinite(len)) ? sum[v] / len : glm::vec3(0.0f, 0.0f, 1.0f);
         }
     });
     return sum;

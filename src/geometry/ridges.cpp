@@ -23,8 +23,8 @@ struct Family {
 
 // The crossing of e = ∂k/∂s on edge (i, j), i < j, or nothing. j's direction (and with it the
 // sign of e_j) is flipped to agree with i's; an extremum of the right kind and size only.
-std::optional<glm::vec3> crossing(const Mesh& mesh, const Curvature& c, const Family& fam,
-                                  double threshold, uint32_t i, uint32_t j) {
+std::optional<glm::vec3> crossing(const Mesh& mesh, const Curvature& c, const Family& fam, double threshold, uint32_t i,
+                                  uint32_t j) {
     if (j < i) std::swap(i, j);
     const glm::dvec3 di(fam.dir[i]), dj(fam.dir[j]);
     const double ei = c.dcurv[i][fam.component];
@@ -40,14 +40,12 @@ std::optional<glm::vec3> crossing(const Mesh& mesh, const Curvature& c, const Fa
     return glm::vec3(pi + t * (pj - pi));
 }
 
-std::vector<LineSegment> extract(const Mesh& mesh, const Curvature& c, const Family& fam,
-                                 double threshold) {
+std::vector<LineSegment> extract(const Mesh& mesh, const Curvature& c, const Family& fam, double threshold) {
     const auto& tris = mesh.triangles;
     const size_t n = mesh.positions.size();
     return collect_face_segments(tris.size(), [&](size_t f, std::vector<LineSegment>& out) {
         const glm::uvec3 t = tris[f];
-        if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x)
-            return;
+        if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x) return;
         glm::vec3 p[3];
         uint64_t key[3];
         int count = 0;
@@ -69,14 +67,12 @@ std::vector<LineSegment> extract(const Mesh& mesh, const Curvature& c, const Fam
 
 }  // namespace
 
-RidgeLines extract_ridges(const Mesh& mesh, const Curvature& curvature,
-                          const RidgeOptions& options) {
+RidgeLines extract_ridges(const Mesh& mesh, const Curvature& curvature, const RidgeOptions& options) {
     const size_t n = mesh.positions.size();
     if (curvature.k1.size() != n || curvature.k2.size() != n || curvature.pdir1.size() != n ||
         curvature.pdir2.size() != n || curvature.dcurv.size() != n)
         throw std::invalid_argument("extract_ridges: need curvature per vertex");
-    const double size = options.feature_size > 0.0f ? double(options.feature_size)
-                                                    : double(line_feature_size(mesh));
+    const double size = options.feature_size > 0.0f ? double(options.feature_size) : double(line_feature_size(mesh));
     const double threshold = double(options.threshold) / size;
     RidgeLines out;
     out.ridges = extract(mesh, curvature, {curvature.pdir1, curvature.k1, 0, true}, threshold);

@@ -29,7 +29,6 @@ struct RidgeLines {
 // edge keys. A face with two crossing edges gives a segment (a → b in no particular sense);
 // one with three (near an umbilic, where the field turns) gives none. Throws
 // std::invalid_argument when curvature does not have one entry per vertex.
-RidgeLines extract_ridges(const Mesh& mesh, const Curvature& curvature,
-                          const RidgeOptions& options = {});
+RidgeLines extract_ridges(const Mesh& mesh, const Curvature& curvature, const RidgeOptions& options = {});
 
 }  // namespace inkshade::geometry

@@ -22,8 +22,7 @@ struct ViewCurvature {
     float kr = 0.0f, dwkr = 0.0f, ndotv = 0.0f;
 };
 
-ViewCurvature view_curvature(const glm::vec3& normal, const glm::dvec3& v, const Curvature& c,
-                             size_t i) {
+ViewCurvature view_curvature(const glm::vec3& normal, const glm::dvec3& v, const Curvature& c, size_t i) {
     const double u = glm::dot(v, glm::dvec3(c.pdir1[i]));  // |w| cos φ
     const double s = glm::dot(v, glm::dvec3(c.pdir2[i]));  // |w| sin φ
     const double u2 = u * u, s2 = s * s, sin2 = u2 + s2;
@@ -38,8 +37,7 @@ ViewCurvature view_curvature(const glm::vec3& normal, const glm::dvec3& v, const
         // C(w,w,w)/|w|² = |w| C(ŵ,ŵ,ŵ), the cubic form of the derivative tensor (Rusinkiewicz
         // 2004; rtsc's sctest_num), then the term from the turning of w along itself (DeCarlo
         // 2004): −2 (n·v) τr², τr = (k2 − k1) cos φ sin φ.
-        const double cubic =
-            (u2 * (u * C.x + 3.0 * s * C.y) + s2 * (3.0 * u * C.z + s * C.w)) / sin2;
+        const double cubic = (u2 * (u * C.x + 3.0 * s * C.y) + s2 * (3.0 * u * C.z + s * C.w)) / sin2;
         const double tau = (k2 - k1) * u * s / sin2;
         dwkr = cubic - 2.0 * ndotv * tau * tau;
     }
@@ -53,8 +51,8 @@ ViewCurvature view_curvature(const glm::vec3& normal, const glm::dvec3& v, const
 
 void check_sizes(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Curvature& c) {
     const size_t n = mesh.positions.size();
-    if (normals.size() != n || c.k1.size() != n || c.k2.size() != n || c.pdir1.size() != n ||
-        c.pdir2.size() != n || c.dcurv.size() != n)
+    if (normals.size() != n || c.k1.size() != n || c.k2.size() != n || c.pdir1.size() != n || c.pdir2.size() != n ||
+        c.dcurv.size() != n)
         throw std::invalid_argument("suggestive contours: need normals and curvature per vertex");
 }
 
@@ -80,8 +78,8 @@ float line_feature_size(const Mesh& mesh) {
     return d > 0.0f && std::isfinite(d) ? d : 1.0f;
 }
 
-RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>& normals,
-                                 const Curvature& curvature, const Camera& camera) {
+RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Curvature& curvature,
+                                 const Camera& camera) {
     check_sizes(mesh, normals, curvature);
     const ViewVector view(camera);
     const size_t n = mesh.positions.size();
@@ -91,8 +89,7 @@ RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>&
     out.ndotv.resize(n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kGrain), [&](const auto& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
-            const ViewCurvature vc =
-                view_curvature(normals[i], view.at(mesh.positions[i]), curvature, i);
+            const ViewCurvature vc = view_curvature(normals[i], view.at(mesh.positions[i]), curvature, i);
             out.kr[i] = vc.kr;
             out.dw_kr[i] = vc.dwkr;
             out.ndotv[i] = vc.ndotv;
@@ -101,14 +98,11 @@ RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>&
     return out;
 }
 
-std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh,
-                                                     const std::vector<glm::vec3>& normals,
-                                                     const Curvature& curvature,
-                                                     const Camera& camera,
+std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                                     const Curvature& curvature, const Camera& camera,
                                                      const SuggestiveOptions& options) {
     check_sizes(mesh, normals, curvature);
-    const double size = options.feature_size > 0.0f ? double(options.feature_size)
-                                                    : double(line_feature_size(mesh));
+    const double size = options.feature_size > 0.0f ? double(options.feature_size) : double(line_feature_size(mesh));
     const double threshold = double(options.threshold) / (size * size);
     const double fade = double(options.fade) / (size * size);
     const ViewVector view(camera);
@@ -175,8 +169,10 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh,
                 break;
             }
             const double s = h0 / (h0 - h1);
-            if (h0 > 0.0) hi = std::min(hi, s);
-            else lo = std::max(lo, s);
+            if (h0 > 0.0)
+                hi = std::min(hi, s);
+            else
+                lo = std::max(lo, s);
         }
         if (!(lo < hi)) return;
 

@@ -44,8 +44,8 @@ struct RadialCurvature {
 
 // κr and D_w κr per vertex. `normals` must be the normals `curvature` was computed with; throws
 // std::invalid_argument when sizes differ from the vertex count.
-RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>& normals,
-                                 const Curvature& curvature, const Camera& camera);
+RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Curvature& curvature,
+                                 const Camera& camera);
 
 // Suggestive contour segments in face order (parallel over faces, deterministic). The zero set
 // of κr sin²θ (same zeros as κr, defined everywhere) is interpolated on edges exactly as
@@ -54,10 +54,8 @@ RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>&
 // threshold, with D_w κr and n·v interpolated linearly along it (rtsc's sctest_num /
 // sctest_den); a cut end gets face_interior_key and strength 0 (or 1 where it meets a contour).
 // Walking a → b keeps κr ≥ 0 on the left.
-std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh,
-                                                     const std::vector<glm::vec3>& normals,
-                                                     const Curvature& curvature,
-                                                     const Camera& camera,
+std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                                     const Curvature& curvature, const Camera& camera,
                                                      const SuggestiveOptions& options = {});
 
 }  // namespace inkshade::geometry

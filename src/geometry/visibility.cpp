@@ -35,9 +35,7 @@ glm::dvec3 ImageProjection::project(const glm::vec3& p) const {
     return {(ndc.x + 1.0) * 0.5 * width_, (1.0 - ndc.y) * 0.5 * height_, (ndc.z + 1.0) * 0.5};
 }
 
-double ImageProjection::view_depth(const glm::vec3& p) const {
-    return glm::dot(glm::dvec3(p) - eye_, forward_);
-}
+double ImageProjection::view_depth(const glm::vec3& p) const { return glm::dot(glm::dvec3(p) - eye_, forward_); }
 
 bool ImageProjection::clipped(const glm::vec3& p) const {
     const double z = view_depth(p);
@@ -86,11 +84,16 @@ void skip_near_faces(const RTCFilterFunctionNArguments* args) {
 
 std::string device_error_text(RTCDevice device) {
     switch (rtcGetDeviceError(device)) {
-        case RTC_ERROR_NONE: return "no error";
-        case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-        case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-        case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-        default: return "error " + std::to_string(int(rtcGetDeviceError(device)));
+        case RTC_ERROR_NONE:
+            return "no error";
+        case RTC_ERROR_OUT_OF_MEMORY:
+            return "out of memory";
+        case RTC_ERROR_INVALID_ARGUMENT:
+            return "invalid argument";
+        case RTC_ERROR_UNSUPPORTED_CPU:
+            return "unsupported CPU";
+        default:
+            return "error " + std::to_string(int(rtcGetDeviceError(device)));
     }
 }
 
@@ -146,8 +149,8 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
             if (v) std::copy_n(&mesh.positions[0].x, 3 * nv, v);
         }
         // Indices are shared (12-byte stride, no padding needed).
-        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.triangles, 0,
-                                   sizeof(glm::uvec3), nf);
+        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.triangles, 0, sizeof(glm::uvec3),
+                                   nf);
         rtcSetGeometryOccludedFilterFunction(geom, skip_near_faces);
         rtcCommitGeometry(geom);
         rtcAttachGeometry(m.scene, geom);
@@ -210,21 +213,22 @@ std::pair<const uint32_t*, const uint32_t*> IncidentFaces::faces(uint32_t v) con
 
 // ---- RayScene queries ----------------------------------------------------------------------
 
-bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices,
-                        int near_count, int rings, double clearance, const IncidentFaces* incident) const {
+bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices, int near_count,
+                        int rings, double clearance, const IncidentFaces* incident) const {
     const OcclusionQuery query{p, near_vertices, near_count, rings, clearance};
     uint8_t hidden = 0;
     occluded(view, &query, 1, &hidden, incident);
     return hidden != 0;
 }
 
-void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count,
-                        uint8_t* hidden, const IncidentFaces* incident) const {
+void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* hidden,
+                        const IncidentFaces* incident) const {
     IncidentFaces own;
     if (!incident) {
         std::vector<uint32_t> ring_vertices;
         for (size_t i = 0; i < count; ++i)
-            if (queries[i].rings >= 2) ring_vertices.insert(ring_vertices.end(), queries[i].near, queries[i].near + queries[i].near_count);
+            if (queries[i].rings >= 2)
+                ring_vertices.insert(ring_vertices.end(), queries[i].near, queries[i].near + queries[i].near_count);
         own = IncidentFaces(*impl_->mesh, ring_vertices);
         incident = &own;
     }
@@ -273,8 +277,10 @@ void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queri
     ctx.triangles = impl_->triangles;
     ctx.incident = incident;
     ctx.queries = queries;
-    if (count == 1) rtcOccluded1(impl_->scene, &ctx.rtc, &rays[0]);
-    else if (count > 1) rtcOccluded1M(impl_->scene, &ctx.rtc, rays.data(), unsigned(count), sizeof(RTCRay));
+    if (count == 1)
+        rtcOccluded1(impl_->scene, &ctx.rtc, &rays[0]);
+    else if (count > 1)
+        rtcOccluded1M(impl_->scene, &ctx.rtc, rays.data(), unsigned(count), sizeof(RTCRay));
     for (size_t i = 0; i < count; ++i) hidden[i] = rays[i].tfar < 0.0f;  // −inf on a hit
 }
 
@@ -304,9 +310,12 @@ void add_face(NearSet& s, const Mesh& mesh, uint32_t face) {
 NearSet near_of_key(const Mesh& mesh, uint64_t key, uint32_t face) {
     NearSet s;
     const uint32_t hi = uint32_t(key >> 32), lo = uint32_t(key);
-    if (hi < lo) s.add(hi), s.add(lo);  // mesh edge
-    else if (hi == lo) s.add(hi);       // mesh vertex
-    else add_face(s, mesh, face);       // inside a face
+    if (hi < lo)
+        s.add(hi), s.add(lo);  // mesh edge
+    else if (hi == lo)
+        s.add(hi);  // mesh vertex
+    else
+        add_face(s, mesh, face);  // inside a face
     return s;
 }
 
@@ -356,7 +365,7 @@ Sight sight_of(const RayScene& scene, const ImageProjection& view, const glm::ve
                const SampleRule& rule, const IncidentFaces& incident) {
     if (view.clipped(p)) return Sight::Clipped;
     return scene.occluded(view, p, near.v, near.n, rule.rings, rule.clearance, &incident) ? Sight::Hidden
-                                                                                         : Sight::Visible;
+                                                                                          : Sight::Visible;
 }
 
 // Sight of every segment end, each shared node tested once: neighbouring segments of a chain
@@ -389,8 +398,8 @@ std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const Ima
     // Group starts: one test per run of equal (key, point).
     std::vector<uint32_t> starts;
     for (size_t k = 0; k < ends.size(); ++k)
-        if (k == 0 || ends[k].key != ends[k - 1].key || ends[k].px != ends[k - 1].px ||
-            ends[k].py != ends[k - 1].py || ends[k].pz != ends[k - 1].pz)
+        if (k == 0 || ends[k].key != ends[k - 1].key || ends[k].px != ends[k - 1].px || ends[k].py != ends[k - 1].py ||
+            ends[k].pz != ends[k - 1].pz)
             starts.push_back(uint32_t(k));
     starts.push_back(uint32_t(ends.size()));
     std::vector<Sight> sights(2 * n);
@@ -433,7 +442,7 @@ std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const Ima
 }  // namespace
 
 IncidentFaces incident_faces_of(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& lists,
-                               const VisibilityOptions& options) {
+                                const VisibilityOptions& options) {
     // Every near vertex of a two-ring sample: the segment's face and its end keys' vertices.
     std::vector<uint32_t> ring_vertices;
     for (const std::vector<LineSegment>* list : lists)
@@ -454,7 +463,7 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
     const double spacing = std::max(double(options.sample_spacing_px), 1e-3);
     const double precision = std::max(double(options.transition_precision_px), 1e-4);
     constexpr uint8_t kSplit = 0xff;
-    std::vector<uint8_t> whole(n, kSplit);     // Sight of an unsplit segment, else kSplit
+    std::vector<uint8_t> whole(n, kSplit);      // Sight of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
     std::vector<SampleRule> rules(n);
     tbb::parallel_for(size_t(0), n, [&](size_t i) { rules[i] = rule_of(mesh, segments[i], options); });
@@ -483,7 +492,8 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             sights.resize(size_t(steps) + 1);
             sights[0] = ends[2 * i];
             sights[size_t(steps)] = ends[2 * i + 1];
-            for (int k = 1; k < steps; ++k) sights[size_t(k)] = sight_of(scene, view, lerp(s, double(k) / steps), inside, rule, *incident);
+            for (int k = 1; k < steps; ++k)
+                sights[size_t(k)] = sight_of(scene, view, lerp(s, double(k) / steps), inside, rule, *incident);
             if (std::all_of(sights.begin(), sights.end(), [&](Sight x) { return x == sights[0]; })) {
                 whole[i] = uint8_t(sights[0]);
                 continue;
@@ -515,8 +525,10 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
     for (size_t i = 0; i < n; ++i) {
         const LineSegment& s = segments[i];
         if (whole[i] != kSplit) {
-            if (Sight(whole[i]) == Sight::Visible) result.visible.push_back(s);
-            else if (Sight(whole[i]) == Sight::Hidden) result.hidden.push_back(s);
+            if (Sight(whole[i]) == Sight::Visible)
+                result.visible.push_back(s);
+            else if (Sight(whole[i]) == Sight::Hidden)
+                result.hidden.push_back(s);
             continue;
         }
         for (const Piece& p : pieces[i]) {

@@ -69,7 +69,7 @@ public:
 
 private:
     static constexpr uint32_t kNone = 0xffffffffu;
-    std::vector<uint32_t> slot_;           // per mesh vertex: its index among the chosen, or kNone
+    std::vector<uint32_t> slot_;            // per mesh vertex: its index among the chosen, or kNone
     std::vector<uint32_t> offset_, faces_;  // faces_[offset_[i] .. offset_[i + 1]) of chosen vertex i
 };
 
@@ -155,8 +155,8 @@ struct VisibilitySplit {
 // a face. Two-ring samples look their near vertices up in `incident` (incident_faces_of these
 // segments, or of several lists that include them); without it, one is built here.
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
-                                    const std::vector<LineSegment>& segments,
-                                    const VisibilityOptions& options = {}, const IncidentFaces* incident = nullptr);
+                                    const std::vector<LineSegment>& segments, const VisibilityOptions& options = {},
+                                    const IncidentFaces* incident = nullptr);
 
 // The faces around every near vertex of the two-ring samples of these segment lists (one scan
 // of the triangles, about 30 ms at 10 M): build it once per view for all line types.

@@ -206,8 +206,8 @@ void weld(Mesh& mesh, const WeldOptions& options) {
         for (int64_t dz = from[2]; dz <= to[2]; ++dz)
             for (int64_t dy = from[1]; dy <= to[1]; ++dy)
                 for (int64_t dx = from[0]; dx <= to[0]; ++dx) {
-                    for (uint32_t r = table.find(pack(idx[0] + dx, idx[1] + dy, idx[2] + dz));
-                         r != kNone; r = next[r]) {
+                    for (uint32_t r = table.find(pack(idx[0] + dx, idx[1] + dy, idx[2] + dz)); r != kNone;
+                         r = next[r]) {
                         const glm::dvec3 d = glm::dvec3(mesh.positions[reps[r]]) - glm::dvec3(p);
                         if (r < best && glm::dot(d, d) <= eps2) best = r;
                     }

@@ -90,11 +90,10 @@ EGLContext create_core_context(EGLDisplay display) {
     EGLConfig config = nullptr;
     EGLint count = 0;
     // Surfaceless rendering needs no config on Mesa, but asking for one keeps drivers happy.
-    if (!eglChooseConfig(display, config_attribs, &config, 1, &count) || count == 0)
-        config = EGL_NO_CONFIG_KHR;
-    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    if (!eglChooseConfig(display, config_attribs, &config, 1, &count) || count == 0) config = EGL_NO_CONFIG_KHR;
+    const EGLint context_attribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
     if (context == EGL_NO_CONTEXT) {
         release_display(display);
@@ -118,12 +117,12 @@ void pin_driver_modules_for_leak_reports() {
 #ifdef INKSHADE_SANITIZE
     dl_iterate_phdr(
         [](dl_phdr_info* info, size_t, void*) {
-            const char* name = info->dlpi_name;
-            if (name && (std::strstr(name, "_dri.so") || std::strstr(name, "libEGL_mesa") ||
-                         std::strstr(name, "libGLX_mesa") || std::strstr(name, "libgallium") ||
-                         std::strstr(name, "libglapi")))
-                dlopen(name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-            return 0;
+        const char* name = info->dlpi_name;
+        if (name &&
+            (std::strstr(name, "_dri.so") || std::strstr(name, "libEGL_mesa") || std::strstr(name, "libGLX_mesa") ||
+             std::strstr(name, "libgallium") || std::strstr(name, "libglapi")))
+            dlopen(name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+        return 0;
         },
         nullptr);
 #endif
@@ -136,21 +135,17 @@ std::unique_ptr<GlContext> create_headless_context() {
     setenv("GALLIUM_DRIVER", "llvmpipe", /*overwrite=*/0);
     // Load the EGL library through epoxy; its absence shows as no client extensions.
     if (!epoxy_has_egl() || !has_client_extension("EGL_EXT_platform_base"))
-        throw RuntimeError(std::string("no EGL library with EGL_EXT_platform_base found; ") +
-                           kInstallHint);
+        throw RuntimeError(std::string("no EGL library with EGL_EXT_platform_base found; ") + kInstallHint);
 
     std::vector<EGLDisplay> candidates;
     if (has_client_extension("EGL_MESA_platform_surfaceless"))
-        candidates.push_back(
-            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
-    if (has_client_extension("EGL_EXT_platform_device") &&
-        has_client_extension("EGL_EXT_device_enumeration")) {
+        candidates.push_back(eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
+    if (has_client_extension("EGL_EXT_platform_device") && has_client_extension("EGL_EXT_device_enumeration")) {
         EGLDeviceEXT devices[8];
         EGLint n = 0;
         if (eglQueryDevicesEXT(8, devices, &n))
             for (EGLint i = 0; i < n; ++i)
-                candidates.push_back(
-                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr));
+                candidates.push_back(eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr));
     }
     for (EGLDisplay display : candidates) {
         if (display == EGL_NO_DISPLAY) continue;
@@ -162,7 +157,8 @@ std::unique_ptr<GlContext> create_headless_context() {
         return ctx;
     }
     throw RuntimeError(std::string("no OpenGL 4.5 core context available through EGL "
-                                   "(surfaceless or device platform); ") + kInstallHint);
+                                   "(surfaceless or device platform); ") +
+                       kInstallHint);
 }
 
 }  // namespace inkshade::gpu

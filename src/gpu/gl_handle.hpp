@@ -112,11 +112,11 @@ struct ProgramKind {
 
 using GlBuffer = GlHandle<BufferKind>;
 using GlVertexArray = GlHandle<VertexArrayKind>;
-using GlTexture = GlHandle<TextureKind>;            // create(GL_TEXTURE_2D, ...)
+using GlTexture = GlHandle<TextureKind>;  // create(GL_TEXTURE_2D, ...)
 using GlRenderbuffer = GlHandle<RenderbufferKind>;
 using GlFramebuffer = GlHandle<FramebufferKind>;
-using GlQuery = GlHandle<QueryKind>;                // create(GL_TIMESTAMP, ...)
-using GlShader = GlHandle<ShaderKind>;              // create(GL_VERTEX_SHADER, ...)
+using GlQuery = GlHandle<QueryKind>;    // create(GL_TIMESTAMP, ...)
+using GlShader = GlHandle<ShaderKind>;  // create(GL_VERTEX_SHADER, ...)
 using GlProgram = GlHandle<ProgramKind>;
 
 }  // namespace inkshade::gpu

@@ -3,13 +3,17 @@
 namespace inkshade::gpu {
 
 CapabilityScope::CapabilityScope(GLenum cap, bool enabled) : cap_(cap), was_enabled_(glIsEnabled(cap)) {
-    if (enabled) glEnable(cap);
-    else glDisable(cap);
+    if (enabled)
+        glEnable(cap);
+    else
+        glDisable(cap);
 }
 
 CapabilityScope::~CapabilityScope() {
-    if (was_enabled_) glEnable(cap_);
-    else glDisable(cap_);
+    if (was_enabled_)
+        glEnable(cap_);
+    else
+        glDisable(cap_);
 }
 
 DepthScope::DepthScope(std::optional<GLenum> func, bool write) : test_(GL_DEPTH_TEST, func.has_value()) {

@@ -18,8 +18,8 @@ public:
     // shader_source.hpp). `defines` is inserted after #version in both stages,
     // `fragment_defines` after it in the fragment stage only.
     // Throws RuntimeError naming the file and the compiler's first error line.
-    ShaderProgram(const std::string& vertex_path, const std::string& fragment_path,
-                  const std::string& defines = "", const std::string& fragment_defines = "");
+    ShaderProgram(const std::string& vertex_path, const std::string& fragment_path, const std::string& defines = "",
+                  const std::string& fragment_defines = "");
 
     void use() const { glUseProgram(program_.id()); }
     GLuint id() const { return program_.id(); }

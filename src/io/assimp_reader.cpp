@@ -38,7 +38,8 @@ std::string one_line(std::string s) {
 // An embedded texture ("*0" names, or an FBX's packed file): compressed bytes (mHeight == 0)
 // decode like a file; raw texels are BGRA (aiTexel).
 std::shared_ptr<const Texture> embedded_texture(const aiTexture& t, const std::string& source, std::string& problem) {
-    if (t.mHeight == 0) return decode_texture(reinterpret_cast<const unsigned char*>(t.pcData), t.mWidth, source, problem);
+    if (t.mHeight == 0)
+        return decode_texture(reinterpret_cast<const unsigned char*>(t.pcData), t.mWidth, source, problem);
     if (t.mWidth > unsigned(kMaxTextureSide) || t.mHeight > unsigned(kMaxTextureSide)) {
         problem = "larger than " + std::to_string(kMaxTextureSide) + " pixels a side";
         return nullptr;
@@ -59,7 +60,8 @@ std::shared_ptr<const Texture> embedded_texture(const aiTexture& t, const std::s
 }
 
 Material read_material(const aiScene& scene, const aiMaterial& m, const std::string& path,
-                       std::map<std::string, std::shared_ptr<const Texture>>& textures, std::vector<std::string>& warnings) {
+                       std::map<std::string, std::shared_ptr<const Texture>>& textures,
+                       std::vector<std::string>& warnings) {
     Material out;
     aiString name;
     if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
@@ -82,7 +84,8 @@ Material read_material(const aiScene& scene, const aiMaterial& m, const std::str
             if (!it->second) warnings.push_back(texture_warning(path, texname, problem));
         } else {
             const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-            it->second = load_texture_or_warn(path, texname, {dir.empty() ? std::filesystem::path(".") : dir}, warnings);
+            it->second =
+                load_texture_or_warn(path, texname, {dir.empty() ? std::filesystem::path(".") : dir}, warnings);
         }
     }
     out.texture = it->second;
@@ -161,7 +164,8 @@ Mesh read_with_assimp(const std::string& path) {
             const aiFace& face = m.mFaces[f];
             if (face.mNumIndices != 3) continue;
             mesh.triangles.emplace_back(base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]);
-            if (!mesh.materials.empty()) mesh.face_materials.push_back(std::min(m.mMaterialIndex, scene->mNumMaterials - 1));
+            if (!mesh.materials.empty())
+                mesh.face_materials.push_back(std::min(m.mMaterialIndex, scene->mNumMaterials - 1));
         }
     }
     return mesh;

@@ -88,7 +88,8 @@ std::string explain_parse_error(const std::string& err) {
         return "bad JSON: " + what.substr(0, what.find("; last read:"));  // not the quoted file bytes
     }
     if (line.rfind("File not found : ", 0) == 0) return "buffer file '" + line.substr(17) + "' not found";
-    if (line.rfind("File size mismatch : ", 0) == 0) return "buffer file size does not match its byteLength (" + line.substr(21) + ")";
+    if (line.rfind("File size mismatch : ", 0) == 0)
+        return "buffer file size does not match its byteLength (" + line.substr(21) + ")";
     if (line.rfind("File read error : ", 0) == 0) return "cannot read buffer file " + line.substr(18);
     return line;
 }
@@ -96,7 +97,11 @@ std::string explain_parse_error(const std::string& err) {
 std::string percent_decode(const std::string& uri) {
     std::string out;
     for (size_t i = 0; i < uri.size(); ++i) {
-        auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) ? (std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : (std::tolower(c) - 'a' + 10)) : -1; };
+        auto hex = [](char c) {
+            return std::isxdigit(static_cast<unsigned char>(c))
+                       ? (std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : (std::tolower(c) - 'a' + 10))
+                       : -1;
+        };
         if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
             out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
             i += 2;
@@ -136,8 +141,8 @@ bool write_whole_file(std::string* err, const std::string&, const std::vector<un
 // Keeps the encoded bytes of data: URI images (tinygltf's own copy, safe to read). Images in a
 // bufferView are not touched here: tinygltf hands over an unchecked pointer for those, so they
 // are read later from the validated bufferView.
-bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
-                        int size, void*) {
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
     if (image->bufferView < 0 && bytes != nullptr && size > 0) image->image.assign(bytes, bytes + size);
     image->as_is = true;
     return true;
@@ -151,13 +156,16 @@ void check_json_depth(std::string_view json, const std::string& path) {
     for (size_t i = 0; i < json.size(); ++i) {
         const char c = json[i];
         if (in_string) {
-            if (c == '\\') ++i;
-            else if (c == '"') in_string = false;
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
         } else if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxJsonDepth)
-                throw InputError(path, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels at byte " + std::to_string(i));
+                throw InputError(path, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels at byte " +
+                                           std::to_string(i));
         } else if ((c == ']' || c == '}') && depth > 0) {
             --depth;
         }
@@ -185,7 +193,8 @@ size_t check_glb(std::string_view bytes, const std::string& path) {
         throw InputError(path, "not a GLB file (magic is '" + magic + "', expected 'glTF')");
     }
     const uint32_t version = le32(bytes.data() + 4), length = le32(bytes.data() + 8);
-    if (version != 2) throw InputError(path, "GLB version " + std::to_string(version) + " is not supported (glTF 2.0 only)");
+    if (version != 2)
+        throw InputError(path, "GLB version " + std::to_string(version) + " is not supported (glTF 2.0 only)");
     if (length > bytes.size())
         throw InputError(path, "truncated GLB: the header says " + std::to_string(length) + " bytes but the file has " +
                                    std::to_string(bytes.size()));
@@ -193,12 +202,14 @@ size_t check_glb(std::string_view bytes, const std::string& path) {
     const uint32_t json_length = le32(bytes.data() + 12), json_type = le32(bytes.data() + 16);
     if (json_type != kJson) throw InputError(path, "the first GLB chunk is not JSON");
     if (uint64_t(json_length) + 20 > length)
-        throw InputError(path, "truncated GLB: the JSON chunk (" + std::to_string(json_length) + " bytes) runs past the end");
+        throw InputError(path,
+                         "truncated GLB: the JSON chunk (" + std::to_string(json_length) + " bytes) runs past the end");
     const uint64_t bin_at = 20 + uint64_t(json_length);
     if (bin_at + 8 <= length) {
         const uint32_t bin_length = le32(bytes.data() + bin_at), bin_type = le32(bytes.data() + bin_at + 4);
         if (bin_type == kBin && bin_at + 8 + bin_length > length)
-            throw InputError(path, "truncated GLB: the BIN chunk (" + std::to_string(bin_length) + " bytes) runs past the end");
+            throw InputError(
+                path, "truncated GLB: the BIN chunk (" + std::to_string(bin_length) + " bytes) runs past the end");
     }
     return length;
 }
@@ -208,22 +219,31 @@ size_t check_glb(std::string_view bytes, const std::string& path) {
 int component_size(int type) {
     switch (type) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
     }
 }
 
 int component_count(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-        default: return 0;  // matrices are not vertex attributes
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        default:
+            return 0;  // matrices are not vertex attributes
     }
 }
 
@@ -236,7 +256,8 @@ float component(const unsigned char* p, int type, bool normalized) {
             std::memcpy(&f, p, 4);
             return f;
         }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? float(p[0]) / 255.0f : float(p[0]);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return normalized ? float(p[0]) / 255.0f : float(p[0]);
         case TINYGLTF_COMPONENT_TYPE_BYTE: {
             int8_t v;
             std::memcpy(&v, p, 1);
@@ -257,13 +278,15 @@ float component(const unsigned char* p, int type, bool normalized) {
             std::memcpy(&v, p, 4);
             return float(v);
         }
-        default: return 0.0f;
+        default:
+            return 0.0f;
     }
 }
 
 uint32_t index_value(const unsigned char* p, int type) {
     switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return p[0];
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
             uint16_t v;
             std::memcpy(&v, p, 2);
@@ -299,8 +322,8 @@ public:
         if (strided && bv.byteStride != 0) {
             // Section 3.6.2.4: 4..252, a multiple of the component size, at least one element.
             if (bv.byteStride < element_bytes || bv.byteStride > 252 || bv.byteStride % component_bytes != 0)
-                fail(what + ": bufferView " + std::to_string(view) + " has byteStride " + std::to_string(bv.byteStride) +
-                     " (elements are " + std::to_string(element_bytes) + " bytes)");
+                fail(what + ": bufferView " + std::to_string(view) + " has byteStride " +
+                     std::to_string(bv.byteStride) + " (elements are " + std::to_string(element_bytes) + " bytes)");
             stride = bv.byteStride;
         }
         if (count == 0) return {base, stride};
@@ -310,9 +333,9 @@ public:
             bool fits = offset <= length && element_bytes <= length - offset &&
                         (count - 1) <= (length - offset - element_bytes) / stride;
             if (!fits)
-                fail(what + ": " + std::to_string(count) + " elements of " + std::to_string(element_bytes) + " bytes from offset " +
-                     std::to_string(offset) + " do not fit in bufferView " + std::to_string(view) + " (" +
-                     std::to_string(length) + " bytes)");
+                fail(what + ": " + std::to_string(count) + " elements of " + std::to_string(element_bytes) +
+                     " bytes from offset " + std::to_string(offset) + " do not fit in bufferView " +
+                     std::to_string(view) + " (" + std::to_string(length) + " bytes)");
         }
         return {base + offset, stride};
     }
@@ -326,20 +349,22 @@ public:
         const std::vector<unsigned char>& data = model_.buffers[size_t(bv.buffer)].data;
         if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset)
             fail(what + ": bufferView " + std::to_string(view) + " (bytes " + std::to_string(bv.byteOffset) + ".." +
-                 std::to_string(bv.byteOffset + bv.byteLength) + ") is past the end of buffer " + std::to_string(bv.buffer) +
-                 " (" + std::to_string(data.size()) + " bytes)");
+                 std::to_string(bv.byteOffset + bv.byteLength) + ") is past the end of buffer " +
+                 std::to_string(bv.buffer) + " (" + std::to_string(data.size()) + " bytes)");
         return data.data() + bv.byteOffset;
     }
 
     const tinygltf::Accessor& accessor(int index, const std::string& role) const {
         if (index < 0 || size_t(index) >= model_.accessors.size())
-            fail(role + " refers to accessor " + std::to_string(index) + " but the file has " + std::to_string(model_.accessors.size()));
+            fail(role + " refers to accessor " + std::to_string(index) + " but the file has " +
+                 std::to_string(model_.accessors.size()));
         return model_.accessors[size_t(index)];
     }
 
     // Float components of accessor `index` (count x components, interleaving removed).
     // `allowed_counts` lists the accepted component counts (e.g. {3} for POSITION).
-    std::vector<float> floats(int index, const std::string& role, std::initializer_list<int> allowed_counts, int& components) const {
+    std::vector<float> floats(int index, const std::string& role, std::initializer_list<int> allowed_counts,
+                              int& components) const {
         const tinygltf::Accessor& a = accessor(index, role);
         const std::string what = name(index, role);
         components = component_count(a.type);
@@ -350,20 +375,23 @@ public:
         check_count(a, what);
         const size_t nc = size_t(components), esize = nc * size_t(csize);
         // The range is checked before the allocation: a count is only trusted once bytes back it.
-        Span s = a.bufferView >= 0 ? span(a.bufferView, a.byteOffset, a.count, esize, size_t(csize), true, what) : Span{};
+        Span s =
+            a.bufferView >= 0 ? span(a.bufferView, a.byteOffset, a.count, esize, size_t(csize), true, what) : Span{};
         std::vector<float> out(a.count * nc, 0.0f);  // no bufferView: zeros (section 3.6.2.1)
         if (s.data) {
             for (size_t i = 0; i < a.count; ++i)
                 for (size_t k = 0; k < nc; ++k)
-                    out[i * nc + k] = component(s.data + i * s.stride + k * size_t(csize), a.componentType, a.normalized);
+                    out[i * nc + k] =
+                        component(s.data + i * s.stride + k * size_t(csize), a.componentType, a.normalized);
         }
         if (a.sparse.isSparse) {
             std::vector<uint32_t> at = sparse_indices(a, what);
-            Span values = span(a.sparse.values.bufferView, size_t(std::max(0, a.sparse.values.byteOffset)), at.size(), esize,
-                               size_t(csize), false, what + " sparse values");
+            Span values = span(a.sparse.values.bufferView, size_t(std::max(0, a.sparse.values.byteOffset)), at.size(),
+                               esize, size_t(csize), false, what + " sparse values");
             for (size_t j = 0; j < at.size(); ++j)
                 for (size_t k = 0; k < nc; ++k)
-                    out[size_t(at[j]) * nc + k] = component(values.data + j * esize + k * size_t(csize), a.componentType, a.normalized);
+                    out[size_t(at[j]) * nc + k] =
+                        component(values.data + j * esize + k * size_t(csize), a.componentType, a.normalized);
         }
         for (size_t i = 0; i < out.size(); ++i)
             if (!std::isfinite(out[i])) fail(what + ": element " + std::to_string(i / nc) + " is not a finite number");
@@ -376,9 +404,11 @@ public:
         const tinygltf::Accessor& a = accessor(index, role);
         const std::string what = name(index, role);
         if (a.type != TINYGLTF_TYPE_SCALAR) fail(what + " is not SCALAR");
-        if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(what + " has componentType " + std::to_string(a.componentType) + " (indices must be unsigned byte, short or int)");
+            fail(what + " has componentType " + std::to_string(a.componentType) +
+                 " (indices must be unsigned byte, short or int)");
         check_count(a, what);
         const size_t csize = size_t(component_size(a.componentType));
         // Index bufferViews are tightly packed (section 3.6.2.4: byteStride only for vertex attributes).
@@ -388,25 +418,28 @@ public:
             for (size_t i = 0; i < a.count; ++i) out[i] = index_value(s.data + i * csize, a.componentType);
         if (a.sparse.isSparse) {
             std::vector<uint32_t> at = sparse_indices(a, what);
-            Span values = span(a.sparse.values.bufferView, size_t(std::max(0, a.sparse.values.byteOffset)), at.size(), csize, csize,
-                               false, what + " sparse values");
+            Span values = span(a.sparse.values.bufferView, size_t(std::max(0, a.sparse.values.byteOffset)), at.size(),
+                               csize, csize, false, what + " sparse values");
             for (size_t j = 0; j < at.size(); ++j) out[at[j]] = index_value(values.data + j * csize, a.componentType);
         }
         for (size_t i = 0; i < out.size(); ++i)
             if (out[i] >= vertex_count)
-                fail(what + ": index " + std::to_string(i) + " is " + std::to_string(out[i]) + " but the primitive has " +
-                     std::to_string(vertex_count) + " vertices");
+                fail(what + ": index " + std::to_string(i) + " is " + std::to_string(out[i]) +
+                     " but the primitive has " + std::to_string(vertex_count) + " vertices");
         return out;
     }
 
     [[noreturn]] void fail(const std::string& problem) const { throw InputError(path_, problem); }
 
 private:
-    static std::string name(int index, const std::string& role) { return "accessor " + std::to_string(index) + " (" + role + ")"; }
+    static std::string name(int index, const std::string& role) {
+        return "accessor " + std::to_string(index) + " (" + role + ")";
+    }
 
     void check_count(const tinygltf::Accessor& a, const std::string& what) const {
         if (a.count > kMaxVertices * 3)
-            fail(what + " claims " + std::to_string(a.count) + " elements (limit " + std::to_string(kMaxVertices * 3) + ")");
+            fail(what + " claims " + std::to_string(a.count) + " elements (limit " + std::to_string(kMaxVertices * 3) +
+                 ")");
         if (a.bufferView < 0 && a.count > kMaxDatalessElements)
             fail(what + " claims " + std::to_string(a.count) + " elements without a bufferView (limit " +
                  std::to_string(kMaxDatalessElements) + ")");
@@ -415,14 +448,15 @@ private:
     // Section 3.6.2.3: strictly increasing element indices, each below the accessor's count.
     std::vector<uint32_t> sparse_indices(const tinygltf::Accessor& a, const std::string& what) const {
         if (a.sparse.count < 0 || size_t(a.sparse.count) > a.count)
-            fail(what + ": sparse count " + std::to_string(a.sparse.count) + " exceeds the accessor's " + std::to_string(a.count));
+            fail(what + ": sparse count " + std::to_string(a.sparse.count) + " exceeds the accessor's " +
+                 std::to_string(a.count));
         const int type = a.sparse.indices.componentType;
         if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
             fail(what + ": sparse indices have componentType " + std::to_string(type));
         const size_t csize = size_t(component_size(type)), n = size_t(a.sparse.count);
-        Span s = span(a.sparse.indices.bufferView, size_t(std::max(0, a.sparse.indices.byteOffset)), n, csize, csize, false,
-                      what + " sparse indices");
+        Span s = span(a.sparse.indices.bufferView, size_t(std::max(0, a.sparse.indices.byteOffset)), n, csize, csize,
+                      false, what + " sparse indices");
         std::vector<uint32_t> at(n);
         for (size_t j = 0; j < n; ++j) {
             at[j] = index_value(s.data + j * csize, type);
@@ -438,7 +472,9 @@ private:
 // --- node transforms (glTF 2.0 section 3.5) ----------------------------------------------
 
 glm::dmat4 local_transform(const tinygltf::Node& node, size_t index, const std::string& path) {
-    auto bad = [&](const char* what) { throw InputError(path, "node " + std::to_string(index) + " has a bad " + what); };
+    auto bad = [&](const char* what) {
+        throw InputError(path, "node " + std::to_string(index) + " has a bad " + what);
+    };
     auto finite = [](const std::vector<double>& v) {
         return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
     };
@@ -503,19 +539,23 @@ std::vector<Instance> scene_instances(const tinygltf::Model& model, const std::s
             throw InputError(path, "scene refers to node " + std::to_string(item.node) + " but the file has " +
                                        std::to_string(model.nodes.size()));
         if (visited[size_t(item.node)]++)
-            throw InputError(path, "node " + std::to_string(item.node) + " is reached twice (the node hierarchy must be a tree)");
-        if (item.depth > kMaxNodeDepth) throw InputError(path, "node hierarchy deeper than " + std::to_string(kMaxNodeDepth));
+            throw InputError(
+                path, "node " + std::to_string(item.node) + " is reached twice (the node hierarchy must be a tree)");
+        if (item.depth > kMaxNodeDepth)
+            throw InputError(path, "node hierarchy deeper than " + std::to_string(kMaxNodeDepth));
         const tinygltf::Node& node = model.nodes[size_t(item.node)];
         const glm::dmat4 world = item.parent * local_transform(node, size_t(item.node), path);
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model.meshes.size())
-                throw InputError(path, "node " + std::to_string(item.node) + " refers to mesh " + std::to_string(node.mesh) +
-                                           " but the file has " + std::to_string(model.meshes.size()));
+                throw InputError(path, "node " + std::to_string(item.node) + " refers to mesh " +
+                                           std::to_string(node.mesh) + " but the file has " +
+                                           std::to_string(model.meshes.size()));
             // A skinned mesh ignores its node's transform (section 3.7.3.3): in the rest pose its
             // vertices are already where the joints put them.
             out.push_back({node.mesh, node.skin >= 0 ? glm::dmat4(1.0) : world});
         }
-        for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back({*c, world, item.depth + 1});
+        for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
+            stack.push_back({*c, world, item.depth + 1});
     }
     return out;
 }
@@ -555,10 +595,10 @@ std::vector<float> gamma_decode(std::vector<float> c) {
 
 // MToon 1.0 defaults (the VRM MToon 1.0 specification, VRMC_materials_mtoon; docs/shading.md).
 std::map<std::string, std::vector<float>> mtoon_defaults() {
-    return {{"shade-color", {0, 0, 0}},    {"shading-shift", {0}},       {"shading-toony", {0.9f}},
-            {"rim-color", {0, 0, 0}},      {"rim-fresnel-power", {5}},   {"rim-lift", {0}},
-            {"rim-lighting-mix", {1}},     {"outline-width-mode", {0}},  {"outline-width", {0}},
-            {"outline-color", {0, 0, 0}},  {"outline-lighting-mix", {1}}, {"gi-equalization", {0.9f}}};
+    return {{"shade-color", {0, 0, 0}},   {"shading-shift", {0}},        {"shading-toony", {0.9f}},
+            {"rim-color", {0, 0, 0}},     {"rim-fresnel-power", {5}},    {"rim-lift", {0}},
+            {"rim-lighting-mix", {1}},    {"outline-width-mode", {0}},   {"outline-width", {0}},
+            {"outline-color", {0, 0, 0}}, {"outline-lighting-mix", {1}}, {"gi-equalization", {0.9f}}};
 }
 
 // VRM 1.0: materials[i].extensions.VRMC_materials_mtoon, factors linear as written.
@@ -587,7 +627,8 @@ std::map<std::string, std::vector<float>> mtoon_v1(const tinygltf::Value& e) {
 // the mtoon model is measured against).
 std::map<std::string, std::vector<float>> mtoon_v0(const tinygltf::Value& props) {
     const tinygltf::Value& f = props.IsObject() && props.Has("floatProperties") ? props.Get("floatProperties") : props;
-    const tinygltf::Value& v = props.IsObject() && props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
+    const tinygltf::Value& v =
+        props.IsObject() && props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
     auto m = mtoon_defaults();
     m["shade-color"] = gamma_decode(numbers(v, "_ShadeColor", {0.97f, 0.81f, 0.86f}));
     const double shift0 = number(f, "_ShadeShift", 0.0), toony0 = number(f, "_ShadeToony", 0.9);
@@ -602,7 +643,8 @@ std::map<std::string, std::vector<float>> mtoon_v0(const tinygltf::Value& props)
     m["outline-width-mode"] = {mode == 1.0 ? 1.0f : mode == 2.0 ? 2.0f : 0.0f};
     m["outline-width"] = {float(0.01 * number(f, "_OutlineWidth", 0.0))};  // v0 widths are centimetres
     m["outline-color"] = gamma_decode(numbers(v, "_OutlineColor", {0, 0, 0}));
-    m["outline-lighting-mix"] = {number(f, "_OutlineColorMode", 0.0) == 1.0 ? float(number(f, "_OutlineLightingMix", 1.0)) : 0.0f};
+    m["outline-lighting-mix"] = {
+        number(f, "_OutlineColorMode", 0.0) == 1.0 ? float(number(f, "_OutlineLightingMix", 1.0)) : 0.0f};
     const double gi = number(f, "_IndirectLightIntensity", 0.1);
     m["gi-equalization"] = {gi != 0.0 ? float(1.0 - gi) : 0.9f};
     return m;
@@ -612,7 +654,12 @@ std::map<std::string, std::vector<float>> mtoon_v0(const tinygltf::Value& props)
 class MaterialTable {
 public:
     MaterialTable(const tinygltf::Model& model, const AccessorReader& reader, const std::string& path, Mesh& mesh)
-        : model_(model), reader_(reader), path_(path), mesh_(mesh), images_(model.images.size()), tried_(model.images.size(), 0),
+        : model_(model),
+          reader_(reader),
+          path_(path),
+          mesh_(mesh),
+          images_(model.images.size()),
+          tried_(model.images.size(), 0),
           index_(model.materials.size() + 1, kNone) {
         const auto vrm = model.extensions.find("VRM");
         if (vrm != model.extensions.end() && vrm->second.IsObject() && vrm->second.Has("materialProperties")) {
@@ -624,10 +671,12 @@ public:
     // Mesh material index for glTF material `gltf` (-1 or out of range: the default material,
     // base colour 1 as section 3.9.6 defines).
     uint32_t index(int gltf) {
-        const size_t slot = gltf >= 0 && size_t(gltf) < model_.materials.size() ? size_t(gltf) : model_.materials.size();
+        const size_t slot =
+            gltf >= 0 && size_t(gltf) < model_.materials.size() ? size_t(gltf) : model_.materials.size();
         if (index_[slot] == kNone) {
             index_[slot] = uint32_t(mesh_.materials.size());
-            mesh_.materials.push_back(slot == model_.materials.size() ? Material{"default", glm::vec3(1.0f)} : build(slot));
+            mesh_.materials.push_back(slot == model_.materials.size() ? Material{"default", glm::vec3(1.0f)}
+                                                                      : build(slot));
         }
         return index_[slot];
     }
@@ -646,11 +695,13 @@ private:
         Material m;
         m.name = g.name.empty() ? "material " + std::to_string(i) : g.name;
         const std::vector<double>& f = g.pbrMetallicRoughness.baseColorFactor;  // linear RGBA
-        for (size_t k = 0; k < 3 && k < f.size(); ++k) m.diffuse[int(k)] = std::isfinite(f[k]) ? std::clamp(float(f[k]), 0.0f, 1.0f) : 1.0f;
+        for (size_t k = 0; k < 3 && k < f.size(); ++k)
+            m.diffuse[int(k)] = std::isfinite(f[k]) ? std::clamp(float(f[k]), 0.0f, 1.0f) : 1.0f;
         if (f.size() < 3) m.diffuse = glm::vec3(1.0f);
         int texture = g.pbrMetallicRoughness.baseColorTexture.index;
         if (texture >= 0 && g.pbrMetallicRoughness.baseColorTexture.extensions.count("KHR_texture_transform"))
-            mesh_.warnings.push_back(path_ + ": material '" + one_line(m.name) + "' uses KHR_texture_transform, which is ignored");
+            mesh_.warnings.push_back(path_ + ": material '" + one_line(m.name) +
+                                     "' uses KHR_texture_transform, which is ignored");
 
         const auto v1 = g.extensions.find("VRMC_materials_mtoon");
         if (v1 != g.extensions.end()) {
@@ -665,7 +716,8 @@ private:
                 const tinygltf::Value& v = props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
                 std::vector<float> c = gamma_decode(numbers(v, "_Color", {1, 1, 1}));
                 m.diffuse = glm::clamp(glm::vec3(c[0], c[1], c[2]), 0.0f, 1.0f);
-                int main = texture_property(props.Has("textureProperties") ? props.Get("textureProperties") : props, "_MainTex");
+                int main = texture_property(props.Has("textureProperties") ? props.Get("textureProperties") : props,
+                                            "_MainTex");
                 if (main >= 0) texture = main;
                 if (shader == "VRM/MToon") {
                     m.mtoon = mtoon_v0(props);
@@ -681,8 +733,8 @@ private:
 
     std::shared_ptr<const Texture> texture_of(int texture, const std::string& material) {
         if (size_t(texture) >= model_.textures.size()) {
-            mesh_.warnings.push_back(path_ + ": material '" + one_line(material) + "' refers to texture " + std::to_string(texture) +
-                                     ", which does not exist; using the base colour");
+            mesh_.warnings.push_back(path_ + ": material '" + one_line(material) + "' refers to texture " +
+                                     std::to_string(texture) + ", which does not exist; using the base colour");
             return nullptr;
         }
         const int image = model_.textures[size_t(texture)].source;
@@ -709,8 +761,10 @@ private:
                 problem = "bufferView " + std::to_string(image.bufferView) + " does not exist";
             } else {
                 try {
-                    const unsigned char* bytes = reader_.buffer_view_bytes(image.bufferView, "image " + std::to_string(i));
-                    texture = decode_texture(bytes, model_.bufferViews[size_t(image.bufferView)].byteLength, source, problem);
+                    const unsigned char* bytes =
+                        reader_.buffer_view_bytes(image.bufferView, "image " + std::to_string(i));
+                    texture =
+                        decode_texture(bytes, model_.bufferViews[size_t(image.bufferView)].byteLength, source, problem);
                 } catch (const InputError& e) {  // a bad image range costs the texture, not the mesh
                     problem = std::string(e.what()).substr(path_.size() + 2);
                 }
@@ -719,8 +773,8 @@ private:
             texture = decode_texture(image.image.data(), image.image.size(), source, problem);
         } else if (!image.uri.empty()) {
             std::filesystem::path dir = std::filesystem::path(path_).parent_path();
-            return load_texture_or_warn(path_, percent_decode(image.uri), {dir.empty() ? std::filesystem::path(".") : dir},
-                                        mesh_.warnings);
+            return load_texture_or_warn(path_, percent_decode(image.uri),
+                                        {dir.empty() ? std::filesystem::path(".") : dir}, mesh_.warnings);
         } else {
             problem = "no image data";
         }
@@ -757,15 +811,16 @@ public:
     void finish() {
         if (!normals_complete_) mesh_.normals.clear();
         if (skipped_ > 0)
-            mesh_.warnings.push_back(path_ + ": " + std::to_string(skipped_) + " point or line primitive" + (skipped_ > 1 ? "s" : "") +
-                                     " skipped (only triangles are drawn)");
+            mesh_.warnings.push_back(path_ + ": " + std::to_string(skipped_) + " point or line primitive" +
+                                     (skipped_ > 1 ? "s" : "") + " skipped (only triangles are drawn)");
     }
     size_t skipped() const { return skipped_; }
 
 private:
     void add_primitive(const tinygltf::Primitive& prim, const glm::dmat4& transform, const std::string& where) {
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             ++skipped_;
             return;
         }
@@ -790,7 +845,8 @@ private:
             for (size_t i = 0; i < n; ++i) corners[i] = uint32_t(i);
         }
         const size_t base = mesh_.positions.size();
-        if (n > kMaxVertices - base) reader_.fail("more than " + std::to_string(kMaxVertices) + " vertices in the scene");
+        if (n > kMaxVertices - base)
+            reader_.fail("more than " + std::to_string(kMaxVertices) + " vertices in the scene");
 
         // Triangles (section 3.7.2.1 gives the strip and fan orders); a mirroring transform
         // swaps two corners so the front face stays counter-clockwise.
@@ -801,11 +857,12 @@ private:
         };
         const size_t m = corners.size();
         if (mode == TINYGLTF_MODE_TRIANGLES) {
-            if (m % 3 != 0) mesh_.warnings.push_back(path_ + ": " + where + " has " + std::to_string(m) + " indices, not a multiple of 3; the rest is ignored");
+            if (m % 3 != 0)
+                mesh_.warnings.push_back(path_ + ": " + where + " has " + std::to_string(m) +
+                                         " indices, not a multiple of 3; the rest is ignored");
             for (size_t i = 0; i + 2 < m; i += 3) emit(corners[i], corners[i + 1], corners[i + 2]);
         } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-            for (size_t i = 0; i + 2 < m; ++i)
-                emit(corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]);
+            for (size_t i = 0; i + 2 < m; ++i) emit(corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]);
         } else {
             for (size_t i = 1; i + 1 < m; ++i) emit(corners[i], corners[i + 1], corners[0]);
         }
@@ -819,13 +876,14 @@ private:
         if (normal >= 0) nrm = reader_.floats(normal, "NORMAL of " + where, {3}, comps);
         const int uv_set = materials_.uv_set(prim.material);
         const int texcoord = attribute("TEXCOORD_" + std::to_string(uv_set));
-        if (texcoord >= 0) uv = reader_.floats(texcoord, "TEXCOORD_" + std::to_string(uv_set) + " of " + where, {2}, comps);
+        if (texcoord >= 0)
+            uv = reader_.floats(texcoord, "TEXCOORD_" + std::to_string(uv_set) + " of " + where, {2}, comps);
         const int color = attribute("COLOR_0");
         if (color >= 0) col = reader_.floats(color, "COLOR_0 of " + where, {3, 4}, col_comps);
         auto same_count = [&](const std::vector<float>& a, size_t c, const char* name) {
             if (!a.empty() && a.size() / c != n)
-                reader_.fail(std::string(name) + " of " + where + " has " + std::to_string(a.size() / c) + " elements but POSITION has " +
-                             std::to_string(n));
+                reader_.fail(std::string(name) + " of " + where + " has " + std::to_string(a.size() / c) +
+                             " elements but POSITION has " + std::to_string(n));
         };
         same_count(nrm, 3, "NORMAL");
         same_count(uv, 2, "TEXCOORD");
@@ -866,7 +924,8 @@ private:
         if (!col.empty()) {
             const size_t c = size_t(col_comps);
             for (size_t i = 0; i < n; ++i)
-                mesh_.colors.push_back(glm::clamp(glm::vec3(col[c * i], col[c * i + 1], col[c * i + 2]), 0.0f, 1.0f) * base_colour);
+                mesh_.colors.push_back(glm::clamp(glm::vec3(col[c * i], col[c * i + 1], col[c * i + 2]), 0.0f, 1.0f) *
+                                       base_colour);
         } else if (!mesh_.colors.empty()) {
             mesh_.colors.resize(base + n, base_colour);
         }
@@ -953,7 +1012,8 @@ Mesh read_gltf(const std::string& path) {
     builder.finish();
     if (mesh.triangles.empty()) {
         if (builder.skipped() > 0)
-            throw InputError(path, "no triangles (only point or line primitives: " + std::to_string(builder.skipped()) + " skipped)");
+            throw InputError(path, "no triangles (only point or line primitives: " + std::to_string(builder.skipped()) +
+                                       " skipped)");
         throw InputError(path, "no triangles (the scene has no mesh)");
     }
     return mesh;

@@ -20,10 +20,14 @@ double clean(float v) { return std::isfinite(v) ? std::stod(format_number(v)) : 
 
 nlohmann::json param_json(const ParamSpec& spec, const ParamValue& value) {
     switch (spec.type) {
-        case ParamType::Bool: return value.at(0) != 0.0f;
-        case ParamType::Int: return int(std::lround(value.at(0)));
-        case ParamType::Choice: return format_param_value(spec, value);
-        case ParamType::Float: return clean(value.at(0));
+        case ParamType::Bool:
+            return value.at(0) != 0.0f;
+        case ParamType::Int:
+            return int(std::lround(value.at(0)));
+        case ParamType::Choice:
+            return format_param_value(spec, value);
+        case ParamType::Float:
+            return clean(value.at(0));
         default: {
             nlohmann::json a = nlohmann::json::array();
             for (float v : value) a.push_back(clean(v));
@@ -48,7 +52,8 @@ std::string format_lines_json(const LineDrawing& drawing) {
     for (const LineLayer& layer : drawing.layers) {
         const LineType& type = line_type(layer.settings.type);
         nlohmann::json params = nlohmann::json::object();
-        for (const ParamSpec& spec : type.params) params[spec.name] = param_json(spec, value_or_default(spec, layer.settings.params));
+        for (const ParamSpec& spec : type.params)
+            params[spec.name] = param_json(spec, value_or_default(spec, layer.settings.params));
         const Stroke stroke = stroke_of(layer.settings);
         nlohmann::json paths = nlohmann::json::array();
         for (const LinePath& p : layer.visible) paths.push_back(path_json(p, false));

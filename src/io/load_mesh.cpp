@@ -49,7 +49,8 @@ void validate(Mesh& mesh, const std::string& path) {
         if (!finite(mesh.positions[i]))
             throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
         if (!in_range(mesh.positions[i]))
-            throw InputError(path, "vertex " + std::to_string(i) + " has a coordinate beyond +-1e15 (too large to draw)");
+            throw InputError(path,
+                             "vertex " + std::to_string(i) + " has a coordinate beyond +-1e15 (too large to draw)");
     }
     for (size_t i = 0; i < mesh.colors.size(); ++i)
         if (!finite(mesh.colors[i])) throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite colour");
@@ -168,9 +169,10 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         mesh = io::read_with_assimp(path);
     } else {
         const bool assimp = !io::assimp_extensions().empty();
-        throw InputError(path, (ext.empty() ? std::string("no file extension") : "unknown file extension " + io::quote_token(ext)) +
-                                   " (supported: .obj .stl .ply .off .gltf .glb .vrm" +
-                                   (assimp ? ", and through assimp .fbx .dae .3ds .blend .x and more)" : ")"));
+        throw InputError(
+            path, (ext.empty() ? std::string("no file extension") : "unknown file extension " + io::quote_token(ext)) +
+                      " (supported: .obj .stl .ply .off .gltf .glb .vrm" +
+                      (assimp ? ", and through assimp .fbx .dae .3ds .blend .x and more)" : ")"));
     }
 
     validate(mesh, path);

@@ -38,7 +38,7 @@ struct Prescan {
     size_t positions = 0, texcoords = 0, normals = 0;
     std::vector<uint32_t> corners;  // per face with >= 3 corners, in file order
     uint32_t max_corners = 0;
-    bool has_dropped = false;       // `t` or `vw` lines, which are removed before tinyobj sees them
+    bool has_dropped = false;          // `t` or `vw` lines, which are removed before tinyobj sees them
     std::vector<std::string> mtllibs;  // as named on `mtllib` lines, for finding their textures
 };
 
@@ -103,7 +103,8 @@ Prescan prescan(std::string_view text, const std::string& path) {
             ++s.texcoords;
         } else if (key == "f" || key == "l" || key == "p") {
             uint32_t n = 0;
-            for (std::string_view tok = in.token_on_line(); !tok.empty(); tok = in.token_on_line(), ++n) check_corner(tok);
+            for (std::string_view tok = in.token_on_line(); !tok.empty(); tok = in.token_on_line(), ++n)
+                check_corner(tok);
             if (key == "f" && n >= 3) {
                 s.corners.push_back(n);
                 s.max_corners = std::max(s.max_corners, n);
@@ -127,9 +128,9 @@ Prescan prescan(std::string_view text, const std::string& path) {
     static const char* what[3] = {"vertex", "texture coordinate", "normal"};
     for (int k = 0; k < 3; ++k)
         if (uint64_t(max_ref[k].max_positive) > counts[k])
-            throw InputError(path, std::string("face refers to ") + what[k] + " " + std::to_string(max_ref[k].max_positive) +
-                                       " but the file has only " + std::to_string(counts[k]) + " at line " +
-                                       std::to_string(max_ref[k].line));
+            throw InputError(path, std::string("face refers to ") + what[k] + " " +
+                                       std::to_string(max_ref[k].max_positive) + " but the file has only " +
+                                       std::to_string(counts[k]) + " at line " + std::to_string(max_ref[k].line));
     if (s.positions > std::numeric_limits<int>::max() / 3) throw InputError(path, "too many vertices for an OBJ file");
     return s;
 }
@@ -169,8 +170,8 @@ void check_exponents(std::string_view text, const std::string& path, const std::
             const size_t first = j;
             while (j < text.size() && digit(text[j])) ++j;
             if (j - first >= 10)
-                throw InputError(path, where + "number with a " + std::to_string(j - first) + "-digit exponent at line " +
-                                           std::to_string(line));
+                throw InputError(path, where + "number with a " + std::to_string(j - first) +
+                                           "-digit exponent at line " + std::to_string(line));
         }
     }
 }
@@ -181,8 +182,8 @@ void check_exponents(std::string_view text, const std::string& path, const std::
 class MtlReader : public tinyobj::MaterialReader {
 public:
     MtlReader(std::string obj_path, std::string dir) : obj_path_(std::move(obj_path)), dir_(std::move(dir)) {}
-    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
-                    std::string* warn, std::string* err) override {
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warn, std::string* err) override {
         const std::string path = dir_.empty() ? name : dir_ + "/" + name;
         std::error_code ec;
         if (!std::filesystem::exists(path, ec) || std::filesystem::is_empty(path, ec)) {
@@ -301,7 +302,8 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
         size_t sum = 0;
         for (uint32_t c : scan.corners) sum += c;
         bool same_face_count = face_total == scan.corners.size();
-        if (sum != corner_total || !same_face_count) throw InputError(path, "face corner counts do not match the parsed faces");
+        if (sum != corner_total || !same_face_count)
+            throw InputError(path, "face corner counts do not match the parsed faces");
     }
 
     Mesh mesh;
@@ -325,7 +327,7 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
     constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
     const bool keyed = all_normals || all_uvs;
     std::vector<uint32_t> first(keyed ? nv : 0, kNone), next;  // chains of vertices sharing a position
-    std::vector<tinyobj::index_t> key;                        // the corner each vertex was made from
+    std::vector<tinyobj::index_t> key;                         // the corner each vertex was made from
     if (!keyed)
         for (size_t v = 0; v < nv; ++v) add_vertex({int(v), -1, -1});
     auto vertex_of = [&](const tinyobj::index_t& c) -> uint32_t {
@@ -333,7 +335,8 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
         uint32_t prev = kNone;
         for (uint32_t cur = first[size_t(c.vertex_index)]; cur != kNone; prev = cur, cur = next[cur]) {
             const tinyobj::index_t& k = key[cur];
-            if ((!all_normals || k.normal_index == c.normal_index) && (!all_uvs || k.texcoord_index == c.texcoord_index))
+            if ((!all_normals || k.normal_index == c.normal_index) &&
+                (!all_uvs || k.texcoord_index == c.texcoord_index))
                 return cur;
         }
         uint32_t id = add_vertex(c);
@@ -383,7 +386,8 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
         size_t corner = 0;
         for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face_index) {
             size_t n = triangulate ? shape.mesh.num_face_vertices[f] : scan.corners[face_index];
-            if (n < 3 || corner + n > idx.size()) throw InputError(path, "face corner counts do not match the parsed faces");
+            if (n < 3 || corner + n > idx.size())
+                throw InputError(path, "face corner counts do not match the parsed faces");
             uint32_t material = kNone;
             if (any_material) {
                 int id = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;

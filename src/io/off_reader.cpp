@@ -27,16 +27,19 @@ Mesh read_off(const std::string& path) {
     }
     uint64_t nv = 0, nf = 0;
     if (tok.empty()) in.fail("unexpected end of file before the vertex count");
-    if (!parse_number(tok, nv)) in.fail("not an OFF file (expected 'OFF' or a vertex count but found " + quote_token(tok) + ")");
+    if (!parse_number(tok, nv))
+        in.fail("not an OFF file (expected 'OFF' or a vertex count but found " + quote_token(tok) + ")");
     nf = in.number_on_line<uint64_t>("a face count");
     if (!in.at_line_end()) in.number<uint64_t>("an edge count");  // unused, often absent
     // Each number needs at least two bytes (digit and separator): bounds the counts before
     // anything is allocated.
     size_t room = in.remaining() / 2 + 1;
     if (nv > room / (has_normal ? 6 : 3) || nv > UINT32_MAX)
-        in.fail("header claims " + std::to_string(nv) + " vertices but file has only " + std::to_string(in.remaining()) + " bytes");
+        in.fail("header claims " + std::to_string(nv) + " vertices but file has only " +
+                std::to_string(in.remaining()) + " bytes");
     if (nf > room)
-        in.fail("header claims " + std::to_string(nf) + " faces but file has only " + std::to_string(in.remaining()) + " bytes");
+        in.fail("header claims " + std::to_string(nf) + " faces but file has only " + std::to_string(in.remaining()) +
+                " bytes");
 
     Mesh mesh;
     mesh.positions.resize(nv);
@@ -56,7 +59,8 @@ Mesh read_off(const std::string& path) {
         float extra[8];
         int n = 0;
         for (std::string_view t = in.token_on_line(); !t.empty() && n < 8; t = in.token_on_line(), ++n)
-            if (!parse_number(t, extra[n])) in.fail("expected a vertex colour or texture coordinate but found " + quote_token(t));
+            if (!parse_number(t, extra[n]))
+                in.fail("expected a vertex colour or texture coordinate but found " + quote_token(t));
         if (has_uv) {
             if (n < 2) in.fail("vertex " + std::to_string(i) + " lacks texture coordinates");
             mesh.uvs[i] = {extra[n - 2], extra[n - 1]};
@@ -86,7 +90,8 @@ Mesh read_off(const std::string& path) {
                         " but there are only " + std::to_string(nv) + " vertices");
             polygon.push_back(uint32_t(idx));
         }
-        for (size_t j = 1; j + 1 < polygon.size(); ++j) mesh.triangles.emplace_back(polygon[0], polygon[j], polygon[j + 1]);
+        for (size_t j = 1; j + 1 < polygon.size(); ++j)
+            mesh.triangles.emplace_back(polygon[0], polygon[j], polygon[j + 1]);
         if (!in.at_line_end()) in.skip_line();  // optional face colour
     }
     return mesh;

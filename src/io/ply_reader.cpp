@@ -28,12 +28,10 @@ bool is_integer(Scalar t) { return t != Scalar::F32 && t != Scalar::F64; }
 
 bool parse_scalar(std::string_view name, Scalar& t) {
     static constexpr std::pair<std::string_view, Scalar> names[] = {
-        {"char", Scalar::I8},    {"int8", Scalar::I8},     {"uchar", Scalar::U8},
-        {"uint8", Scalar::U8},   {"short", Scalar::I16},   {"int16", Scalar::I16},
-        {"ushort", Scalar::U16}, {"uint16", Scalar::U16},  {"int", Scalar::I32},
-        {"int32", Scalar::I32},  {"uint", Scalar::U32},    {"uint32", Scalar::U32},
-        {"float", Scalar::F32},  {"float32", Scalar::F32}, {"double", Scalar::F64},
-        {"float64", Scalar::F64}};
+        {"char", Scalar::I8},   {"int8", Scalar::I8},     {"uchar", Scalar::U8},   {"uint8", Scalar::U8},
+        {"short", Scalar::I16}, {"int16", Scalar::I16},   {"ushort", Scalar::U16}, {"uint16", Scalar::U16},
+        {"int", Scalar::I32},   {"int32", Scalar::I32},   {"uint", Scalar::U32},   {"uint32", Scalar::U32},
+        {"float", Scalar::F32}, {"float32", Scalar::F32}, {"double", Scalar::F64}, {"float64", Scalar::F64}};
     for (auto [n, s] : names)
         if (n == name) return t = s, true;
     return false;
@@ -80,8 +78,8 @@ enum class Encoding { Ascii, LittleEndian, BigEndian };
 struct Header {
     Encoding encoding = Encoding::Ascii;
     std::vector<Element> elements;
-    size_t data_offset = 0;  // first byte after "end_header\n"
-    size_t data_line = 0;    // line number of that byte (ascii)
+    size_t data_offset = 0;    // first byte after "end_header\n"
+    size_t data_line = 0;      // line number of that byte (ascii)
     std::string texture_file;  // `comment TextureFile NAME` (MeshLab, Blender), relative to the file
 };
 
@@ -110,15 +108,20 @@ Header parse_header(std::string_view text, const std::string& path) {
         TextScanner in(raw, path, ++line);
         pos = nl + 1;
         std::string_view key = in.token();
-        if (key == "comment" && in.token() == "TextureFile" && h.texture_file.empty()) h.texture_file = texture_file_of(raw);
+        if (key == "comment" && in.token() == "TextureFile" && h.texture_file.empty())
+            h.texture_file = texture_file_of(raw);
         if (line == 1 || key.empty() || key == "comment" || key == "obj_info") continue;
         if (key == "end_header") break;
         if (key == "format") {
             std::string_view f = in.token();
-            if (f == "ascii") h.encoding = Encoding::Ascii;
-            else if (f == "binary_little_endian") h.encoding = Encoding::LittleEndian;
-            else if (f == "binary_big_endian") h.encoding = Encoding::BigEndian;
-            else in.fail("unknown PLY format " + quote_token(f));
+            if (f == "ascii")
+                h.encoding = Encoding::Ascii;
+            else if (f == "binary_little_endian")
+                h.encoding = Encoding::LittleEndian;
+            else if (f == "binary_big_endian")
+                h.encoding = Encoding::BigEndian;
+            else
+                in.fail("unknown PLY format " + quote_token(f));
             have_format = true;
         } else if (key == "element") {
             Element e;
@@ -162,14 +165,22 @@ public:
     double scalar(Scalar t) {
         need(size_of(t));
         switch (t) {
-            case Scalar::I8: return get<int8_t>();
-            case Scalar::U8: return get<uint8_t>();
-            case Scalar::I16: return get<int16_t>();
-            case Scalar::U16: return get<uint16_t>();
-            case Scalar::I32: return get<int32_t>();
-            case Scalar::U32: return get<uint32_t>();
-            case Scalar::F32: return get<float>();
-            case Scalar::F64: return get<double>();
+            case Scalar::I8:
+                return get<int8_t>();
+            case Scalar::U8:
+                return get<uint8_t>();
+            case Scalar::I16:
+                return get<int16_t>();
+            case Scalar::U16:
+                return get<uint16_t>();
+            case Scalar::I32:
+                return get<int32_t>();
+            case Scalar::U32:
+                return get<uint32_t>();
+            case Scalar::F32:
+                return get<float>();
+            case Scalar::F64:
+                return get<double>();
         }
         return 0;
     }
@@ -177,7 +188,8 @@ public:
     int64_t integer(Scalar t) { return int64_t(scalar(t)); }
     // Bytes a list of n items of type t needs; fails early so n cannot drive an allocation.
     void check_list(uint64_t n, Scalar t) {
-        if (n > size_t(end_ - p_) / size_of(t)) fail("list claims " + std::to_string(n) + " items but the file ends first (truncated?)");
+        if (n > size_t(end_ - p_) / size_of(t))
+            fail("list claims " + std::to_string(n) + " items but the file ends first (truncated?)");
     }
     void skip(Scalar t, uint64_t n = 1) {
         check_list(n, t);
@@ -197,12 +209,16 @@ private:
     T get() {
         T v;
         if constexpr (Swap && sizeof(T) > 1) {
-            using U = std::conditional_t<sizeof(T) == 2, uint16_t, std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>>;
+            using U =
+                std::conditional_t<sizeof(T) == 2, uint16_t, std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>>;
             U u;
             std::memcpy(&u, p_, sizeof u);
-            if constexpr (sizeof(T) == 2) u = __builtin_bswap16(u);
-            else if constexpr (sizeof(T) == 4) u = __builtin_bswap32(u);
-            else u = __builtin_bswap64(u);
+            if constexpr (sizeof(T) == 2)
+                u = __builtin_bswap16(u);
+            else if constexpr (sizeof(T) == 4)
+                u = __builtin_bswap32(u);
+            else
+                u = __builtin_bswap64(u);
             std::memcpy(&v, &u, sizeof v);
         } else {
             std::memcpy(&v, p_, sizeof v);
@@ -223,7 +239,8 @@ public:
     double scalar(Scalar) { return in_.number<double>("a PLY property value"); }
     int64_t integer(Scalar) { return in_.number<int64_t>("an integer (list count or index)"); }
     void check_list(uint64_t n, Scalar) {
-        if (n > in_.remaining()) fail("list claims " + std::to_string(n) + " items but the file ends first (truncated?)");
+        if (n > in_.remaining())
+            fail("list claims " + std::to_string(n) + " items but the file ends first (truncated?)");
     }
     void skip(Scalar t, uint64_t n = 1) {
         check_list(n, t);
@@ -285,10 +302,14 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
                 roles.push_back(r);
                 bool colour = r == kR || r == kG || r == kB;
                 float s = 1.0f;
-                if (colour && p.type == Scalar::U16) s = 1.0f / 65535.0f;
-                else if (colour && p.type == Scalar::I16) s = 1.0f / 32767.0f;
-                else if (colour && p.type == Scalar::I8) s = 1.0f / 127.0f;
-                else if (colour && is_integer(p.type)) s = 1.0f / 255.0f;
+                if (colour && p.type == Scalar::U16)
+                    s = 1.0f / 65535.0f;
+                else if (colour && p.type == Scalar::I16)
+                    s = 1.0f / 32767.0f;
+                else if (colour && p.type == Scalar::I8)
+                    s = 1.0f / 127.0f;
+                else if (colour && is_integer(p.type))
+                    s = 1.0f / 255.0f;
                 scale.push_back(s);
             }
             if (!seen[kX] || !seen[kY] || !seen[kZ]) src.fail("PLY vertex element lacks x, y or z");
@@ -303,8 +324,10 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
             float v[kRoleCount] = {};
             for (size_t i = 0; i < n; ++i) {
                 for (size_t k = 0; k < roles.size(); ++k) {
-                    if (roles[k] == kSkip) skip_property(e.properties[k]);
-                    else v[roles[k]] = to_float(src.scalar(e.properties[k].type)) * scale[k];
+                    if (roles[k] == kSkip)
+                        skip_property(e.properties[k]);
+                    else
+                        v[roles[k]] = to_float(src.scalar(e.properties[k].type)) * scale[k];
                 }
                 if (!std::isfinite(v[kX]) || !std::isfinite(v[kY]) || !std::isfinite(v[kZ]))
                     src.fail("vertex " + std::to_string(i) + " has a non-finite coordinate");
@@ -334,7 +357,8 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
                         continue;
                     }
                     int64_t n = src.integer(p.count_type);
-                    if (n < 0) src.fail("face " + std::to_string(f) + " has negative vertex count " + std::to_string(n));
+                    if (n < 0)
+                        src.fail("face " + std::to_string(f) + " has negative vertex count " + std::to_string(n));
                     src.check_list(uint64_t(n), p.type);
                     polygon.clear();
                     for (int64_t j = 0; j < n; ++j) {

@@ -7,10 +7,10 @@
 
 namespace inkshade::io {
 
-Mesh read_obj(const std::string& path);  // + MTL Kd and map_Kd, polygons fan-triangulated, negative indices
-Mesh read_stl(const std::string& path);  // ASCII and binary; a triangle soup (3 vertices per face)
-Mesh read_ply(const std::string& path);  // ascii, binary_little_endian, binary_big_endian
-Mesh read_off(const std::string& path);  // OFF, with optional vertex colours (COFF)
+Mesh read_obj(const std::string& path);   // + MTL Kd and map_Kd, polygons fan-triangulated, negative indices
+Mesh read_stl(const std::string& path);   // ASCII and binary; a triangle soup (3 vertices per face)
+Mesh read_ply(const std::string& path);   // ascii, binary_little_endian, binary_big_endian
+Mesh read_off(const std::string& path);   // OFF, with optional vertex colours (COFF)
 Mesh read_gltf(const std::string& path);  // glTF 2.0 .gltf, GLB .glb and VRM .vrm (default scene, flattened)
 
 // Any other format assimp reads (FBX, COLLADA .dae, 3DS, .blend, .x, ...), when Inkshade is
@@ -18,7 +18,7 @@ Mesh read_gltf(const std::string& path);  // glTF 2.0 .gltf, GLB .glb and VRM .v
 // throws. The scene is flattened with its node transforms; base colours and textures as for OBJ.
 Mesh read_with_assimp(const std::string& path);
 bool assimp_reads(const std::string& extension);  // ".fbx": true when assimp has an importer for it
-std::string assimp_extensions();                   // ".3ds .ac ...", space-separated; empty without assimp
+std::string assimp_extensions();                  // ".3ds .ac ...", space-separated; empty without assimp
 
 // read_obj that also reports whether the file is a soup anyway: exporters that write each
 // face's corners as fresh `v` lines repeat most positions exactly, and need welding too.

@@ -26,15 +26,15 @@ bool iequals(std::string_view a, std::string_view b) {
 
 Mesh read_binary(const FileBytes& file, const std::string& path) {
     if (file.size() < kHeaderBytes)
-        throw InputError(path, "truncated binary STL: file has " + std::to_string(file.size()) +
-                                   " bytes but the header needs 84");
+        throw InputError(
+            path, "truncated binary STL: file has " + std::to_string(file.size()) + " bytes but the header needs 84");
     uint32_t count = 0;
     std::memcpy(&count, file.data() + 80, 4);
     size_t room = (file.size() - kHeaderBytes) / kRecordBytes;
     // Checked before allocating: a corrupt count must not reserve gigabytes.
     if (count > room)
-        throw InputError(path, "header claims " + std::to_string(count) +
-                                   " triangles but file has room for " + std::to_string(room));
+        throw InputError(path, "header claims " + std::to_string(count) + " triangles but file has room for " +
+                                   std::to_string(room));
     Mesh mesh;
     mesh.positions.resize(size_t(count) * 3);
     mesh.triangles.resize(count);
@@ -53,8 +53,7 @@ Mesh read_ascii(const FileBytes& file, const std::string& path) {
         std::string_view tok = in.token();
         if (tok.empty())
             in.fail("unexpected end of file (truncated STL?) where '" + std::string(keyword) + "' was expected");
-        if (!iequals(tok, keyword))
-            in.fail("expected '" + std::string(keyword) + "' but found " + quote_token(tok));
+        if (!iequals(tok, keyword)) in.fail("expected '" + std::string(keyword) + "' but found " + quote_token(tok));
     };
     for (;;) {
         expect("solid");
@@ -85,7 +84,7 @@ Mesh read_ascii(const FileBytes& file, const std::string& path) {
             for (uint32_t k = 1; k + 1 < n; ++k) mesh.triangles.emplace_back(first, first + k, first + k + 1);
             expect("endfacet");
         }
-        in.skip_line();  // "endsolid name"
+        in.skip_line();                // "endsolid name"
         if (in.at_end()) return mesh;  // several solids may follow each other
     }
 }
@@ -103,8 +102,8 @@ Mesh read_stl(const std::string& path) {
         if (file.size() == kHeaderBytes + kRecordBytes * uint64_t(count)) return read_binary(file, path);
     }
     size_t start = text.find_first_not_of(" \t\r\n");
-    bool says_solid = start != std::string_view::npos && text.size() - start >= 5 &&
-                      iequals(text.substr(start, 5), "solid");
+    bool says_solid =
+        start != std::string_view::npos && text.size() - start >= 5 && iequals(text.substr(start, 5), "solid");
     // A NUL or other control byte early on means a binary file with a "solid..." header
     // whose size does not match (trailing bytes, or truncated).
     bool looks_text = true;

@@ -51,11 +51,20 @@ std::string xml_escape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -121,9 +130,8 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
     const Stroke stroke = stroke_of(layer.settings);
     const bool taper = line_param(layer.settings, "taper").at(0) != 0.0f;
     out += "<g id=\"" + xml_escape(id) + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + xml_escape(id) +
-           "\" fill=\"none\" stroke=\"" + hex_color(stroke.color) + "\" stroke-opacity=\"" +
-           number(stroke.opacity) + "\" stroke-width=\"" + number(stroke.width) +
-           "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
+           "\" fill=\"none\" stroke=\"" + hex_color(stroke.color) + "\" stroke-opacity=\"" + number(stroke.opacity) +
+           "\" stroke-width=\"" + number(stroke.width) + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
     if (hidden) {
         // Dashes scale with the stroke so thick hidden lines still read as dashed.
         const double w = std::max(double(stroke.width), 1.0);
@@ -140,9 +148,10 @@ std::string format_svg(const LineDrawing& drawing, glm::vec4 background) {
     const std::string w = std::to_string(drawing.width), h = std::to_string(drawing.height);
     std::string out;
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" "
-           "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" version=\"1.1\" width=\"" +
-           w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+    out +=
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+        "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" version=\"1.1\" width=\"" +
+        w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
     if (background.a > 0.0f)
         out += "<rect id=\"background\" x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
                hex_color(glm::vec3(background)) + "\"" +

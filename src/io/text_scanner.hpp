@@ -69,8 +69,11 @@ class TextScanner {
 public:
     // comment: a character that starts a comment running to the end of the line ('\0': none).
     TextScanner(std::string_view text, std::string path, size_t first_line = 1, char comment = '\0')
-        : p_(text.data()), end_(text.data() + text.size()), path_(std::move(path)),
-          line_(first_line), comment_(comment) {}
+        : p_(text.data()),
+          end_(text.data() + text.size()),
+          path_(std::move(path)),
+          line_(first_line),
+          comment_(comment) {}
 
     // Next token on the current line; empty at the end of the line (which is not consumed).
     std::string_view token_on_line() {
@@ -117,8 +120,7 @@ public:
         std::string_view tok = token();
         T value{};
         if (tok.empty()) fail(std::string("unexpected end of file while reading ") + what);
-        if (!parse_number(tok, value))
-            fail(std::string("expected ") + what + " but found " + quote_token(tok));
+        if (!parse_number(tok, value)) fail(std::string("expected ") + what + " but found " + quote_token(tok));
         return value;
     }
     // As number() but the token must be on the current line.

@@ -32,10 +32,11 @@ bool png_chunks_fit(const unsigned char* bytes, size_t size, std::string& proble
     static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     if (size < 8 || std::memcmp(bytes, kSignature, 8) != 0) return true;  // not PNG
     for (size_t pos = 8; pos + 8 <= size;) {
-        const uint32_t length = uint32_t(bytes[pos]) << 24 | uint32_t(bytes[pos + 1]) << 16 | uint32_t(bytes[pos + 2]) << 8 | bytes[pos + 3];
+        const uint32_t length = uint32_t(bytes[pos]) << 24 | uint32_t(bytes[pos + 1]) << 16 |
+                                uint32_t(bytes[pos + 2]) << 8 | bytes[pos + 3];
         if (length > size - pos - 8 || size - pos - 8 - length < 4) {  // data and CRC
-            problem = "corrupt image data (PNG chunk of " + std::to_string(length) + " bytes at offset " + std::to_string(pos) +
-                      " runs past the end of the " + std::to_string(size) + "-byte image)";
+            problem = "corrupt image data (PNG chunk of " + std::to_string(length) + " bytes at offset " +
+                      std::to_string(pos) + " runs past the end of the " + std::to_string(size) + "-byte image)";
             return false;
         }
         if (std::memcmp(bytes + pos + 4, "IEND", 4) == 0) break;
@@ -74,8 +75,8 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
     // The decoder allocates what the header claims before it finds the data missing: a claim
     // the encoded bytes cannot back is refused before anything is allocated.
     if (uint64_t(w) * uint64_t(h) > uint64_t(size) * kMaxPixelsPerEncodedByte) {
-        problem = std::to_string(w) + " x " + std::to_string(h) + " pixels cannot be encoded in " + std::to_string(size) +
-                  " bytes (corrupt header?)";
+        problem = std::to_string(w) + " x " + std::to_string(h) + " pixels cannot be encoded in " +
+                  std::to_string(size) + " bytes (corrupt header?)";
         return nullptr;
     }
     if (!png_chunks_fit(bytes, size, problem)) return nullptr;

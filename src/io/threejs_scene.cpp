@@ -124,10 +124,11 @@ struct MaterialKind {
     const char* three_name;
     const char* model;
 };
-constexpr MaterialKind kMaterials[] = {
-    {"MeshBasicMaterial", "threejs-basic"}, {"MeshLambertMaterial", "threejs-lambert"},
-    {"MeshPhongMaterial", "threejs-phong"}, {"MeshToonMaterial", "threejs-toon"},
-    {"MeshNormalMaterial", "threejs-normal"}};
+constexpr MaterialKind kMaterials[] = {{"MeshBasicMaterial", "threejs-basic"},
+                                       {"MeshLambertMaterial", "threejs-lambert"},
+                                       {"MeshPhongMaterial", "threejs-phong"},
+                                       {"MeshToonMaterial", "threejs-toon"},
+                                       {"MeshNormalMaterial", "threejs-normal"}};
 
 void read_material(const Reader& r, const json& m, ThreejsScene& scene) {
     if (!m.is_object()) r.fail("material", "expected an object with a \"type\"");
@@ -143,13 +144,16 @@ void read_material(const Reader& r, const json& m, ThreejsScene& scene) {
     }
     scene.model = kind->model;
     const bool lit = type != "MeshBasicMaterial" && type != "MeshNormalMaterial";
-    if (type == "MeshNormalMaterial") r.only_keys(m, "material", {"type", "name"});
-    else if (type == "MeshBasicMaterial") r.only_keys(m, "material", {"type", "name", "color"});
+    if (type == "MeshNormalMaterial")
+        r.only_keys(m, "material", {"type", "name"});
+    else if (type == "MeshBasicMaterial")
+        r.only_keys(m, "material", {"type", "name", "color"});
     else if (type == "MeshPhongMaterial")
         r.only_keys(m, "material", {"type", "name", "color", "emissive", "emissiveIntensity", "specular", "shininess"});
     else if (type == "MeshToonMaterial")
         r.only_keys(m, "material", {"type", "name", "color", "emissive", "emissiveIntensity", "gradientMap"});
-    else r.only_keys(m, "material", {"type", "name", "color", "emissive", "emissiveIntensity"});
+    else
+        r.only_keys(m, "material", {"type", "name", "color", "emissive", "emissiveIntensity"});
 
     auto set = [&](const std::string& param, ParamValue v, const std::string& field) {
         scene.params[param] = std::move(v);
@@ -168,10 +172,12 @@ void read_material(const Reader& r, const json& m, ThreejsScene& scene) {
         set("emissive-intensity", {r.number(m["emissiveIntensity"], "material.emissiveIntensity")},
             "material.emissiveIntensity");
     srgb_colour("specular", "specular");
-    if (m.contains("shininess")) set("shininess", {r.number(m["shininess"], "material.shininess")}, "material.shininess");
+    if (m.contains("shininess"))
+        set("shininess", {r.number(m["shininess"], "material.shininess")}, "material.shininess");
     if (m.contains("gradientMap") && !m["gradientMap"].is_null()) {
         const json& g = m["gradientMap"];
-        if (!g.is_array() || g.empty()) r.fail("material.gradientMap", "expected [v0, v1, ...]: texel values 0-1, dark end first");
+        if (!g.is_array() || g.empty())
+            r.fail("material.gradientMap", "expected [v0, v1, ...]: texel values 0-1, dark end first");
         ParamValue texels;
         for (size_t i = 0; i < g.size(); ++i)
             texels.push_back(r.number(g[i], "material.gradientMap[" + std::to_string(i) + "]"));
@@ -189,17 +195,21 @@ void read_lights(const Reader& r, const json& lights, ThreejsScene& scene) {
         const json& l = lights[i];
         if (!l.is_object() || !l.contains("type")) r.fail(field, "expected an object with a \"type\"");
         const std::string type = r.string(l["type"], field + ".type");
-        const glm::vec3 colour = l.contains("color") ? r.colour(l["color"], field + ".color").linear() : glm::vec3(1.0f);
-        const float intensity = l.contains("intensity") ? r.number_at_least(l["intensity"], field + ".intensity", 0.0f) : 1.0f;
+        const glm::vec3 colour =
+            l.contains("color") ? r.colour(l["color"], field + ".color").linear() : glm::vec3(1.0f);
+        const float intensity =
+            l.contains("intensity") ? r.number_at_least(l["intensity"], field + ".intensity", 0.0f) : 1.0f;
         if (type == "AmbientLight") {
             r.only_keys(l, field, {"type", "name", "color", "intensity"});
             ambients.emplace_back(colour, intensity);
             continue;
         }
         if (type != "DirectionalLight" && type != "PointLight")
-            r.fail(field + ".type", "unsupported light '" + type + "' (supported: AmbientLight, DirectionalLight, PointLight)");
+            r.fail(field + ".type",
+                   "unsupported light '" + type + "' (supported: AmbientLight, DirectionalLight, PointLight)");
         if (direct)
-            r.fail(field, "a second direct light: Inkshade renders one DirectionalLight or PointLight (plus ambient light)");
+            r.fail(field,
+                   "a second direct light: Inkshade renders one DirectionalLight or PointLight (plus ambient light)");
         direct = true;
         scene.light_color = colour;
         scene.params["light-intensity"] = {intensity};
@@ -208,14 +218,16 @@ void read_lights(const Reader& r, const json& lights, ThreejsScene& scene) {
             r.only_keys(l, field, {"type", "name", "color", "intensity", "position", "target"});
             scene.light_type = LightType::Directional;
             // three.js: a DirectionalLight starts at Object3D.DEFAULT_UP (0, 1, 0), its target at the origin.
-            scene.light_position = l.contains("position") ? r.vec3(l["position"], field + ".position") : glm::vec3(0, 1, 0);
+            scene.light_position =
+                l.contains("position") ? r.vec3(l["position"], field + ".position") : glm::vec3(0, 1, 0);
             scene.light_target = l.contains("target") ? r.vec3(l["target"], field + ".target") : glm::vec3(0.0f);
             if (glm::length(*scene.light_position - *scene.light_target) == 0.0f)
                 r.fail(field + ".position", "equals the target: the light has no direction");
         } else {
             r.only_keys(l, field, {"type", "name", "color", "intensity", "position", "distance", "decay"});
             scene.light_type = LightType::Point;
-            scene.light_position = l.contains("position") ? r.vec3(l["position"], field + ".position") : glm::vec3(0.0f);
+            scene.light_position =
+                l.contains("position") ? r.vec3(l["position"], field + ".position") : glm::vec3(0.0f);
             scene.light_target = glm::vec3(0.0f);
             if (l.contains("distance")) {
                 scene.params["light-distance"] = {r.number_at_least(l["distance"], field + ".distance", 0.0f)};
@@ -256,7 +268,9 @@ ThreejsCamera read_camera(const Reader& r, const json& c) {
         if (c.contains("fov")) cam.fov_degrees = r.number(c["fov"], "camera.fov");
         if (!(cam.fov_degrees > 0.0f && cam.fov_degrees < 180.0f)) r.fail("camera.fov", "expected degrees in (0, 180)");
     } else if (type == "OrthographicCamera") {
-        r.only_keys(c, "camera", {"type", "name", "left", "right", "top", "bottom", "near", "far", "zoom", "position", "target", "up"});
+        r.only_keys(
+            c, "camera",
+            {"type", "name", "left", "right", "top", "bottom", "near", "far", "zoom", "position", "target", "up"});
         cam.orthographic = true;
         // three.js's defaults: left -1, right 1, top 1, bottom -1.
         const float left = c.contains("left") ? r.number(c["left"], "camera.left") : -1.0f;
@@ -266,8 +280,10 @@ ThreejsCamera read_camera(const Reader& r, const json& c) {
         if (!(right > left)) r.fail("camera.right", "must be greater than left");
         if (!(top > bottom)) r.fail("camera.top", "must be greater than bottom");
         // The view is centred on the target; its width follows the image's aspect.
-        if (std::abs(left + right) > 1e-4f * (right - left)) r.fail("camera.left", "left = -right expected (off-centre views are not supported)");
-        if (std::abs(top + bottom) > 1e-4f * (top - bottom)) r.fail("camera.bottom", "bottom = -top expected (off-centre views are not supported)");
+        if (std::abs(left + right) > 1e-4f * (right - left))
+            r.fail("camera.left", "left = -right expected (off-centre views are not supported)");
+        if (std::abs(top + bottom) > 1e-4f * (top - bottom))
+            r.fail("camera.bottom", "bottom = -top expected (off-centre views are not supported)");
         cam.ortho_height = top - bottom;
         cam.near_plane = 0.1f;
         cam.far_plane = 2000.0f;
@@ -280,7 +296,8 @@ ThreejsCamera read_camera(const Reader& r, const json& c) {
     if (c.contains("target")) cam.target = r.vec3(c["target"], "camera.target");
     if (c.contains("up")) cam.up = r.vec3(c["up"], "camera.up");
     if (glm::length(cam.up) == 0.0f) r.fail("camera.up", "must not be zero");
-    if (glm::length(cam.position - cam.target) == 0.0f) r.fail("camera.target", "equals the position: no view direction");
+    if (glm::length(cam.position - cam.target) == 0.0f)
+        r.fail("camera.target", "equals the position: no view direction");
     if (c.contains("near")) cam.near_plane = r.number(c["near"], "camera.near");
     if (c.contains("far")) cam.far_plane = r.number(c["far"], "camera.far");
     if (!cam.orthographic && !(cam.near_plane > 0.0f)) r.fail("camera.near", "must be greater than 0");
@@ -288,8 +305,10 @@ ThreejsCamera read_camera(const Reader& r, const json& c) {
     if (c.contains("zoom")) {
         const float zoom = r.positive(c["zoom"], "camera.zoom");
         // three.js: fov' = 2 atan(tan(fov / 2) / zoom); an orthographic view shrinks by zoom.
-        if (cam.orthographic) cam.ortho_height /= zoom;
-        else cam.fov_degrees = glm::degrees(2.0f * std::atan(std::tan(glm::radians(0.5f * cam.fov_degrees)) / zoom));
+        if (cam.orthographic)
+            cam.ortho_height /= zoom;
+        else
+            cam.fov_degrees = glm::degrees(2.0f * std::atan(std::tan(glm::radians(0.5f * cam.fov_degrees)) / zoom));
     }
     return cam;
 }
@@ -304,7 +323,8 @@ ThreejsScene parse_threejs_scene(std::string_view text, const std::string& sourc
         root = json::parse(text);
     } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond double (found by fuzzing)
         std::string what = e.what();
-        if (size_t p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);  // drop "[json.exception.x.N]"
+        if (size_t p = what.find("] "); p != std::string::npos)
+            what = what.substr(p + 2);  // drop "[json.exception.x.N]"
         r.fail("", "not valid JSON (" + what + ")");
     }
     r.only_keys(root, "", {"mesh", "material", "lights", "camera", "background", "outline", "size", "antialias"});
@@ -323,7 +343,8 @@ ThreejsScene parse_threejs_scene(std::string_view text, const std::string& sourc
         const json& b = root["background"];
         if (b.is_string() && b.get<std::string>() == "transparent") scene.background = glm::vec4(0.0f);
         // three.js clears with the background converted to the output colour space: sRGB.
-        else scene.background = glm::vec4(r.colour(b, "background").encoded(), 1.0f);
+        else
+            scene.background = glm::vec4(r.colour(b, "background").encoded(), 1.0f);
     }
     if (root.contains("outline")) {
         const json& o = root["outline"];

@@ -26,18 +26,18 @@ struct Frame {
 
     // The scene.
     const BoundingBox& bounds;
-    bool closed = false;           // closed and outward (back faces invisible from outside)
-    bool cull_back_faces = false;  // closed and wholly in front of the near plane (cull_back_faces())
-    LineExtractor& line_extractor; // MeshLineData
-    GpuMesh* mesh = nullptr;       // GpuMesh: null until the upload (MeshUse::OneFrame)
-    FrameTargets& targets;         // Color, ResolvedColor, ShadowMap, GBuffer
-    Resources reads;               // what the planned passes read (PassPlan::reads)
+    bool closed = false;            // closed and outward (back faces invisible from outside)
+    bool cull_back_faces = false;   // closed and wholly in front of the near plane (cull_back_faces())
+    LineExtractor& line_extractor;  // MeshLineData
+    GpuMesh* mesh = nullptr;        // GpuMesh: null until the upload (MeshUse::OneFrame)
+    FrameTargets& targets;          // Color, ResolvedColor, ShadowMap, GBuffer
+    Resources reads;                // what the planned passes read (PassPlan::reads)
 
     // Made during the frame.
-    std::vector<LineSettings> object_lines;  // the style's object-space lines, in order
-    std::optional<LineDrawing> drawing;      // LineDrawing
+    std::vector<LineSettings> object_lines;           // the style's object-space lines, in order
+    std::optional<LineDrawing> drawing;               // LineDrawing
     std::optional<std::vector<float>> vertex_scalar;  // VertexScalar computed before the upload
-    Image image;                              // Image
+    Image image;                                      // Image
 
     // The style's settings of line type `type` (the last when listed twice), or null.
     const LineSettings* line(const std::string& type) const;

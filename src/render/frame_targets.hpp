@@ -14,11 +14,11 @@ namespace inkshade::render {
 
 struct FrameTargets {
     std::unique_ptr<gpu::Framebuffer> color;  // Color and ResolvedColor: the image's size
-    std::unique_ptr<GBuffer> gbuffer;          // GBuffer: the image's size
+    std::unique_ptr<GBuffer> gbuffer;         // GBuffer: the image's size
     // ShadowMap depends only on the mesh and the light: it is kept while both stay (new views of
     // one model under one light, as batch and the viewer render).
     std::unique_ptr<ShadowMap> shadow_map;
-    std::optional<glm::mat4> shadow_light;    // the light view-projection it holds; none: stale
+    std::optional<glm::mat4> shadow_light;  // the light view-projection it holds; none: stale
 
     // The colour target for `options`: kept when its size and samples match.
     gpu::Framebuffer& color_for(int width, int height, int samples);

@@ -11,17 +11,16 @@
 
 namespace inkshade::render {
 
-bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
-                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>& source) {
+bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices, std::vector<glm::uvec3>& triangles,
+                         std::vector<uint32_t>& source) {
     const size_t n = mesh.positions.size();
     auto normal_of = [&](size_t i) { return i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1); };
-    const bool per_face = mesh.colors.empty() && !mesh.materials.empty() &&
-                          mesh.face_materials.size() == mesh.triangles.size();
+    const bool per_face =
+        mesh.colors.empty() && !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
     if (!per_face) {
         vertices.resize(n);
         for (size_t i = 0; i < n; ++i)
-            vertices[i] = {mesh.positions[i], normal_of(i),
-                           mesh.colors.size() == n ? mesh.colors[i] : glm::vec3(1.0f)};
+            vertices[i] = {mesh.positions[i], normal_of(i), mesh.colors.size() == n ? mesh.colors[i] : glm::vec3(1.0f)};
         triangles.clear();
         source.clear();
         return false;
@@ -63,8 +62,7 @@ gpu::GlBuffer upload_buffer(GLsizeiptr size, const void* data) {
 
 GpuMesh::GpuMesh(const Mesh& mesh) {
     // Materials first, so that a texture that fails leaves no buffers behind.
-    const bool has_face_materials =
-        !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
+    const bool has_face_materials = !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
     upload_materials(mesh, has_face_materials);
 
     // Each CPU-side array is uploaded and freed before the next one is built: at 10 M
@@ -169,8 +167,7 @@ void GpuMesh::make_vertex_array() {
     const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(GpuVertex));
     glVertexArrayElementBuffer(vao, ibo_.id());
-    const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
-                               offsetof(GpuVertex, color)};
+    const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal), offsetof(GpuVertex, color)};
     for (GLuint a = 0; a < 3; ++a) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, offsets[a]);

@@ -28,8 +28,8 @@ struct GpuVertex {
 // are then filled. False: the stream is the mesh's own vertices in order, and `triangles` and
 // `source` stay empty (use mesh.triangles; no copy of them, 120 MB at 10 M triangles).
 // Faces keep their order.
-bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices,
-                         std::vector<glm::uvec3>& triangles, std::vector<uint32_t>& source);
+bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices, std::vector<glm::uvec3>& triangles,
+                         std::vector<uint32_t>& source);
 
 class GpuMesh {
 public:
@@ -67,9 +67,9 @@ private:
     std::vector<uint32_t> source_;  // mesh vertex of each stream vertex (set_vertex_scalar)
     GLsizei index_count_ = 0;
     std::vector<Range> ranges_;
-    std::vector<Material> materials_;              // names, colours and MToon values; no pixels
-    std::vector<gpu::BaseTexture> textures_;       // each distinct image once, then the white texel
-    std::vector<size_t> material_texture_;         // per material: index into textures_
+    std::vector<Material> materials_;         // names, colours and MToon values; no pixels
+    std::vector<gpu::BaseTexture> textures_;  // each distinct image once, then the white texel
+    std::vector<size_t> material_texture_;    // per material: index into textures_
     bool has_material_params_ = false;
 };
 

@@ -24,16 +24,16 @@ struct Frame;
 // What passes hand each other within a frame (and, for the shadow map and the line data,
 // between frames). Frame (render/frame.hpp) holds them.
 enum class Resource : uint8_t {
-    MeshLineData,   // the object-space lines' mesh-wide CPU data (LineExtractor)
-    GpuMesh,        // the mesh's GL buffers
-    VertexScalar,   // a per-vertex scalar of this view (attribute 6)
-    ShadowMap,      // depth from the light (kept while the mesh and the light stay)
-    Color,          // the multisampled colour, depth and stencil target
-    GBuffer,        // the single-sample geometry buffer of image-space lines
+    MeshLineData,        // the object-space lines' mesh-wide CPU data (LineExtractor)
+    GpuMesh,             // the mesh's GL buffers
+    VertexScalar,        // a per-vertex scalar of this view (attribute 6)
+    ShadowMap,           // depth from the light (kept while the mesh and the light stay)
+    Color,               // the multisampled colour, depth and stencil target
+    GBuffer,             // the single-sample geometry buffer of image-space lines
     GBufferFaceNormals,  // its face-normal target (written only when some pass reads it)
-    LineDrawing,    // object-space lines as image polylines
-    ResolvedColor,  // the single-sample colour the image is read from
-    Image,          // the returned image
+    LineDrawing,         // object-space lines as image polylines
+    ResolvedColor,       // the single-sample colour the image is read from
+    Image,               // the returned image
 };
 
 // A set of resources.

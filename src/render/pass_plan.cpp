@@ -37,10 +37,9 @@ PassPlan plan_passes(const Frame& frame, bool before_upload) {
         size_t resolve_at = size_t(resolve - kept.begin());
         for (size_t i = resolve_at; i-- > 0;) {
             if (!kept[i].pass.type->per_pixel) continue;
-            const bool color_drawn_later = std::any_of(kept.begin() + std::ptrdiff_t(i) + 1,
-                                                       kept.begin() + std::ptrdiff_t(resolve_at), [](const Step& s) {
-                                                           return s.io.writes.contains(Resource::Color);
-                                                       });
+            const bool color_drawn_later =
+                std::any_of(kept.begin() + std::ptrdiff_t(i) + 1, kept.begin() + std::ptrdiff_t(resolve_at),
+                            [](const Step& s) { return s.io.writes.contains(Resource::Color); });
             if (color_drawn_later) continue;
             Step moved = kept[i];
             moved.pass.target = PassTarget::ResolvedColor;

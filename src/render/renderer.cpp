@@ -36,8 +36,7 @@ struct Renderer::Impl {
     // GL buffers of cpu_mesh; its colours, uvs and materials are dropped afterwards.
     void upload();
     // Runs `planned` in order, each timed when `timings` is given.
-    void run(const std::vector<render::PlannedPass>& planned, render::Frame& frame,
-             std::vector<PassTiming>* timings);
+    void run(const std::vector<render::PlannedPass>& planned, render::Frame& frame, std::vector<PassTiming>* timings);
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {

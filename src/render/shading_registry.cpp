@@ -19,16 +19,13 @@ std::vector<ShadingModel>& registry() {
 
 const ParamSpec* ShadingModel::param(const std::string& param_name) const { return find_param(params, param_name); }
 
-ShadingModelRegistration::ShadingModelRegistration(ShadingModel model) {
-    registry().push_back(std::move(model));
-}
+ShadingModelRegistration::ShadingModelRegistration(ShadingModel model) { registry().push_back(std::move(model)); }
 
 std::vector<const ShadingModel*> shading_models() {
     std::vector<const ShadingModel*> out;
     for (const auto& m : registry()) out.push_back(&m);
-    std::sort(out.begin(), out.end(), [](auto* a, auto* b) {
-        return a->debug_view != b->debug_view ? !a->debug_view : a->name < b->name;
-    });
+    std::sort(out.begin(), out.end(),
+              [](auto* a, auto* b) { return a->debug_view != b->debug_view ? !a->debug_view : a->name < b->name; });
     return out;
 }
 

@@ -52,7 +52,8 @@ public:
         glClearDepth(1.0);
         glClear(GL_DEPTH_BUFFER_BIT);
         const gpu::DepthScope depth(GL_LESS);
-        const gpu::CullScope cull(frame.closed ? std::optional<GLenum>(GL_FRONT) : std::nullopt);  // open meshes cast from both sides
+        const gpu::CullScope cull(frame.closed ? std::optional<GLenum>(GL_FRONT)
+                                               : std::nullopt);  // open meshes cast from both sides
         // Slope-scaled depth bias against self-shadowing acne (with the lookup's normal offset).
         const gpu::PolygonOffsetScope offset(2.0f, 4.0f);
         program_.use();

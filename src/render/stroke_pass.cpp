@@ -11,7 +11,7 @@ namespace {
 
 // One segment = one instance: end points (pixels), half-widths and window depths at both ends.
 struct Segment {
-    glm::vec4 ends;    // x0, y0, x1, y1
+    glm::vec4 ends;          // x0, y0, x1, y1
     glm::vec4 radius_depth;  // r0, r1, d0, d1
 };
 
@@ -46,8 +46,8 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
         };
         auto depth = [&](size_t i) { return path.depth.size() == n ? path.depth[i] : 0.0f; };
         auto add = [&](size_t a, size_t b) {
-            segments.push_back({glm::vec4(path.points[a], path.points[b]),
-                                glm::vec4(radius(a), radius(b), depth(a), depth(b))});
+            segments.push_back(
+                {glm::vec4(path.points[a], path.points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b))});
         };
         if (n == 1) add(0, 0);  // a dot
         for (size_t i = 0; i + 1 < n; ++i) add(i, i + 1);

@@ -19,9 +19,9 @@ namespace inkshade::render {
 struct StrokeStyle {
     glm::vec3 color{0.0f};
     float opacity = 1.0f;
-    float width = 1.0f;         // pixels; times strength when taper is on
-    bool taper = true;          // width * strength (LinePath::strength) per point
-    float depth_bias = 2e-4f;   // subtracted from the paths' window depth before the test
+    float width = 1.0f;        // pixels; times strength when taper is on
+    bool taper = true;         // width * strength (LinePath::strength) per point
+    float depth_bias = 2e-4f;  // subtracted from the paths' window depth before the test
 };
 
 class StrokePass final : public Pass {

@@ -6,7 +6,8 @@ std::string SurfaceLines::defines() const {
     if (!active()) return "";
     const bool compensate = line_param(*rim, "compensate").at(0) != 0.0f;
     return "#define INKSHADE_RIM_CONTOUR 1\n"
-           "#define INKSHADE_RIM_COMPENSATE " + std::to_string(compensate ? 1 : 0) + "\n";
+           "#define INKSHADE_RIM_COMPENSATE " +
+           std::to_string(compensate ? 1 : 0) + "\n";
 }
 
 void SurfaceLines::upload(gpu::ShaderProgram& program) const {

@@ -130,12 +130,13 @@ Scene make_scene(const SceneRequest& r) {
     if (r.size.x < 1 || r.size.y < 1 || r.size.x > 16384 || r.size.y > 16384)
         throw InputError(name("size") + ": each side must be in 1..16384, got " + std::to_string(r.size.x) + "x" +
                          std::to_string(r.size.y));
-    if (r.samples < 1 || r.samples > 16) throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
+    if (r.samples < 1 || r.samples > 16)
+        throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
     check_camera_options(r.camera, r.names);
     for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
         if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
-    for (auto [value, option] :
-         {std::pair{r.light_color, "light-color"}, std::pair{r.ambient, "ambient"}, std::pair{r.base_color, "base-color"}})
+    for (auto [value, option] : {std::pair{r.light_color, "light-color"}, std::pair{r.ambient, "ambient"},
+                                 std::pair{r.base_color, "base-color"}})
         check_color(value ? std::optional<glm::vec4>(glm::vec4(*value, 1.0f)) : std::nullopt, option, r.names);
     check_color(r.background, "background", r.names);
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
@@ -170,9 +171,7 @@ Scene make_scene(const SceneRequest& r) {
     return scene;
 }
 
-Camera Scene::frame(const BoundingBox& box) const {
-    return frame(box, float(options.width) / float(options.height));
-}
+Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
 
 Camera Scene::frame(const BoundingBox& box, float aspect) const { return frame_camera(box, camera, aspect); }
 
@@ -182,7 +181,8 @@ Light Scene::light(const BoundingBox& box, const Camera& cam) const {
     if (light_position) l.position = *light_position;
     if (light_target) l.target = *light_target;
     if (l.type == LightType::Directional && l.position == l.target)
-        throw InputError(option_name(names, "light-pos") + ": equals the light's target, so a directional light has no direction");
+        throw InputError(option_name(names, "light-pos") +
+                         ": equals the light's target, so a directional light has no direction");
     apply_style_light(style, l);
     return l;
 }

@@ -5,7 +5,8 @@
 
 namespace inkshade {
 
-void apply_threejs_scene(const std::string& path, SceneRequest& r, const std::function<bool(const std::string&)>& given) {
+void apply_threejs_scene(const std::string& path, SceneRequest& r,
+                         const std::function<bool(const std::string&)>& given) {
     const ThreejsScene scene = load_threejs_scene(path);
     r.style_data = threejs_scene_style(scene);
     if (!given("model")) r.model = scene.mesh;

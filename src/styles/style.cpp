@@ -147,10 +147,14 @@ void check_toml_text(std::string_view text, const std::string& source) {
                 mode = Mode::AfterValue;
             }
         } else {  // AfterValue
-            if (c == ',' && !nest.empty()) mode = nest.back() == '[' ? Mode::Value : Mode::Key;
-            else if (c == ']') mode = close('[');
-            else if (c == '}') mode = close('{');
-            else mode = Mode::Strict;
+            if (c == ',' && !nest.empty())
+                mode = nest.back() == '[' ? Mode::Value : Mode::Key;
+            else if (c == ']')
+                mode = close('[');
+            else if (c == '}')
+                mode = close('{');
+            else
+                mode = Mode::Strict;
             if (mode != Mode::Strict) ++i;
         }
     }
@@ -203,14 +207,15 @@ ParamValue param_value(const ParamSpec& spec, const toml::node& node, const std:
     throw InputError(source, "parameter " + spec.name + ": unsupported value type");
 }
 
-void reject_unknown_keys(const toml::table& table, const std::vector<std::string>& allowed,
-                         const std::string& source, const std::string& where) {
+void reject_unknown_keys(const toml::table& table, const std::vector<std::string>& allowed, const std::string& source,
+                         const std::string& where) {
     for (const auto& [key, node] : table) {
         (void)node;
         if (std::find(allowed.begin(), allowed.end(), std::string(key.str())) == allowed.end()) {
             std::string list;
             for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-            throw InputError(source, "unknown key '" + std::string(key.str()) + "'" + where + " (allowed: " + list + ")");
+            throw InputError(source,
+                             "unknown key '" + std::string(key.str()) + "'" + where + " (allowed: " + list + ")");
         }
     }
 }
@@ -239,11 +244,21 @@ std::string toml_string(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
         switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            case '\r': out += "\\r"; break;
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
+            case '\t':
+                out += "\\t";
+                break;
+            case '\r':
+                out += "\\r";
+                break;
             default:
                 if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
                     char buf[8];
@@ -281,7 +296,8 @@ LineSettings parse_line_settings(const toml::table& table, const std::string& so
         if (!spec) {
             std::string names;
             for (const auto& p : type->params) names += (names.empty() ? "" : ", ") + p.name;
-            throw InputError(source, "line type '" + type->name + "' has no parameter '" + k + "' (it has " + names + ")");
+            throw InputError(source,
+                             "line type '" + type->name + "' has no parameter '" + k + "' (it has " + names + ")");
         }
         settings.params[spec->name] = param_value(*spec, node, source);
     }
@@ -294,12 +310,20 @@ void write_params(std::ostream& out, const std::vector<ParamSpec>& params, const
         const ParamValue& v = value_or_default(p, values);
         out << p.name << " = ";
         switch (p.type) {
-            case ParamType::Bool: out << (v.at(0) != 0.0f ? "true" : "false"); break;
+            case ParamType::Bool:
+                out << (v.at(0) != 0.0f ? "true" : "false");
+                break;
             case ParamType::Float:
-            case ParamType::Int: out << format_param_value(p, v); break;
-            case ParamType::FloatList: out << "[" << format_param_value(p, v) << "]"; break;
+            case ParamType::Int:
+                out << format_param_value(p, v);
+                break;
+            case ParamType::FloatList:
+                out << "[" << format_param_value(p, v) << "]";
+                break;
             case ParamType::Choice:
-            case ParamType::Color: out << toml_string(format_param_value(p, v)); break;
+            case ParamType::Color:
+                out << toml_string(format_param_value(p, v));
+                break;
         }
         out << "  # " << p.doc << "\n";
     }
@@ -308,9 +332,7 @@ void write_params(std::ostream& out, const std::vector<ParamSpec>& params, const
 // Error messages quote keys and values from the file or the --set text, which may hold line
 // breaks and other control characters ("a\r" is a valid TOML key; found by fuzzing): those
 // become '?', so every error stays one line.
-InputError one_line_error(const InputError& e) {
-    return InputError(io::one_line(e.what()));
-}
+InputError one_line_error(const InputError& e) { return InputError(io::one_line(e.what())); }
 
 void apply_override_unchecked(Style& style, const std::string& text) {
     const size_t eq = text.find('=');
@@ -446,7 +468,6 @@ Style parse_style(std::string_view text, const std::string& source) {
     }
 }
 
-
 Style load_style(const std::string& name_or_path) {
     if (const EmbeddedFile* f = embedded_preset(name_or_path)) {
         Style s = parse_style(f->contents, std::string("builtin style ") + name_or_path);
@@ -464,7 +485,8 @@ Style load_style(const std::string& name_or_path) {
         throw InputError(name_or_path, "no such style file or built-in style (built-in: " + names + ")");
     }
     if (!fs::is_regular_file(name_or_path, ec)) throw InputError(name_or_path, "not a regular file");
-    if (fs::file_size(name_or_path, ec) > kMaxStyleFileBytes) throw InputError(name_or_path, "style file larger than 1 MiB");
+    if (fs::file_size(name_or_path, ec) > kMaxStyleFileBytes)
+        throw InputError(name_or_path, "style file larger than 1 MiB");
     std::ifstream in(name_or_path, std::ios::binary);
     if (!in) throw InputError(name_or_path, "cannot open file");
     std::stringstream ss;

@@ -42,8 +42,8 @@ Style threejs_scene_style(const ThreejsScene& scene) {
     style.ambient = scene.ambient;
     style.background = scene.background;
     if (scene.outline)
-        style.lines.push_back(
-            {"threejs-outline", checked(line_type("threejs-outline").params, *scene.outline, {}, "outline.", scene.source)});
+        style.lines.push_back({"threejs-outline", checked(line_type("threejs-outline").params, *scene.outline, {},
+                                                          "outline.", scene.source)});
     return style;
 }
 

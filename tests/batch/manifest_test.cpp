@@ -31,7 +31,7 @@ std::string input_error(F&& f) {
 TEST(BatchManifest, CsvLineGivesViewsTimesStylesJobs) {
     const auto jobs = parse_manifest("model,views,styles\nbuiltin:teapot,orbit2x1,\"anime,toon\"\n", "m.csv");
     EXPECT_EQ(stems(jobs), (std::vector<std::string>{"teapot/anime/az000_el00", "teapot/anime/az180_el00",
-                                                      "teapot/toon/az000_el00", "teapot/toon/az180_el00"}));
+                                                     "teapot/toon/az000_el00", "teapot/toon/az180_el00"}));
     for (const BatchJob& j : jobs) {
         EXPECT_EQ(j.model, "builtin:teapot");
         EXPECT_EQ(j.source, "m.csv:2");
@@ -62,7 +62,8 @@ TEST(BatchManifest, JsonLinesTakesStringsListsNumbersAndBooleans) {
         "{\"model\": \"b/lamp.ply\", \"style\": \"toon\", \"size\": \"16x16\", \"format\": [\"svg\"]}\n",
         "jobs.jsonl");
     ASSERT_EQ(jobs.size(), 3u);
-    EXPECT_EQ(stems(jobs), (std::vector<std::string>{"chair/ink/az000_el00", "chair/ink/cam1", "lamp/toon/az035_el20"}));
+    EXPECT_EQ(stems(jobs),
+              (std::vector<std::string>{"chair/ink/az000_el00", "chair/ink/cam1", "lamp/toon/az035_el20"}));
     EXPECT_EQ(jobs[0].width, 64);
     EXPECT_EQ(jobs[0].height, 32);
     EXPECT_TRUE(jobs[0].outputs.png && jobs[0].outputs.svg);
@@ -83,7 +84,7 @@ TEST(BatchManifest, DefaultsFillWhatALineLeavesOut) {
     d.outputs = {false, true};
     const auto jobs = parse_manifest("model,styles\nx.stl,\ny.stl,toon\n", "m.csv", d);
     EXPECT_EQ(stems(jobs), (std::vector<std::string>{"x/anime/az000_el20", "x/anime/az120_el20", "x/anime/az240_el20",
-                                                      "y/toon/az000_el20", "y/toon/az120_el20", "y/toon/az240_el20"}));
+                                                     "y/toon/az000_el20", "y/toon/az120_el20", "y/toon/az240_el20"}));
     EXPECT_EQ(jobs[0].width, 100);
     EXPECT_EQ(jobs[0].height, 50);
     EXPECT_TRUE(jobs[0].outputs.svg);

@@ -42,7 +42,8 @@ TEST(BatchViews, TurntableSpacesAzimuthsEvenlyAtOneElevation) {
 
 TEST(BatchViews, ListsMixItemsAndExplicitCameras) {
     const auto views = parse_views(" 5:0, 22.5:-15:3 ; eye=0,1,5 up=0,0,1; eye=4,0,0 target=1,0,0 name=side;orbit2x1");
-    EXPECT_EQ(names(views), (std::vector<std::string>{"az005_el00", "az022.5_el-15_d3", "cam1", "side", "az000_el00", "az180_el00"}));
+    EXPECT_EQ(names(views),
+              (std::vector<std::string>{"az005_el00", "az022.5_el-15_d3", "cam1", "side", "az000_el00", "az180_el00"}));
     EXPECT_FLOAT_EQ(views[1].camera.distance.value(), 3.0f);
     EXPECT_EQ(views[2].camera.eye.value(), glm::vec3(0, 1, 5));
     EXPECT_EQ(views[2].camera.up.value(), glm::vec3(0, 0, 1));
@@ -51,11 +52,35 @@ TEST(BatchViews, ListsMixItemsAndExplicitCameras) {
 }
 
 TEST(BatchViews, BadListsAreOneLineInputErrors) {
-    for (const std::string bad :
-         {"", " ; ", "orbit", "orbit8", "orbit0x3", "orbit8x91", "orbit8x3x", "turntable", "turntable:0",
-          "turntable:4:95", "turntable:x", "1:2:3:4", "10", "a:b", "0:91", "0:0:0", "0:0:-1", "0::0", "nan:0",
-          "eye=1,2", "eye=1,2,3 target=1,2,3", "eye=0,0,1 up=0,0,0", "eye=0,0,1 zoom=2", "eye=0,0,1 eye=0,0,2",
-          "target=0,0,0", "0:0,eye=0,0,1", "eye=0,0,1 name=a/b", "0:0,0:0", "eye=0,0,1 name=x;eye=1,0,0 name=x"}) {
+    for (const std::string bad : {"",
+                                  " ; ",
+                                  "orbit",
+                                  "orbit8",
+                                  "orbit0x3",
+                                  "orbit8x91",
+                                  "orbit8x3x",
+                                  "turntable",
+                                  "turntable:0",
+                                  "turntable:4:95",
+                                  "turntable:x",
+                                  "1:2:3:4",
+                                  "10",
+                                  "a:b",
+                                  "0:91",
+                                  "0:0:0",
+                                  "0:0:-1",
+                                  "0::0",
+                                  "nan:0",
+                                  "eye=1,2",
+                                  "eye=1,2,3 target=1,2,3",
+                                  "eye=0,0,1 up=0,0,0",
+                                  "eye=0,0,1 zoom=2",
+                                  "eye=0,0,1 eye=0,0,2",
+                                  "target=0,0,0",
+                                  "0:0,eye=0,0,1",
+                                  "eye=0,0,1 name=a/b",
+                                  "0:0,0:0",
+                                  "eye=0,0,1 name=x;eye=1,0,0 name=x"}) {
         try {
             parse_views(bad);
             ADD_FAILURE() << "accepted '" << bad << "'";

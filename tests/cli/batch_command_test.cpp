@@ -120,7 +120,8 @@ TEST_F(BatchCommand, RendersEveryModelViewAndStyleWithMetadata) {
                 EXPECT_EQ(img.height, 64);
                 int drawn = 0;  // pixels that are not the white background
                 for (int y = 0; y < 64; ++y)
-                    for (int x = 0; x < 64; ++x) drawn += img.pixel(x, y)[0] + img.pixel(x, y)[1] + img.pixel(x, y)[2] < 3 * 255;
+                    for (int x = 0; x < 64; ++x)
+                        drawn += img.pixel(x, y)[0] + img.pixel(x, y)[1] + img.pixel(x, y)[2] < 3 * 255;
                 EXPECT_GT(drawn, 64 * 64 / 10) << stem;
             }
 
@@ -146,8 +147,9 @@ TEST_F(BatchCommand, RendersEveryModelViewAndStyleWithMetadata) {
     EXPECT_EQ(meta["outputs"]["png"], "az150_el40.png");
     EXPECT_FALSE(meta["inkshade"].get<std::string>().empty());
     EXPECT_TRUE(meta["timings_ms"].contains("render"));
-    EXPECT_TRUE(nlohmann::json::parse(files.at("torus-major-segments=24-minor-segments=12/anime/az000_el20.json"))
-                    ["model"]["bytes"].is_null());
+    EXPECT_TRUE(nlohmann::json::parse(
+                    files.at("torus-major-segments=24-minor-segments=12/anime/az000_el20.json"))["model"]["bytes"]
+                    .is_null());
 }
 
 TEST_F(BatchCommand, ResumeSkipsCompleteJobsForceRendersTheSameBytes) {
@@ -160,7 +162,7 @@ TEST_F(BatchCommand, ResumeSkipsCompleteJobsForceRendersTheSameBytes) {
     EXPECT_EQ(summary(r.out).skipped, 24) << r.out;
     EXPECT_EQ(summary(r.out).done, 0);
     EXPECT_EQ(inode(out() + "/block/anime/az060_el20.png"), png_inode);  // not rewritten
-    EXPECT_EQ(r.err, "");  // -q: nothing but failures
+    EXPECT_EQ(r.err, "");                                                // -q: nothing but failures
 
     // A missing output or a stale hash makes a job incomplete.
     fs::remove(out() + "/box/toon/az000_el20.png");
@@ -255,8 +257,9 @@ TEST_F(BatchCommand, SigtermStopsCleanlyAndResumeRendersOnlyTheRest) {
 
 TEST_F(BatchCommand, ShardsTogetherGiveTheUnshardedSetWithoutOverlap) {
     const std::string common = " --size 32x32 -q --styles toon";
-    const std::string manifest = dir_.write("views.csv", "model,views\n" + box_ + ",\"0:0,90:0,180:0,270:0\"\n" +
-                                                            block_ + ",\"0:0,90:0,180:0,270:0\"\nbuiltin:sphere,orbit2x2\n");
+    const std::string manifest =
+        dir_.write("views.csv", "model,views\n" + box_ + ",\"0:0,90:0,180:0,270:0\"\n" + block_ +
+                                    ",\"0:0,90:0,180:0,270:0\"\nbuiltin:sphere,orbit2x2\n");
     ASSERT_EQ(batch(manifest + " -o " + out("all") + common).status, 0);
     const auto all = files_under(out("all"));
     EXPECT_EQ(all.size(), 24u);
@@ -282,9 +285,9 @@ TEST_F(BatchCommand, ShardsTogetherGiveTheUnshardedSetWithoutOverlap) {
 
 TEST_F(BatchCommand, BadModelIsReportedOnceAndTheRestCompleteWithExit1) {
     const std::string bad = dir_.write("bad.stl", "solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0");
-    const std::string manifest = dir_.write("mixed.csv", "model,views,styles\n" + bad + ",turntable:3,\"anime,toon\"\n" +
-                                                            dir_.file("missing.obj") + ",0:0,toon\n" + box_ +
-                                                            ",turntable:2,toon\n");
+    const std::string manifest =
+        dir_.write("mixed.csv", "model,views,styles\n" + bad + ",turntable:3,\"anime,toon\"\n" +
+                                    dir_.file("missing.obj") + ",0:0,toon\n" + box_ + ",turntable:2,toon\n");
     auto r = batch(manifest + " -o " + out() + " --size 32x32 -q");
     EXPECT_EQ(r.status, 1) << r.err;
     const Counts c = summary(r.out);
@@ -323,11 +326,11 @@ TEST_F(BatchCommand, BadManifestOrOptionsAreExit2WithOneLine) {
     EXPECT_NE(r.err.find(jsonl + ":2: not valid JSON"), std::string::npos) << r.err;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
 
-    for (const std::string& args :
-         {std::string("-o ") + out(), manifest_, manifest_ + " --models . -o " + out(), manifest_ + " --shard 4/3 -o " + out(),
-          manifest_ + " --shard 0/3 -o " + out(), manifest_ + " --views orbit -o " + out(),
-          manifest_ + " --format gif -o " + out(), manifest_ + " --size 0x1 -o " + out(),
-          manifest_ + " -o " + box_, dir_.file("nope.csv") + " -o " + out(), "--models " + box_ + " -o " + out()}) {
+    for (const std::string& args : {std::string("-o ") + out(), manifest_, manifest_ + " --models . -o " + out(),
+                                    manifest_ + " --shard 4/3 -o " + out(), manifest_ + " --shard 0/3 -o " + out(),
+                                    manifest_ + " --views orbit -o " + out(), manifest_ + " --format gif -o " + out(),
+                                    manifest_ + " --size 0x1 -o " + out(), manifest_ + " -o " + box_,
+                                    dir_.file("nope.csv") + " -o " + out(), "--models " + box_ + " -o " + out()}) {
         r = batch(args);
         EXPECT_EQ(r.status, 2) << args << ": " << r.err;
         EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
@@ -336,8 +339,9 @@ TEST_F(BatchCommand, BadManifestOrOptionsAreExit2WithOneLine) {
 }
 
 TEST_F(BatchCommand, OutputsEqualRenderAndLinesCommands) {
-    const std::string manifest = dir_.write("one.jsonl", "{\"model\": \"builtin:teapot\", \"views\": \"50:25\", "
-                                                          "\"styles\": \"anime\", \"format\": \"png,svg\"}\n");
+    const std::string manifest = dir_.write("one.jsonl",
+                                            "{\"model\": \"builtin:teapot\", \"views\": \"50:25\", "
+                                            "\"styles\": \"anime\", \"format\": \"png,svg\"}\n");
     ASSERT_EQ(batch(manifest + " -o " + out() + " --size 80x60 -q").status, 0);
     const std::string camera = " --style anime --size 80x60 --azimuth 50 --elevation 25 ";
     ASSERT_EQ(run_cli("render builtin:teapot" + camera + "-o " + dir_.file("r.png")).status, 0);

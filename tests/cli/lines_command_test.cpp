@@ -100,10 +100,11 @@ TEST(LinesCommand, TimingPrintsStagesAndTotal) {
 TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
     TempDir dir;
     const std::string out = dir.file("x.svg");
-    for (const std::string& args : std::vector<std::string>{"builtin:sphere --lines scribble", "builtin:sphere --lines contour,contour", "builtin:sphere --lines ,",
-          "builtin:sphere --size 0x5", "builtin:sphere --size big", "builtin:nothing",
-          dir.file("missing.obj"), "builtin:sphere --set contour.wobble=1", "builtin:sphere --set contour.width=-1",
-          "builtin:sphere --lines contour --set crease.angle=30", "builtin:sphere --eye 1,2"}) {
+    for (const std::string& args : std::vector<std::string>{
+             "builtin:sphere --lines scribble", "builtin:sphere --lines contour,contour", "builtin:sphere --lines ,",
+             "builtin:sphere --size 0x5", "builtin:sphere --size big", "builtin:nothing", dir.file("missing.obj"),
+             "builtin:sphere --set contour.wobble=1", "builtin:sphere --set contour.width=-1",
+             "builtin:sphere --lines contour --set crease.angle=30", "builtin:sphere --eye 1,2"}) {
         auto r = run_cli("lines " + args + " -o " + out);
         EXPECT_EQ(r.status, 2) << args << ": " << r.err;
         EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;

@@ -55,7 +55,8 @@ TEST(OutputFailure, FullDiskWhileWritingIsOneLineErrorAndNoPartialFile) {
 
 TEST(OutputFailure, BatchReportsTheFailedJobsAndLeavesNoPartialFile) {
     TempDir dir;
-    const std::string manifest = dir.write("jobs.csv", "model,views,styles,size\nbuiltin:teapot,0:20;90:20,lambert,256x256\n");
+    const std::string manifest =
+        dir.write("jobs.csv", "model,views,styles,size\nbuiltin:teapot,0:20;90:20,lambert,256x256\n");
     const CliResult r = run_cli("batch " + manifest + " -o " + dir.file("out"), kSmallFileLimit);
     EXPECT_NE(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;

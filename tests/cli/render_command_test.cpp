@@ -159,8 +159,9 @@ TEST(RenderCommand, StyleOptionErrorsAreExit2WithOneLine) {
 
 TEST(RenderCommand, SavedStyleReproducesTheSamePixels) {
     TempDir dir;
-    auto r = run_cli("render builtin:torus --style cel-000 --set levels=1,0.6,0.3 --set thresholds=0.7,0.4 --size 64x64 -o " +
-                     dir.file("a.png") + " --save-style " + dir.file("s.toml"));
+    auto r = run_cli(
+        "render builtin:torus --style cel-000 --set levels=1,0.6,0.3 --set thresholds=0.7,0.4 --size 64x64 -o " +
+        dir.file("a.png") + " --save-style " + dir.file("s.toml"));
     ASSERT_EQ(r.status, 0) << r.err;
     r = run_cli("render builtin:torus --style " + dir.file("s.toml") + " --size 64x64 -o " + dir.file("b.png"));
     ASSERT_EQ(r.status, 0) << r.err;
@@ -185,8 +186,8 @@ TEST(InfoCommand, BadFileIsExit2) {
 TEST(StylesCommand, ListsEveryModelWithParameters) {
     auto r = run_cli("styles");
     ASSERT_EQ(r.status, 0);
-    for (const char* m : {"flat", "gouraud", "lambert", "phong", "blinn-phong", "normal", "view", "w", "ndotv",
-                          "shininess"})
+    for (const char* m :
+         {"flat", "gouraud", "lambert", "phong", "blinn-phong", "normal", "view", "w", "ndotv", "shininess"})
         EXPECT_NE(r.out.find(m), std::string::npos) << m;
 }
 

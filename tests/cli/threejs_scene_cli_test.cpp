@@ -100,7 +100,8 @@ TEST(ThreejsSceneCli, ToonOutlineSceneAndEquivalentStyleAndFlagsGiveByteIdentica
     const Image img = read_png(dir.file("scene.png"));
     int outline = 0;
     for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) outline += img.pixel(x, y)[1] < 80 && img.pixel(x, y)[2] > img.pixel(x, y)[1];
+        for (int x = 0; x < img.width; ++x)
+            outline += img.pixel(x, y)[1] < 80 && img.pixel(x, y)[2] > img.pixel(x, y)[1];
     EXPECT_GT(outline, 50);
 }
 
@@ -132,13 +133,16 @@ TEST(ThreejsSceneCli, BadScenesAreOneLineErrorsNamingFileAndField) {
         const char* json;
         const char* field;
     };
-    for (const Case& c : {Case{"syntax.json", "{\"mesh\": ", "not valid JSON"},
-                          Case{"material.json", R"({"mesh": "builtin:sphere", "material": {"type": "MeshFancyMaterial"}})",
-                               "material.type"},
-                          Case{"range.json", R"({"mesh": "builtin:sphere", "material": {"type": "MeshPhongMaterial", "shininess": -5}})",
-                               "material.shininess"},
-                          Case{"outline.json", R"({"mesh": "builtin:sphere", "material": {"type": "MeshToonMaterial"}, "outline": {"alpha": 2}})",
-                               "outline.alpha"}}) {
+    for (const Case& c :
+         {Case{"syntax.json", "{\"mesh\": ", "not valid JSON"},
+          Case{"material.json", R"({"mesh": "builtin:sphere", "material": {"type": "MeshFancyMaterial"}})",
+               "material.type"},
+          Case{"range.json",
+               R"({"mesh": "builtin:sphere", "material": {"type": "MeshPhongMaterial", "shininess": -5}})",
+               "material.shininess"},
+          Case{"outline.json",
+               R"({"mesh": "builtin:sphere", "material": {"type": "MeshToonMaterial"}, "outline": {"alpha": 2}})",
+               "outline.alpha"}}) {
         const std::string path = dir.write(c.name, c.json);
         auto r = run_cli("render --scene " + path + " -o " + dir.file("a.png"));
         EXPECT_EQ(r.status, 2) << c.name;

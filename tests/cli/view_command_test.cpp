@@ -56,8 +56,9 @@ TEST(ViewCommand, ScreenshotEqualsRenderOfSameStyleAndCamera) {
 TEST(ViewCommand, KeyFCyclesShadingModelsLikeRender) {
     TempDir dir;
     const std::string a = dir.file("a.png"), b = dir.file("b.png");
-    CliResult r = run_view("builtin:sphere --shading gooch --size 96x96 --script " +
-                           script(dir, "gui off\nframes 1\nscreenshot " + a + "\nkey F\nframes 1\nscreenshot " + b + "\n"));
+    CliResult r =
+        run_view("builtin:sphere --shading gooch --size 96x96 --script " +
+                 script(dir, "gui off\nframes 1\nscreenshot " + a + "\nkey F\nframes 1\nscreenshot " + b + "\n"));
     ASSERT_EQ(r.status, 0) << r.err;
     // The viewer names the model F switched to; the second screenshot is that model's render.
     const std::string tag = "shading model ";
@@ -74,8 +75,8 @@ TEST(ViewCommand, LightPositionMatchesRenderLightPos) {
     TempDir dir;
     const std::string shot = dir.file("shot.png"), before = dir.file("before.png");
     CliResult r = run_view("builtin:sphere --shading phong --size 96x96 --script " +
-                           script(dir, "gui off\nframes 1\nscreenshot " + before + "\nlight-pos -3,0.5,1\nframes 1\nscreenshot " +
-                                           shot + "\n"));
+                           script(dir, "gui off\nframes 1\nscreenshot " + before +
+                                           "\nlight-pos -3,0.5,1\nframes 1\nscreenshot " + shot + "\n"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_LT(matching_fraction(read_png(before), read_png(shot)), 0.9);  // the highlight moved
     EXPECT_GE(matches_render(shot, "builtin:sphere --shading phong --size 96x96 --light-pos -3,0.5,1", dir), 0.99);
@@ -84,9 +85,10 @@ TEST(ViewCommand, LightPositionMatchesRenderLightPos) {
 TEST(ViewCommand, SavedStyleRendersTheSameImage) {
     TempDir dir;
     const std::string shot = dir.file("shot.png"), style = dir.file("tuned.toml");
-    CliResult r = run_view("builtin:torus --style cel-002 --size 96x96 --script " +
-                           script(dir, "gui off\nset levels=0.2,0.5,0.9\nset base-color=1,0.5,0.2\nframes 1\nscreenshot " +
-                                           shot + "\nsave-style " + style + "\n"));
+    CliResult r =
+        run_view("builtin:torus --style cel-002 --size 96x96 --script " +
+                 script(dir, "gui off\nset levels=0.2,0.5,0.9\nset base-color=1,0.5,0.2\nframes 1\nscreenshot " + shot +
+                                 "\nsave-style " + style + "\n"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_GE(matches_render(shot, "builtin:torus --style " + style + " --size 96x96", dir), 0.99);
     // The tuned value is in the file, so the render above did not just repeat cel-002.
@@ -97,9 +99,10 @@ TEST(ViewCommand, BadModelKeepsPreviousModelAndReportsError) {
     TempDir dir;
     const std::string a = dir.file("a.png"), b = dir.file("b.png");
     const std::string bad = dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
-    CliResult r = run_view("builtin:sphere --size 64x64 --script " +
-                           script(dir, "gui off\nframes 1\nscreenshot " + a + "\nopen " + bad + "\nframes 1\nscreenshot " + b +
-                                           "\nopen /nonexistent/model.obj\nframes 1\n"));
+    CliResult r =
+        run_view("builtin:sphere --size 64x64 --script " +
+                 script(dir, "gui off\nframes 1\nscreenshot " + a + "\nopen " + bad + "\nframes 1\nscreenshot " + b +
+                                 "\nopen /nonexistent/model.obj\nframes 1\n"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("broken.obj"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("/nonexistent/model.obj"), std::string::npos) << r.err;

@@ -14,10 +14,8 @@ namespace {
 // Unit cube, 8 shared corners, two triangles per side (counter-clockwise seen from outside).
 Mesh cube() {
     Mesh m;
-    for (int i = 0; i < 8; ++i)
-        m.positions.emplace_back(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int i = 0; i < 8; ++i) m.positions.emplace_back(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& q : quads) {
         m.triangles.emplace_back(q[0], q[1], q[2]);
         m.triangles.emplace_back(q[0], q[2], q[3]);
@@ -56,8 +54,7 @@ void expect_consistent(const Mesh& m, const EdgeAdjacency& adj) {
     for (size_t e = 0; e < adj.edge_count(); ++e) {
         EXPECT_LT(adj.edges[e].x, adj.edges[e].y);
         if (e > 0) {
-            EXPECT_LT(std::pair(adj.edges[e - 1].x, adj.edges[e - 1].y),
-                      std::pair(adj.edges[e].x, adj.edges[e].y));
+            EXPECT_LT(std::pair(adj.edges[e - 1].x, adj.edges[e - 1].y), std::pair(adj.edges[e].x, adj.edges[e].y));
         }
         EXPECT_GE(adj.face_count(e), 1u);
         EXPECT_EQ(adj.is_border(e), adj.face_count(e) == 1);
@@ -78,9 +75,8 @@ void expect_consistent(const Mesh& m, const EdgeAdjacency& adj) {
             EXPECT_TRUE(found) << "edge " << e << " face " << f;
         }
     }
-    EXPECT_TRUE(std::is_sorted(adj.more_faces.begin(), adj.more_faces.end(), [](glm::uvec2 a, glm::uvec2 b) {
-        return std::pair(a.x, a.y) < std::pair(b.x, b.y);
-    }));
+    EXPECT_TRUE(std::is_sorted(adj.more_faces.begin(), adj.more_faces.end(),
+                               [](glm::uvec2 a, glm::uvec2 b) { return std::pair(a.x, a.y) < std::pair(b.x, b.y); }));
     // Every side of a usable face is an edge that lists the face: the lists cover all sides.
     size_t usable_sides = 0;
     for (size_t f = 0; f < m.triangles.size(); ++f) {
@@ -132,11 +128,11 @@ TEST(Adjacency, OpenGridBorderIsItsBoundary) {
 
 TEST(Adjacency, BadFacesAreSkippedAndNonManifoldFlagged) {
     Mesh m;
-    m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0}, {0.5f, -1, 0}, {0.5f, 0, 1},
-                   {2, 2, 2}, {0, 0, 0}, {7, 7, 7}};  // 6 duplicates 0's position, 7 isolated
-    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4},   // edge (0,1) has three faces
-                   {1, 1, 2}, {0, 1, 99}, {5, 5, 5},  // repeated and out-of-range indices
-                   {0, 6, 1}};                         // zero area, distinct indices: kept
+    m.positions = {{0, 0, 0},    {1, 0, 0}, {0.5f, 1, 0}, {0.5f, -1, 0},
+                   {0.5f, 0, 1}, {2, 2, 2}, {0, 0, 0},    {7, 7, 7}};  // 6 duplicates 0's position, 7 isolated
+    m.triangles = {{0, 1, 2}, {1, 0, 3},  {0, 1, 4},                   // edge (0,1) has three faces
+                   {1, 1, 2}, {0, 1, 99}, {5, 5, 5},                   // repeated and out-of-range indices
+                   {0, 6, 1}};                                         // zero area, distinct indices: kept
     const EdgeAdjacency adj = build_edge_adjacency(m);
     expect_consistent(m, adj);
     // Faces 3, 4 and 5 have no edges: no edge lists them.

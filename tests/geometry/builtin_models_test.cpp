@@ -18,9 +18,7 @@ namespace {
 
 using geometry::MeshStats;
 
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 void expect_closed(const Mesh& m, long euler) {
     const MeshStats s = geometry::mesh_stats(m);
@@ -65,8 +63,7 @@ void expect_unit_normals(const Mesh& m) {
 void expect_faces_outward(const Mesh& m) {
     const auto fn = geometry::face_normals(m);
     for (size_t f = 0; f < m.triangle_count(); ++f) {
-        const glm::vec3 avg =
-            m.normals[m.triangles[f].x] + m.normals[m.triangles[f].y] + m.normals[m.triangles[f].z];
+        const glm::vec3 avg = m.normals[m.triangles[f].x] + m.normals[m.triangles[f].y] + m.normals[m.triangles[f].z];
         EXPECT_GT(glm::dot(fn[f], avg), 0.0f) << "face " << f;
     }
 }
@@ -135,8 +132,7 @@ TEST(BuiltinModels, TorusKnotNormalsPointAwayFromTheCurve) {
     for (int i = 0; i < segments; ++i) {
         const double t = 2.0 * std::numbers::pi * i / segments;
         const glm::vec3 c(float((1.0 + 0.4 * std::cos(q * t)) * std::cos(p * t)),
-                          float((1.0 + 0.4 * std::cos(q * t)) * std::sin(p * t)),
-                          float(0.4 * std::sin(q * t)));
+                          float((1.0 + 0.4 * std::cos(q * t)) * std::sin(p * t)), float(0.4 * std::sin(q * t)));
         for (int j = 0; j < tube_segments; ++j) {
             const size_t v = size_t(i) * tube_segments + j;
             const glm::vec3 offset = m.positions[v] - c;

@@ -58,9 +58,8 @@ TEST(Chaining, VertexKeysChainEdgeLinesAndJunctionsSplitThem) {
 
 TEST(Chaining, FaceInteriorKeysEndChains) {
     // Two segments meeting on edge key 5; the outer ends are cut inside faces 0 and 1.
-    const std::vector<LineSegment> segs = {
-        seg({0, 0, 0}, {1, 0, 0}, face_interior_key(0, 0), 5, 0.0f, 1.0f),
-        seg({1, 0, 0}, {2, 0, 0}, 5, face_interior_key(1, 1), 1.0f, 0.0f)};
+    const std::vector<LineSegment> segs = {seg({0, 0, 0}, {1, 0, 0}, face_interior_key(0, 0), 5, 0.0f, 1.0f),
+                                           seg({1, 0, 0}, {2, 0, 0}, 5, face_interior_key(1, 1), 1.0f, 0.0f)};
     const auto lines = chain_segments(segs);
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_FALSE(lines[0].closed);
@@ -70,9 +69,9 @@ TEST(Chaining, FaceInteriorKeysEndChains) {
 
 TEST(Chaining, DropShortRemovesOnlyShortChainsAndKeepsOrder) {
     Polyline a, b, c, loop;
-    a.points = {{0, 0, 0}, {0.3f, 0, 0}};                 // 0.3
-    b.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};         // 2
-    c.points = {{0, 0, 0}};                               // 0
+    a.points = {{0, 0, 0}, {0.3f, 0, 0}};                      // 0.3
+    b.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};              // 2
+    c.points = {{0, 0, 0}};                                    // 0
     loop.points = {{0, 0, 0}, {0.4f, 0, 0}, {0.4f, 0.4f, 0}};  // 0.4 + 0.4 + 0.566 closed
     loop.closed = true;
     EXPECT_FLOAT_EQ(polyline_length(a), 0.3f);

@@ -19,9 +19,7 @@ namespace {
 
 constexpr float kImage = 1024.0f;  // image height (and width) in pixels for projected checks
 
-bool finite(const glm::vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
+bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // Pixel coordinates of p in a kImage² image (origin at the centre).
 glm::vec2 project(const Camera& camera, const glm::vec3& p) {
@@ -56,8 +54,7 @@ glm::vec3 torus_normal(const glm::vec3& p, float R) {
 Camera orbit(double azimuth, double elevation, double distance) {
     Camera c;
     c.eye = glm::vec3(distance * glm::dvec3(std::cos(elevation) * std::cos(azimuth),
-                                            std::cos(elevation) * std::sin(azimuth),
-                                            std::sin(elevation)));
+                                            std::cos(elevation) * std::sin(azimuth), std::sin(elevation)));
     c.up = {0, 0, 1};
     c.fov_degrees = 40.0f;
     return c;
@@ -102,8 +99,7 @@ TEST(Contours, SphereContourIsCircleOfTangencyPerspective) {
     ASSERT_GT(segs.size(), 100u);
     // The cone of tangency has half-angle asin(1/d); the projected circle's radius in pixels.
     const double alpha = std::asin(1.0 / d);
-    const double radius_px =
-        std::tan(alpha) / std::tan(glm::radians(double(fov)) / 2.0) * (kImage / 2.0);
+    const double radius_px = std::tan(alpha) / std::tan(glm::radians(double(fov)) / 2.0) * (kImage / 2.0);
     for (const ContourSegment& s : segs)
         for (const glm::vec3& p : {s.a, s.b}) {
             EXPECT_NEAR(glm::length(project(camera, p)), radius_px, 0.5);
@@ -140,7 +136,7 @@ TEST(Contours, SegmentsKeepFrontSideOnTheLeft) {
     ASSERT_FALSE(segs.empty());
     for (const ContourSegment& s : segs) {
         const glm::vec2 a = project(camera, s.a), b = project(camera, s.b);
-        if (glm::distance(a, b) < 1e-3f) continue;  // through a vertex: no direction
+        if (glm::distance(a, b) < 1e-3f) continue;                      // through a vertex: no direction
         EXPECT_GT(a.x * b.y - a.y * b.x, 0.0f) << glm::distance(a, b);  // centre on the left
     }
 }
@@ -223,8 +219,7 @@ TEST(Chaining, SphereContourIsOneClosedLoop) {
         EXPECT_EQ(lines[0].strength, std::vector<float>(segs.size(), 1.0f));
         // Consecutive points are close (one face apart), including the closing step.
         const auto& pts = lines[0].points;
-        for (size_t i = 0; i < pts.size(); ++i)
-            EXPECT_LT(glm::distance(pts[i], pts[(i + 1) % pts.size()]), 0.1f);
+        for (size_t i = 0; i < pts.size(); ++i) EXPECT_LT(glm::distance(pts[i], pts[(i + 1) % pts.size()]), 0.1f);
     }
 }
 
@@ -270,10 +265,8 @@ TEST(Chaining, TorusObliqueViewLoopsLieOnAnalyticContour) {
 TEST(Chaining, CountsStableUnderTinyOrbit) {
     const Mesh torus = builtin::torus(1.0f, 0.4f, 128, 64);
     for (const double elevation : {0.3, 0.5, 1.0}) {
-        const auto before =
-            chain_segments(extract_contours(torus, torus.normals, orbit(0.4, elevation, 4.0)));
-        const auto after = chain_segments(
-            extract_contours(torus, torus.normals, orbit(0.4 + 1e-4, elevation, 4.0)));
+        const auto before = chain_segments(extract_contours(torus, torus.normals, orbit(0.4, elevation, 4.0)));
+        const auto after = chain_segments(extract_contours(torus, torus.normals, orbit(0.4 + 1e-4, elevation, 4.0)));
         EXPECT_EQ(before.size(), after.size()) << "elevation " << elevation;
         for (const Polyline& l : after) EXPECT_TRUE(l.closed);
     }
@@ -285,8 +278,7 @@ TEST(Chaining, OpenChainsAndNonManifoldNodesSplit) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0}, {0.5f, -1, 0}, {0.5f, 0, 1}, {2, 2, 2}};
     m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {1, 1, 2}, {0, 1, 9}, {5, 1, 2}};
-    std::vector<glm::vec3> normals = {{0, 0, 1},  {0, 0, -1}, {0, 0, 1},
-                                      {0, 0, 1},  {0, 0, 1},  {NAN, 0, 0}};
+    std::vector<glm::vec3> normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {NAN, 0, 0}};
     const auto segs = extract_contours(m, normals, ortho_camera({0, 0, 5}));
     for (const ContourSegment& s : segs) {
         EXPECT_TRUE(finite(s.a) && finite(s.b));

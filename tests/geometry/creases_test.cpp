@@ -14,10 +14,8 @@ namespace {
 // Unit cube, 8 shared corners, two triangles per side (counter-clockwise seen from outside).
 Mesh cube() {
     Mesh m;
-    for (int i = 0; i < 8; ++i)
-        m.positions.emplace_back(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int i = 0; i < 8; ++i) m.positions.emplace_back(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& q : quads) {
         m.triangles.emplace_back(q[0], q[1], q[2]);
         m.triangles.emplace_back(q[0], q[2], q[3]);
@@ -168,8 +166,8 @@ TEST(Creases, SmoothSphereHasNone) {
 TEST(Creases, BadMeshesGiveResultsWithoutCrashing) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0}, {0.5f, -1, 0}, {0.5f, 0, 1},
-                   {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0}, {9, 9, 9}};
-    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4},  // non-manifold edge (0, 1)
+                   {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0},  {9, 9, 9}};
+    m.triangles = {{0, 1, 2}, {1, 0, 3},  {0, 1, 4},  // non-manifold edge (0, 1)
                    {1, 1, 2}, {0, 1, 99},             // repeated, out of range
                    {2, 4, 6}, {0, 6, 2},              // 6 sits on 0: zero area
                    {3, 4, 7}};                        // a NaN corner
@@ -184,8 +182,7 @@ TEST(Creases, BadMeshesGiveResultsWithoutCrashing) {
         }
     EXPECT_FALSE(c.borders.empty());
     // All lists chain without trouble.
-    for (const auto* list : {&c.ridges, &c.valleys, &c.borders, &c.non_manifold})
-        (void)chain_segments(*list);
+    for (const auto* list : {&c.ridges, &c.valleys, &c.borders, &c.non_manifold}) (void)chain_segments(*list);
     EXPECT_TRUE(creases(Mesh{}).borders.empty());
 }
 

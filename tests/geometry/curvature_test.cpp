@@ -144,8 +144,8 @@ TEST(Curvature, TorusPointAreasSumToSurfaceArea) {
     double total = 0.0, mesh_area = 0.0;
     for (float a : c.point_area) total += a;
     for (const glm::uvec3& t : m.triangles)
-        mesh_area += 0.5 * glm::length(glm::cross(m.positions[t.y] - m.positions[t.x],
-                                                  m.positions[t.z] - m.positions[t.x]));
+        mesh_area +=
+            0.5 * glm::length(glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]));
     EXPECT_NEAR(total, mesh_area, 1e-4 * mesh_area);
     EXPECT_NEAR(total, 4.0 * kPi * kPi * R * r, 2e-3 * total);
 }
@@ -176,15 +176,14 @@ TEST(Curvature, PointAreasAreMixedVoronoiAreas) {
 
 TEST(Curvature, DegenerateInputGivesFiniteValues) {
     Mesh m;
-    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0.2f},  // two good faces
-                   {0, -1, 0.3f}, {0, 0, 1},                        // fins on edge 0-1
-                   {2, 0, 0},                                       // collinear with 0, 1
-                   {5, 5, 5},                                       // isolated
-                   {0, 2, 0}};                                      // zero normal given
-    m.triangles = {{0, 1, 2}, {1, 3, 2}, {0, 1, 4}, {1, 0, 5}, {0, 1, 5},
-                   {0, 0, 1},  // repeated index
-                   {0, 1, 6},  // zero area
-                   {2, 3, 8},  // touches the vertex with a zero normal
+    m.positions = {{0, 0, 0},     {1, 0, 0}, {0, 1, 0}, {1, 1, 0.2f},                 // two good faces
+                   {0, -1, 0.3f}, {0, 0, 1},                                          // fins on edge 0-1
+                   {2, 0, 0},                                                         // collinear with 0, 1
+                   {5, 5, 5},                                                         // isolated
+                   {0, 2, 0}};                                                        // zero normal given
+    m.triangles = {{0, 1, 2}, {1, 3, 2}, {0, 1, 4}, {1, 0, 5}, {0, 1, 5}, {0, 0, 1},  // repeated index
+                   {0, 1, 6},                                                         // zero area
+                   {2, 3, 8},    // touches the vertex with a zero normal
                    {2, 3, 99}};  // index out of range
     std::vector<glm::vec3> normals = angle_weighted_vertex_normals(m);
     normals[8] = glm::vec3(0.0f);

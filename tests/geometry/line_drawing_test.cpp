@@ -126,7 +126,7 @@ TEST(LineDrawing, RepeatedDrawsAreIdenticalAndReportTimings) {
             if (x.stage == stage) return true;
         return false;
     };
-    EXPECT_TRUE(has(first, "ray scene"));   // built once per mesh ...
+    EXPECT_TRUE(has(first, "ray scene"));    // built once per mesh ...
     EXPECT_FALSE(has(second, "ray scene"));  // ... and kept
     for (const char* stage : {"extract", "visibility", "chain", "finish"}) EXPECT_TRUE(has(second, stage)) << stage;
 }

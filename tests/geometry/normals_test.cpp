@@ -11,8 +11,7 @@ namespace {
 // Indexed unit cube, counter-clockwise seen from outside.
 Mesh cube() {
     Mesh m;
-    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
     m.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
                    {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
     return m;
@@ -53,8 +52,7 @@ TEST(Normals, CubeCornerAngleWeightedNormalIsDiagonal) {
     // Each of the three faces meets the corner at a right angle, however it is triangulated.
     expect_near(vn[6], glm::normalize(glm::vec3(1, 1, 1)));
     expect_near(vn[0], glm::normalize(glm::vec3(-1, -1, -1)));
-    for (size_t v = 0; v < 8; ++v)
-        expect_near(vn[v], glm::normalize(m.positions[v] - glm::vec3(0.5f)));
+    for (size_t v = 0; v < 8; ++v) expect_near(vn[v], glm::normalize(m.positions[v] - glm::vec3(0.5f)));
 }
 
 TEST(Normals, DegenerateFaceGivesZeroNormalWithoutNaN) {
@@ -117,8 +115,7 @@ TEST(Normals, LargeMeshIsDeterministic) {
     Mesh m;
     const int n = 300;
     for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-            m.positions.emplace_back(i, j, std::sin(0.1f * i) * std::cos(0.07f * j));
+        for (int i = 0; i <= n; ++i) m.positions.emplace_back(i, j, std::sin(0.1f * i) * std::cos(0.07f * j));
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;

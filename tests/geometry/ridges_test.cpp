@@ -82,9 +82,8 @@ TEST(Ridges, NoneOnSphere) {
 TEST(Ridges, BadMeshesGiveResultsWithoutCrashing) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0.3f}, {0.5f, -1, 0.2f}, {0.5f, 0, 1},
-                   {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0}, {9, 9, 9}};
-    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {1, 1, 2}, {0, 1, 99},
-                   {2, 4, 6}, {0, 6, 2}, {3, 4, 7}};
+                   {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0},     {9, 9, 9}};
+    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {1, 1, 2}, {0, 1, 99}, {2, 4, 6}, {0, 6, 2}, {3, 4, 7}};
     m.normals = angle_weighted_vertex_normals(m);
     const Curvature c = compute_curvature(m, m.normals);
     const RidgeLines lines = extract_ridges(m, c, {.threshold = 0.0f});

@@ -24,8 +24,7 @@ glm::vec2 project(const Camera& camera, const glm::vec3& p) {
     return glm::vec2(clip) / clip.w * (0.5f * kImage);
 }
 
-Camera ortho_camera(const glm::vec3& eye, const glm::vec3& target = glm::vec3(0.0f),
-                    float height = 2.6f) {
+Camera ortho_camera(const glm::vec3& eye, const glm::vec3& target = glm::vec3(0.0f), float height = 2.6f) {
     Camera c;
     c.eye = eye;
     c.target = target;
@@ -44,8 +43,8 @@ Camera perspective_camera(const glm::vec3& eye, const glm::vec3& target = glm::v
 
 // Height field z = A sin(k x) over [−1.2, 1.2] × [−0.5, 0.5], `nx` × `ny` quads, analytic normals.
 struct Wave {
-    float k = 2.0f * kPi;     // one period per unit of x: inflections at x = n/2
-    float A = 0.5f / k;       // steepest slope A k = 0.5 (26.6°)
+    float k = 2.0f * kPi;  // one period per unit of x: inflections at x = n/2
+    float A = 0.5f / k;    // steepest slope A k = 0.5 (26.6°)
     Mesh mesh(int nx = 240, int ny = 50) const {
         Mesh m;
         for (int j = 0; j <= ny; ++j)
@@ -66,8 +65,7 @@ struct Wave {
 
 using test::cylinder;
 
-std::vector<LineSegment> suggestive(const Mesh& m, const Camera& camera,
-                                    const SuggestiveOptions& options = {}) {
+std::vector<LineSegment> suggestive(const Mesh& m, const Camera& camera, const SuggestiveOptions& options = {}) {
     return extract_suggestive_contours(m, m.normals, compute_curvature(m, m.normals), camera, options);
 }
 
@@ -87,7 +85,7 @@ TEST(SuggestiveContours, WaveLinesLieOnTheQualifyingInflectionsOnly) {
         const auto segs = extract_suggestive_contours(m, m.normals, curvature, camera);
         ASSERT_FALSE(segs.empty()) << beta_deg;
         const int parity = beta_deg > 0 ? 0 : 1;  // which inflections n qualify (n mod 2)
-        std::map<int, double> length;  // per qualifying inflection, inside the margin
+        std::map<int, double> length;             // per qualifying inflection, inside the margin
         for (const LineSegment& s : segs) {
             EXPECT_GE(s.strength_a, 0.0f);
             EXPECT_LE(s.strength_a, 1.0f);
@@ -152,16 +150,14 @@ TEST(SuggestiveContours, NoneOnCylinderWhereRadialCurvatureTouchesZero) {
     const Curvature curvature = compute_curvature(m, m.normals);
     const glm::vec3 centre(0, 0, 2);
     size_t untrimmed = 0;
-    for (const Camera& camera :
-         {ortho_camera({5, 0, 2}, centre, 5.0f), ortho_camera({3, 2, 5}, centre, 5.0f),
-          perspective_camera({4, 1, 2}, centre), perspective_camera({2, -3, 6}, centre)}) {
+    for (const Camera& camera : {ortho_camera({5, 0, 2}, centre, 5.0f), ortho_camera({3, 2, 5}, centre, 5.0f),
+                                 perspective_camera({4, 1, 2}, centre), perspective_camera({2, -3, 6}, centre)}) {
         const auto segs = extract_suggestive_contours(m, m.normals, curvature, camera);
-        EXPECT_TRUE(segs.empty()) << segs.size() << " segments, eye " << camera.eye.x << ","
-                                  << camera.eye.y << "," << camera.eye.z;
+        EXPECT_TRUE(segs.empty()) << segs.size() << " segments, eye " << camera.eye.x << "," << camera.eye.y << ","
+                                  << camera.eye.z;
         // The noisy zero crossings are there: only the trim removes them.
-        untrimmed += extract_suggestive_contours(m, m.normals, curvature, camera,
-                                                 {.threshold = -1e6f, .fade = 0.0f})
-                         .size();
+        untrimmed +=
+            extract_suggestive_contours(m, m.normals, curvature, camera, {.threshold = -1e6f, .fade = 0.0f}).size();
     }
     EXPECT_GT(untrimmed, 10u);
 }
@@ -192,8 +188,8 @@ TEST(SuggestiveContours, NeighbouringSegmentsShareEndpointsAndStrengths) {
     size_t shared = 0;
     for (const LineSegment& s : segs) {
         EXPECT_NE(s.edge_a, s.edge_b);
-        for (const auto& [key, p, w] : {std::tuple{s.edge_a, s.a, s.strength_a},
-                                        std::tuple{s.edge_b, s.b, s.strength_b}}) {
+        for (const auto& [key, p, w] :
+             {std::tuple{s.edge_a, s.a, s.strength_a}, std::tuple{s.edge_b, s.b, s.strength_b}}) {
             const auto [it, inserted] = at.emplace(key, std::pair{p, w});
             if (!inserted) {
                 ++shared;
@@ -223,8 +219,8 @@ TEST(SuggestiveContours, ThresholdTrimsAndFadeSetsStrength) {
     // runs into the contour (n·v = 0); without fading all strengths are 1.
     size_t faded = 0;
     for (const LineSegment& s : normal)
-        for (const auto& [key, strength, end] : {std::tuple{s.edge_a, s.strength_a, 0u},
-                                                 std::tuple{s.edge_b, s.strength_b, 1u}}) {
+        for (const auto& [key, strength, end] :
+             {std::tuple{s.edge_a, s.strength_a, 0u}, std::tuple{s.edge_b, s.strength_b, 1u}}) {
             if (key != face_interior_key(s.face, end)) continue;
             EXPECT_TRUE(strength < 1e-3f || strength == 1.0f) << strength;
             faded += strength < 1e-3f;
@@ -254,9 +250,8 @@ TEST(SuggestiveContours, RadialCurvatureMatchesCylinderAndSphere) {
         EXPECT_NEAR(rc.ndotv[i], glm::dot(n, v), 1e-5f);
     }
     const Mesh sphere = builtin::sphere(64, 128, 2.0f);
-    const RadialCurvature rs =
-        radial_curvature(sphere, sphere.normals, compute_curvature(sphere, sphere.normals),
-                         perspective_camera({1, 2, 6}));
+    const RadialCurvature rs = radial_curvature(sphere, sphere.normals, compute_curvature(sphere, sphere.normals),
+                                                perspective_camera({1, 2, 6}));
     for (size_t i = 0; i < sphere.vertex_count(); ++i) {
         EXPECT_NEAR(rs.kr[i], 0.5f, 0.01f) << i;
         EXPECT_NEAR(rs.dw_kr[i], 0.0f, 0.01f) << i;
@@ -302,13 +297,12 @@ TEST(SuggestiveContours, DerivativeMatchesAnalyticTorusAtZeros) {
 TEST(SuggestiveContours, BadMeshesGiveResultsWithoutCrashing) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0.3f}, {0.5f, -1, 0.2f}, {0.5f, 0, 1},
-                   {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0}, {9, 9, 9}};
-    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {1, 1, 2}, {0, 1, 99},
-                   {2, 4, 6}, {0, 6, 2}, {3, 4, 7}};
+                   {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0},     {9, 9, 9}};
+    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {1, 1, 2}, {0, 1, 99}, {2, 4, 6}, {0, 6, 2}, {3, 4, 7}};
     m.normals = angle_weighted_vertex_normals(m);
     const Curvature c = compute_curvature(m, m.normals);
-    for (const Camera& camera : {ortho_camera({0, 0, 5}), perspective_camera({1, 2, 3}),
-                                 perspective_camera({0, 0, 0})}) {  // eye on a vertex
+    for (const Camera& camera :
+         {ortho_camera({0, 0, 5}), perspective_camera({1, 2, 3}), perspective_camera({0, 0, 0})}) {  // eye on a vertex
         const auto segs = extract_suggestive_contours(m, m.normals, c, camera, {.threshold = -1e6f});
         for (const LineSegment& s : segs) {
             EXPECT_NE(s.edge_a, s.edge_b);
@@ -319,8 +313,7 @@ TEST(SuggestiveContours, BadMeshesGiveResultsWithoutCrashing) {
         for (const float k : rc.kr) EXPECT_TRUE(std::isfinite(k));
     }
     EXPECT_THROW(extract_suggestive_contours(m, {}, c, ortho_camera({0, 0, 5})), std::invalid_argument);
-    EXPECT_THROW(radial_curvature(m, m.normals, Curvature{}, ortho_camera({0, 0, 5})),
-                 std::invalid_argument);
+    EXPECT_THROW(radial_curvature(m, m.normals, Curvature{}, ortho_camera({0, 0, 5})), std::invalid_argument);
     EXPECT_TRUE(suggestive(Mesh{}, ortho_camera({0, 0, 5})).empty());
 }
 

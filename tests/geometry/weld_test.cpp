@@ -51,8 +51,7 @@ TEST(Weld, TrianglesKeepTheirCorners) {
     const Mesh before = m;
     weld(m);
     for (size_t f = 0; f < m.triangle_count(); ++f)
-        for (int k = 0; k < 3; ++k)
-            EXPECT_EQ(m.positions[m.triangles[f][k]], before.positions[before.triangles[f][k]]);
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(m.positions[m.triangles[f][k]], before.positions[before.triangles[f][k]]);
 }
 
 TEST(Weld, FirstVertexAttributesAreKept) {

@@ -139,7 +139,8 @@ TEST_F(AssimpReader, ColladaNodesMaterialsAndTexturesLoad) {
     EXPECT_TRUE(corner);
     // Counter-clockwise seen from +z: the face normal of the first triangle points at +z.
     const glm::uvec3 t = mesh.triangles[0];
-    const glm::vec3 n = glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
+    const glm::vec3 n =
+        glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
     EXPECT_GT(n.z, 0.0f);
 }
 

@@ -75,17 +75,20 @@ TEST(FuzzRegressions, PngChunkClaimingGigabytesIsRefusedBeforeDecoding) {
     std::string problem;
     const std::string png = png_with_chunk_length("IDAT", 0x70000000u);
     EXPECT_EQ(decode_texture_for_test(png, problem), nullptr);
-    EXPECT_NE(problem.find("PNG chunk of 1879048192 bytes at offset 33 runs past the end"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("PNG chunk of 1879048192 bytes at offset 33 runs past the end"), std::string::npos)
+        << problem;
 
     // Through a reader: the texture is a warning, the mesh loads.
     TempDir dir;
     dir.write("t.png", png);
-    const std::string ply = "ply\nformat ascii 1.0\ncomment TextureFile t.png\nelement vertex 3\nproperty float x\n"
-                            "property float y\nproperty float z\nproperty float u\nproperty float v\nelement face 1\n"
-                            "property list uchar int vertex_indices\nend_header\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n";
+    const std::string ply =
+        "ply\nformat ascii 1.0\ncomment TextureFile t.png\nelement vertex 3\nproperty float x\n"
+        "property float y\nproperty float z\nproperty float u\nproperty float v\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n";
     Mesh m = load_mesh(dir.write("tri.ply", ply));
     ASSERT_EQ(m.warnings.size(), 1u);
-    EXPECT_NE(m.warnings[0].find("texture 't.png' not loaded (corrupt image data (PNG chunk"), std::string::npos) << m.warnings[0];
+    EXPECT_NE(m.warnings[0].find("texture 't.png' not loaded (corrupt image data (PNG chunk"), std::string::npos)
+        << m.warnings[0];
 }
 
 // The issue's "a 2 GiB claim in a 1 KiB file is refused instantly", for images: the header's
@@ -99,7 +102,8 @@ TEST(FuzzRegressions, ImageClaimingMorePixelsThanItsBytesHoldIsRefused) {
     }
     std::string problem;
     EXPECT_EQ(decode_texture_for_test(png, problem), nullptr);
-    EXPECT_NE(problem.find("16384 x 16384 pixels cannot be encoded in " + std::to_string(png.size()) + " bytes"), std::string::npos)
+    EXPECT_NE(problem.find("16384 x 16384 pixels cannot be encoded in " + std::to_string(png.size()) + " bytes"),
+              std::string::npos)
         << problem;
     // The real 2 x 2 image still decodes.
     EXPECT_NE(decode_texture_for_test(png_bytes(2, 2, kTexturePixels), problem), nullptr) << problem;
@@ -112,10 +116,12 @@ TEST(FuzzRegressions, CoordinatesBeyond1e15AreRefusedAndLargeModelsDrawFinitely)
     TempDir dir;
     EXPECT_TRUE(LoadFailsWith(dir.write("far.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 -1e34 0\n3 0 1 2\n"),
                               "vertex 2 has a coordinate beyond +-1e15 (too large to draw)"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("far2.off", "OFF\n3 1 0\n0 0 0\n2e15 0 0\n0 1 0\n3 0 1 2\n"), "vertex 1 has a coordinate beyond"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("far2.off", "OFF\n3 1 0\n0 0 0\n2e15 0 0\n0 1 0\n3 0 1 2\n"),
+                              "vertex 1 has a coordinate beyond"));
 
     std::string off = cube_off();
-    for (const char* from : {"\n0 0 1\n", "\n1 1 1\n"}) off.replace(off.find(from), 7, std::string(from).replace(1, 1, "-1e15"));
+    for (const char* from : {"\n0 0 1\n", "\n1 1 1\n"})
+        off.replace(off.find(from), 7, std::string(from).replace(1, 1, "-1e15"));
     const Mesh mesh = load_mesh(dir.write("large.off", off));
     LineExtractor extractor(mesh);
     const Camera camera = frame_camera(mesh.bounds(), {}, 1.0f);
@@ -144,8 +150,9 @@ TEST(FuzzRegressions, ObjLoneCarriageReturnEndsALineForThePrescanToo) {
     TempDir dir;
     EXPECT_TRUE(LoadFailsWith(dir.write("cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\r# note\rf 1 2 9\r"),
                               "face refers to vertex 9 but the file has only 3 at line 5"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("cr2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n# note\rvw 1 1e400 1\rt x 1/1/0 99999999\rf 1 2 x\n"),
-                              "bad face index 'x'"));
+    EXPECT_TRUE(LoadFailsWith(
+        dir.write("cr2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n# note\rvw 1 1e400 1\rt x 1/1/0 99999999\rf 1 2 x\n"),
+        "bad face index 'x'"));
     Mesh m = load_mesh(dir.write("mac.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r"));
     EXPECT_EQ(m.triangle_count(), 1u);
 }
@@ -158,8 +165,9 @@ TEST(FuzzRegressions, ObjAndMtlNumbersWithTenDigitExponentsAreRefused) {
     dir.write("m.mtl", "newmtl red\n# Kd 1e9999999999 in a comment is fine\nKd 1e2147483648 0 0\n");
     EXPECT_TRUE(LoadFailsWith(dir.write("mtl.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n"),
                               "material library 'm.mtl': number with a 10-digit exponent at line 3"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1E-0000000001\nf 1//1 2//1 3//1\n"),
-                              "number with a 10-digit exponent at line 4"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1E-0000000001\nf 1//1 2//1 3//1\n"),
+                      "number with a 10-digit exponent at line 4"));
     dir.write("ok.mtl", "newmtl red\nKd 1e0 0.5e-1 1E+2\n");
     Mesh m = load_mesh(dir.write("ok.obj", "mtllib ok.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n"));
     ASSERT_EQ(m.materials.size(), 1u);
@@ -217,7 +225,8 @@ TEST(InputLimits, StlClaimingTwoBillionTrianglesInATinyFileIsRefused) {
     std::string stl = binary_stl(cube_soup());
     stl.resize(84 + 50);  // one record
     for (int k = 0; k < 4; ++k) stl[80 + size_t(k)] = char(0x7fffffffu >> (8 * k));
-    expect_refused_without_allocating(dir.write("claim.stl", stl), "header claims 2147483647 triangles but file has room for 1");
+    expect_refused_without_allocating(dir.write("claim.stl", stl),
+                                      "header claims 2147483647 triangles but file has room for 1");
 }
 
 TEST(InputLimits, PlyAndOffClaimingTwoBillionElementsAreRefused) {
@@ -238,7 +247,8 @@ TEST(InputLimits, GlbAndAccessorsClaimingGigabytesAreRefused) {
     TempDir dir;
     std::string glb = textured_quad().glb();
     for (int k = 0; k < 4; ++k) glb[8 + size_t(k)] = char(0x80000000u >> (8 * k));  // total length 2 GiB
-    expect_refused_without_allocating(dir.write("length.glb", glb), "truncated GLB: the header says 2147483648 bytes but the file has");
+    expect_refused_without_allocating(dir.write("length.glb", glb),
+                                      "truncated GLB: the header says 2147483648 bytes but the file has");
     GltfBuilder g = textured_quad();
     g.doc["accessors"][0]["count"] = 2147483648LL;
     expect_refused_without_allocating(dir.write("count.glb", g.glb()), "claims 2147483648 elements (limit 805306368)");
@@ -277,7 +287,8 @@ TEST(InputLimits, DeeplyNestedGltfJsonIsRefusedBeforeTheStackOverflows) {
     EXPECT_TRUE(LoadFailsWith(dir.write("deep.gltf", json), "JSON nested deeper than 512 levels at byte"));
     g.doc["extensions"]["X"] = nlohmann::json::object();
     nlohmann::json* leaf = &g.doc["extensions"]["X"];
-    for (int i = 0; i < 600; ++i) leaf = &((*leaf)["a\"[{"] = nlohmann::json::object());  // brackets in keys do not count
+    for (int i = 0; i < 600; ++i)
+        leaf = &((*leaf)["a\"[{"] = nlohmann::json::object());  // brackets in keys do not count
     EXPECT_TRUE(LoadFailsWith(dir.write("deep.glb", g.glb()), "JSON nested deeper than 512 levels"));
     g = textured_quad();
     g.doc["extras"] = nlohmann::json::parse(std::string(500, '[') + std::string(500, ']'));

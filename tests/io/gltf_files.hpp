@@ -42,8 +42,11 @@ inline std::string base64(const std::string& in) {
 // An RGBA8 PNG (rows top first) through stb_image_write, as the texture tests' input.
 inline std::string png_bytes(int w, int h, const std::vector<uint8_t>& rgba) {
     std::string out;
-    stbi_write_png_to_func([](void* ctx, void* data, int size) { static_cast<std::string*>(ctx)->append(static_cast<char*>(data), size_t(size)); },
-                           &out, w, h, 4, rgba.data(), w * 4);
+    stbi_write_png_to_func(
+        [](void* ctx, void* data, int size) {
+        static_cast<std::string*>(ctx)->append(static_cast<char*>(data), size_t(size));
+        },
+        &out, w, h, 4, rgba.data(), w * 4);
     return out;
 }
 
@@ -64,7 +67,8 @@ public:
         doc["bufferViews"].push_back(v);
         return int(doc["bufferViews"].size()) - 1;
     }
-    int accessor(int view, int component_type, size_t count, const std::string& type, bool normalized = false, size_t offset = 0) {
+    int accessor(int view, int component_type, size_t count, const std::string& type, bool normalized = false,
+                 size_t offset = 0) {
         nlohmann::json a = {{"componentType", component_type}, {"count", count}, {"type", type}};
         if (view >= 0) a["bufferView"] = view;
         if (offset) a["byteOffset"] = offset;
@@ -73,7 +77,8 @@ public:
         return int(doc["accessors"].size()) - 1;
     }
     template <class T>
-    int data(const std::vector<T>& values, int component_type, size_t components, const std::string& type, bool normalized = false) {
+    int data(const std::vector<T>& values, int component_type, size_t components, const std::string& type,
+             bool normalized = false) {
         int v = view(values.data(), values.size() * sizeof(T));
         return accessor(v, component_type, values.size() / components, type, normalized);
     }

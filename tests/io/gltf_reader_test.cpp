@@ -97,12 +97,14 @@ TEST(GltfReader, MissingOrCorruptTextureIsAWarningAndTheBaseColourStays) {
     ASSERT_EQ(m.materials.size(), 1u);
     EXPECT_FALSE(m.materials[0].texture);
     EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.5f, 0.25f, 1.0f));
-    EXPECT_TRUE(has_warning(m, dir.file("quad.gltf") + ": texture 'quad.png' not loaded (file not found)")) << ::testing::PrintToString(m.warnings);
+    EXPECT_TRUE(has_warning(m, dir.file("quad.gltf") + ": texture 'quad.png' not loaded (file not found)"))
+        << ::testing::PrintToString(m.warnings);
 
     dir.write("quad.png", "not a png at all");
     Mesh bad = load_mesh(dir.file("quad.gltf"));
     EXPECT_FALSE(bad.materials[0].texture);
-    EXPECT_TRUE(has_warning(bad, "texture 'quad.png' not loaded (not a decodable image")) << ::testing::PrintToString(bad.warnings);
+    EXPECT_TRUE(has_warning(bad, "texture 'quad.png' not loaded (not a decodable image"))
+        << ::testing::PrintToString(bad.warnings);
 
     GltfBuilder g = textured_quad();
     g.doc["bufferViews"][3]["byteLength"] = 1000000;  // the PNG's bufferView runs past the buffer
@@ -126,8 +128,8 @@ TEST(GltfReader, NodeHierarchyAppliesTranslationRotationScaleAndMatrix) {
     ASSERT_EQ(m.vertex_count(), 6u);
     ASSERT_EQ(m.triangle_count(), 2u);
     expect_near(m.positions[0], {10, 0, 0});
-    expect_near(m.positions[1], {10, 2, 0});   // (1,0,0) scaled 2, rotated to +y, moved +10 x
-    expect_near(m.positions[2], {8, 0, 0});    // (0,1,0) -> (0,2,0) -> (-2,0,0)
+    expect_near(m.positions[1], {10, 2, 0});  // (1,0,0) scaled 2, rotated to +y, moved +10 x
+    expect_near(m.positions[2], {8, 0, 0});   // (0,1,0) -> (0,2,0) -> (-2,0,0)
     expect_near(m.positions[3], {10, 5, 0});
     expect_near(m.positions[4], {11, 5, 0});
     expect_near(m.positions[5], {10, 6, 0});
@@ -225,8 +227,8 @@ TEST(GltfReader, VertexColoursAreNormalizedAndMultiplyTheBaseColour) {
     EXPECT_EQ(m.colors[0], glm::vec3(0.5f, 0, 0));
     EXPECT_EQ(m.colors[1], glm::vec3(0, 1, 0));
     expect_near(m.colors[2], {0, 0, 0.2f});
-    EXPECT_EQ(m.colors[3], glm::vec3(1, 1, 0));        // default material: base colour 1
-    EXPECT_EQ(m.colors[8], glm::vec3(0.5f, 1, 1));     // no COLOR_0: its material's colour
+    EXPECT_EQ(m.colors[3], glm::vec3(1, 1, 0));     // default material: base colour 1
+    EXPECT_EQ(m.colors[8], glm::vec3(0.5f, 1, 1));  // no COLOR_0: its material's colour
 }
 
 TEST(GltfReader, SparseAccessorReplacesSelectedElements) {
@@ -249,11 +251,19 @@ json vrm0_material_properties() {
     return json::array({{{"name", "skin"},
                          {"shader", "VRM/MToon"},
                          {"floatProperties",
-                          {{"_ShadeShift", 0.2}, {"_ShadeToony", 0.5}, {"_RimFresnelPower", 3.0}, {"_RimLift", 0.1},
-                           {"_RimLightingMix", 0.5}, {"_OutlineWidth", 2.0}, {"_OutlineWidthMode", 1}, {"_OutlineColorMode", 1},
+                          {{"_ShadeShift", 0.2},
+                           {"_ShadeToony", 0.5},
+                           {"_RimFresnelPower", 3.0},
+                           {"_RimLift", 0.1},
+                           {"_RimLightingMix", 0.5},
+                           {"_OutlineWidth", 2.0},
+                           {"_OutlineWidthMode", 1},
+                           {"_OutlineColorMode", 1},
                            {"_OutlineLightingMix", 0.25}}},
                          {"vectorProperties",
-                          {{"_Color", {0.5, 1, 1, 1}}, {"_ShadeColor", {0.5, 0.5, 1, 1}}, {"_RimColor", {1, 0, 0, 1}},
+                          {{"_Color", {0.5, 1, 1, 1}},
+                           {"_ShadeColor", {0.5, 0.5, 1, 1}},
+                           {"_RimColor", {1, 0, 0, 1}},
                            {"_OutlineColor", {0, 0.5, 0, 1}}}},
                          {"textureProperties", json::object()}}});
 }
@@ -288,11 +298,17 @@ TEST(GltfReader, VrmZeroMToonParametersAreConvertedAsThreeVrmDoes) {
 TEST(GltfReader, VrmOneMToonExtensionIsRead) {
     TempDir dir;
     GltfBuilder g = textured_quad();
-    g.doc["materials"][0]["extensions"]["VRMC_materials_mtoon"] = {
-        {"specVersion", "1.0"},           {"shadeColorFactor", {0.25, 0.5, 0.75}}, {"shadingShiftFactor", -0.1},
-        {"shadingToonyFactor", 0.95},     {"parametricRimColorFactor", {0, 1, 0}}, {"parametricRimFresnelPowerFactor", 4},
-        {"parametricRimLiftFactor", 0.3}, {"rimLightingMixFactor", 0.7},           {"outlineWidthMode", "screenCoordinates"},
-        {"outlineWidthFactor", 0.005},    {"outlineColorFactor", {1, 0, 1}}};
+    g.doc["materials"][0]["extensions"]["VRMC_materials_mtoon"] = {{"specVersion", "1.0"},
+                                                                   {"shadeColorFactor", {0.25, 0.5, 0.75}},
+                                                                   {"shadingShiftFactor", -0.1},
+                                                                   {"shadingToonyFactor", 0.95},
+                                                                   {"parametricRimColorFactor", {0, 1, 0}},
+                                                                   {"parametricRimFresnelPowerFactor", 4},
+                                                                   {"parametricRimLiftFactor", 0.3},
+                                                                   {"rimLightingMixFactor", 0.7},
+                                                                   {"outlineWidthMode", "screenCoordinates"},
+                                                                   {"outlineWidthFactor", 0.005},
+                                                                   {"outlineColorFactor", {1, 0, 1}}};
     Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
     const auto& p = m.materials[0].mtoon;
     EXPECT_EQ(p.at("shade-color"), (std::vector<float>{0.25f, 0.5f, 0.75f}));
@@ -305,7 +321,7 @@ TEST(GltfReader, VrmOneMToonExtensionIsRead) {
     EXPECT_FLOAT_EQ(p.at("outline-width-mode")[0], 2.0f);
     EXPECT_FLOAT_EQ(p.at("outline-width")[0], 0.005f);
     EXPECT_EQ(p.at("outline-color"), (std::vector<float>{1, 0, 1}));
-    EXPECT_FLOAT_EQ(p.at("outline-lighting-mix")[0], 1.0f);  // default
+    EXPECT_FLOAT_EQ(p.at("outline-lighting-mix")[0], 1.0f);           // default
     EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.5f, 0.25f, 1.0f));  // VRM 1.0 keeps the glTF base colour
 }
 
@@ -334,7 +350,8 @@ TEST(GltfReader, OnlyPointsOrLinesIsAnError) {
     GltfBuilder g;
     int pos = g.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     g.scene({g.node({{"mesh", g.mesh({{"POSITION", pos}}, -1, -1, kPoints)}})});
-    EXPECT_TRUE(LoadFailsWith(dir.write("points.glb", g.glb()), "no triangles (only point or line primitives: 1 skipped)"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("points.glb", g.glb()), "no triangles (only point or line primitives: 1 skipped)"));
 }
 
 TEST(GltfReader, TruncatedGlbIsAnError) {
@@ -342,8 +359,8 @@ TEST(GltfReader, TruncatedGlbIsAnError) {
     std::string glb = textured_quad().glb();
     EXPECT_TRUE(LoadFailsWith(dir.write("a.glb", glb.substr(0, 7)), "truncated GLB (7 bytes; the header alone is 12)"));
     EXPECT_TRUE(LoadFailsWith(dir.write("b.glb", glb.substr(0, glb.size() - 10)),
-                              "truncated GLB: the header says " + std::to_string(glb.size()) + " bytes but the file has " +
-                                  std::to_string(glb.size() - 10)));
+                              "truncated GLB: the header says " + std::to_string(glb.size()) +
+                                  " bytes but the file has " + std::to_string(glb.size() - 10)));
     // Header patched to match a cut file: the chunks themselves run past the end.
     std::string cut = glb.substr(0, 40);
     uint32_t len = 40;
@@ -369,10 +386,13 @@ TEST(GltfReader, WrongMagicOrVersionIsAnError) {
 
 TEST(GltfReader, BadJsonIsAnError) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"meshes\": [ }"), "bad JSON: parse error at line 2"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"meshes\": [ }"),
+                              "bad JSON: parse error at line 2"));
     EXPECT_TRUE(LoadFailsWith(dir.write("noasset.gltf", "{\"meshes\": []}"), "\"asset\" object not found"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("v1.gltf", "{\"asset\": {\"version\": \"1.0\"}}"), "glTF version 1.0 is not supported"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("empty.gltf", "{\"asset\": {\"version\": \"2.0\"}}"), "no triangles (the scene has no mesh)"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("v1.gltf", "{\"asset\": {\"version\": \"1.0\"}}"),
+                              "glTF version 1.0 is not supported"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("empty.gltf", "{\"asset\": {\"version\": \"2.0\"}}"),
+                              "no triangles (the scene has no mesh)"));
 }
 
 TEST(GltfReader, OutOfRangeAccessorIsAnErrorNamingTheAccessor) {
@@ -380,35 +400,45 @@ TEST(GltfReader, OutOfRangeAccessorIsAnErrorNamingTheAccessor) {
     GltfBuilder g = textured_quad();
     g.doc["accessors"][0]["count"] = 5;  // 5 positions of 12 bytes in a 48-byte bufferView
     EXPECT_TRUE(LoadFailsWith(dir.write("count.glb", g.glb()),
-                              "accessor 0 (POSITION of mesh 0 primitive 0): 5 elements of 12 bytes from offset 0 do not fit in bufferView 0 (48 bytes)"));
+                              "accessor 0 (POSITION of mesh 0 primitive 0): 5 elements of 12 bytes from offset 0 do "
+                              "not fit in bufferView 0 (48 bytes)"));
     g = textured_quad();
     g.doc["accessors"][0]["count"] = 800000000;  // checked against the bufferView before allocating 9.6 GB
-    EXPECT_TRUE(LoadFailsWith(dir.write("big.glb", g.glb()), "800000000 elements of 12 bytes from offset 0 do not fit"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("big.glb", g.glb()), "800000000 elements of 12 bytes from offset 0 do not fit"));
     g = textured_quad();
     g.doc["accessors"][0]["byteOffset"] = 4;
-    EXPECT_TRUE(LoadFailsWith(dir.write("offset.glb", g.glb()), "accessor 0 (POSITION of mesh 0 primitive 0): 4 elements of 12 bytes from offset 4"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("offset.glb", g.glb()),
+                              "accessor 0 (POSITION of mesh 0 primitive 0): 4 elements of 12 bytes from offset 4"));
     g = textured_quad();
     g.doc["accessors"][1]["bufferView"] = 99;
-    EXPECT_TRUE(LoadFailsWith(dir.write("view.glb", g.glb()), "accessor 1 (TEXCOORD_0 of mesh 0 primitive 0) refers to bufferView 99"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("view.glb", g.glb()),
+                              "accessor 1 (TEXCOORD_0 of mesh 0 primitive 0) refers to bufferView 99"));
     g = textured_quad();
     g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 42;
-    EXPECT_TRUE(LoadFailsWith(dir.write("missing.glb", g.glb()), "POSITION of mesh 0 primitive 0 refers to accessor 42 but the file has 3"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("missing.glb", g.glb()),
+                              "POSITION of mesh 0 primitive 0 refers to accessor 42 but the file has 3"));
     g = textured_quad();
     g.doc["accessors"][0]["count"] = 1000000000000LL;
     g.doc["accessors"][0].erase("bufferView");  // zeros of a huge count: refused before allocating
-    EXPECT_TRUE(LoadFailsWith(dir.write("huge.glb", g.glb()), "accessor 0 (POSITION of mesh 0 primitive 0) claims 1000000000000 elements"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("huge.glb", g.glb()),
+                              "accessor 0 (POSITION of mesh 0 primitive 0) claims 1000000000000 elements"));
     g.doc["accessors"][0]["count"] = 100000000;
-    EXPECT_TRUE(LoadFailsWith(dir.write("zeros.glb", g.glb()), "claims 100000000 elements without a bufferView (limit 4194304)"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("zeros.glb", g.glb()),
+                              "claims 100000000 elements without a bufferView (limit 4194304)"));
     g = textured_quad();
     g.doc["bufferViews"][0]["byteStride"] = 8;  // smaller than a VEC3 of floats
-    EXPECT_TRUE(LoadFailsWith(dir.write("stride.glb", g.glb()), "bufferView 0 has byteStride 8 (elements are 12 bytes)"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("stride.glb", g.glb()), "bufferView 0 has byteStride 8 (elements are 12 bytes)"));
 }
 
 TEST(GltfReader, BufferViewPastTheBufferIsAnError) {
     TempDir dir;
     GltfBuilder g = textured_quad();
     g.doc["bufferViews"][1]["byteOffset"] = 4000;
-    EXPECT_TRUE(LoadFailsWith(dir.write("view.glb", g.glb()), "accessor 1 (TEXCOORD_0 of mesh 0 primitive 0): bufferView 1 (bytes 4000..4032) is past the end of buffer 0"));
+    EXPECT_TRUE(LoadFailsWith(
+        dir.write("view.glb", g.glb()),
+        "accessor 1 (TEXCOORD_0 of mesh 0 primitive 0): bufferView 1 (bytes 4000..4032) is past the end of buffer 0"));
 }
 
 TEST(GltfReader, IndexOutOfRangeIsAnError) {
@@ -417,14 +447,18 @@ TEST(GltfReader, IndexOutOfRangeIsAnError) {
     int pos = g.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     int idx = g.data(std::vector<uint16_t>{0, 1, 3}, kUShort, 1, "SCALAR");
     g.scene({g.node({{"mesh", g.mesh({{"POSITION", pos}}, idx)}})});
-    EXPECT_TRUE(LoadFailsWith(dir.write("idx.glb", g.glb()), "accessor 1 (indices of mesh 0 primitive 0): index 2 is 3 but the primitive has 3 vertices"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("idx.glb", g.glb()),
+                      "accessor 1 (indices of mesh 0 primitive 0): index 2 is 3 but the primitive has 3 vertices"));
 }
 
 TEST(GltfReader, MissingBinFileIsAnError) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("quad.gltf", textured_quad().json_with_buffer("quad.bin")), "buffer file 'quad.bin' not found"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("quad.gltf", textured_quad().json_with_buffer("quad.bin")),
+                              "buffer file 'quad.bin' not found"));
     dir.write("short.bin", "0123");
-    EXPECT_TRUE(LoadFailsWith(dir.write("short.gltf", textured_quad().json_with_buffer("short.bin")), "buffer file size does not match"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("short.gltf", textured_quad().json_with_buffer("short.bin")),
+                              "buffer file size does not match"));
 }
 
 TEST(GltfReader, NodeCycleIsAnErrorNotAHang) {
@@ -434,7 +468,8 @@ TEST(GltfReader, NodeCycleIsAnErrorNotAHang) {
     g.node({{"mesh", mesh}, {"children", {1}}});
     g.node({{"children", {0}}});
     g.scene({0});
-    EXPECT_TRUE(LoadFailsWith(dir.write("cycle.glb", g.glb()), "node 0 is reached twice (the node hierarchy must be a tree)"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("cycle.glb", g.glb()), "node 0 is reached twice (the node hierarchy must be a tree)"));
     g.doc["nodes"][1]["children"] = {7};
     EXPECT_TRUE(LoadFailsWith(dir.write("dangling.glb", g.glb()), "scene refers to node 7 but the file has 2"));
 }
@@ -452,7 +487,8 @@ TEST(GltfReader, NonFiniteValuesAreErrors) {
     GltfBuilder g;
     int pos = g.floats({0, 0, 0, NAN, 0, 0, 0, 1, 0}, "VEC3", 3);
     g.scene({g.node({{"mesh", g.mesh({{"POSITION", pos}})}})});
-    EXPECT_TRUE(LoadFailsWith(dir.write("nan.glb", g.glb()), "accessor 0 (POSITION of mesh 0 primitive 0): element 1 is not a finite number"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("nan.glb", g.glb()),
+                              "accessor 0 (POSITION of mesh 0 primitive 0): element 1 is not a finite number"));
 }
 
 }  // namespace

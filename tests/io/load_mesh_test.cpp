@@ -23,8 +23,10 @@ TEST(LoadMesh, DirectoryIsNotAFile) {
 
 TEST(LoadMesh, UnknownExtensionListsTheSupportedOnes) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("mesh.xyz", "1 2 3\n"), "unknown file extension '.xyz' (supported: .obj .stl .ply .off .gltf .glb .vrm"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("mesh", "1 2 3\n"), "no file extension (supported: .obj .stl .ply .off .gltf .glb .vrm"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("mesh.xyz", "1 2 3\n"),
+                              "unknown file extension '.xyz' (supported: .obj .stl .ply .off .gltf .glb .vrm"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("mesh", "1 2 3\n"),
+                              "no file extension (supported: .obj .stl .ply .off .gltf .glb .vrm"));
 }
 
 TEST(LoadMesh, ExtensionIsCaseInsensitive) {
@@ -35,7 +37,8 @@ TEST(LoadMesh, ExtensionIsCaseInsensitive) {
 
 TEST(LoadMesh, EmptyFileOfEveryFormatIsAnError) {
     TempDir dir;
-    for (const char* name : {"e.obj", "e.stl", "e.ply", "e.off"}) EXPECT_TRUE(LoadFailsWith(dir.write(name, ""), "empty file"));
+    for (const char* name : {"e.obj", "e.stl", "e.ply", "e.off"})
+        EXPECT_TRUE(LoadFailsWith(dir.write(name, ""), "empty file"));
 }
 
 TEST(LoadMesh, BuiltinModelsLoadByName) {
@@ -63,8 +66,9 @@ TEST(LoadMesh, NormalsAreComputedUnlessDisabled) {
 
 TEST(LoadMesh, ZeroAreaAndDuplicateFacesLoad) {
     TempDir dir;
-    std::string s = "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n0 0 1\n"
-                    "3 0 1 2\n3 0 1 2\n3 0 1 3\n3 4 4 4\n";  // duplicate, collinear, collapsed
+    std::string s =
+        "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n0 0 1\n"
+        "3 0 1 2\n3 0 1 2\n3 0 1 3\n3 4 4 4\n";  // duplicate, collinear, collapsed
     Mesh m = load_mesh(dir.write("degenerate.off", s));
     EXPECT_EQ(m.triangle_count(), 4u);
     EXPECT_EQ(m.normals.size(), m.vertex_count());
@@ -74,8 +78,9 @@ TEST(LoadMesh, ZeroAreaAndDuplicateFacesLoad) {
 TEST(LoadMesh, NonManifoldMeshLoads) {
     TempDir dir;
     // Three triangles sharing the edge 0-1, and a bow tie meeting at vertex 0.
-    std::string s = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv -1 0 0\nv -1 -1 1\n"
-                    "f 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 6 7\n";
+    std::string s =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv -1 0 0\nv -1 -1 1\n"
+        "f 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 6 7\n";
     Mesh m = load_mesh(dir.write("nonmanifold.obj", s));
     EXPECT_EQ(m.vertex_count(), 7u);
     EXPECT_EQ(m.triangle_count(), 4u);
@@ -83,9 +88,10 @@ TEST(LoadMesh, NonManifoldMeshLoads) {
 
 TEST(LoadMesh, UnsharedPlyTrianglesAreWeldedAsASoup) {
     TempDir dir;
-    std::string s = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
-                    "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
-                    "0 0 0\n1 0 0\n1 1 0\n0 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 3 4 5\n";
+    std::string s =
+        "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n1 1 0\n0 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 3 4 5\n";
     Mesh m = load_mesh(dir.write("soup.ply", s));
     EXPECT_EQ(m.vertex_count(), 4u);
     EXPECT_TRUE(m.welded);
@@ -104,10 +110,13 @@ TEST(LoadMesh, WeldEpsilonIsRelativeToTheBoundingBox) {
 
 TEST(LoadMesh, EveryFormatGivesTheSameCube) {
     TempDir dir;
-    for (auto [name, bytes] : std::vector<std::pair<std::string, std::string>>{
-             {"a.obj", cube_obj()}, {"b.stl", cube_ascii_stl()}, {"c.stl", cube_binary_stl()},
-             {"d.ply", cube_ascii_ply()}, {"e.ply", cube_binary_ply(false)}, {"f.ply", cube_binary_ply(true)},
-             {"g.off", cube_off()}}) {
+    for (auto [name, bytes] : std::vector<std::pair<std::string, std::string>>{{"a.obj", cube_obj()},
+                                                                               {"b.stl", cube_ascii_stl()},
+                                                                               {"c.stl", cube_binary_stl()},
+                                                                               {"d.ply", cube_ascii_ply()},
+                                                                               {"e.ply", cube_binary_ply(false)},
+                                                                               {"f.ply", cube_binary_ply(true)},
+                                                                               {"g.off", cube_off()}}) {
         Mesh m = load_mesh(dir.write(name, bytes));
         EXPECT_EQ(m.vertex_count(), 8u) << name;
         EXPECT_EQ(m.triangle_count(), 12u) << name;

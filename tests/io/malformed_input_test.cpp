@@ -50,20 +50,29 @@ TEST(MalformedInput, DamagedValidFilesFailCleanly) {
     TempDir dir;
     std::mt19937 rng(99);
     const std::vector<std::pair<std::string, std::string>> originals = {
-        {".obj", cube_obj()}, {".stl", cube_ascii_stl()}, {".stl", cube_binary_stl()},
+        {".obj", cube_obj()},       {".stl", cube_ascii_stl()},       {".stl", cube_binary_stl()},
         {".ply", cube_ascii_ply()}, {".ply", cube_binary_ply(false)}, {".ply", cube_binary_ply(true)},
-        {".off", cube_off()}, {".glb", textured_quad().glb()}, {".gltf", textured_quad().gltf_embedded()}};
-    const std::string tokens[] = {"-1", "0", "nan", "inf", "1e40", "2147483648", "4294967295", "99999999999", "x", "\n", " ", "/", "#"};
+        {".off", cube_off()},       {".glb", textured_quad().glb()},  {".gltf", textured_quad().gltf_embedded()}};
+    const std::string tokens[] = {"-1",          "0", "nan", "inf", "1e40", "2147483648", "4294967295",
+                                  "99999999999", "x", "\n",  " ",   "/",    "#"};
     for (const auto& [ext, original] : originals) {
         for (int i = 0; i < 300 * scale(); ++i) {
             std::string s = original;
             for (int edits = 1 + int(rng() % 3); edits > 0 && !s.empty(); --edits) {
                 size_t at = rng() % s.size();
                 switch (rng() % 4) {
-                    case 0: s[at] = char(rng()); break;                                      // flip a byte
-                    case 1: s.resize(at); break;                                             // truncate
-                    case 2: s.insert(at, tokens[rng() % std::size(tokens)]); break;          // splice a token
-                    case 3: s.erase(at, rng() % 8); break;                                   // drop bytes
+                    case 0:
+                        s[at] = char(rng());
+                        break;  // flip a byte
+                    case 1:
+                        s.resize(at);
+                        break;  // truncate
+                    case 2:
+                        s.insert(at, tokens[rng() % std::size(tokens)]);
+                        break;  // splice a token
+                    case 3:
+                        s.erase(at, rng() % 8);
+                        break;  // drop bytes
                 }
             }
             if (s.empty()) s = "x";
@@ -78,7 +87,8 @@ TEST(MalformedInput, GlbWithExtremeNumbersFailsCleanly) {
     TempDir dir;
     std::mt19937 rng(2024);
     const std::string original = textured_quad().glb();
-    const std::string numbers[] = {"0", "-1", "3", "4294967295", "4294967296", "2147483647", "99999999999999", "1e308", "0.5", "null", "\"x\""};
+    const std::string numbers[] = {"0",     "-1",  "3",    "4294967295", "4294967296", "2147483647", "99999999999999",
+                                   "1e308", "0.5", "null", "\"x\""};
     for (int i = 0; i < 300 * scale(); ++i) {
         std::string s = original;
         if (i % 3 == 0) {  // a header or chunk-table word
@@ -90,7 +100,9 @@ TEST(MalformedInput, GlbWithExtremeNumbersFailsCleanly) {
             std::memcpy(&json_length, &s[12], 4);
             std::vector<size_t> digits;
             for (size_t k = 20; k < 20 + json_length; ++k)
-                if (std::isdigit(static_cast<unsigned char>(s[k])) && !std::isdigit(static_cast<unsigned char>(s[k - 1]))) digits.push_back(k);
+                if (std::isdigit(static_cast<unsigned char>(s[k])) &&
+                    !std::isdigit(static_cast<unsigned char>(s[k - 1])))
+                    digits.push_back(k);
             size_t at = digits[rng() % digits.size()], end = at;
             while (std::isdigit(static_cast<unsigned char>(s[end])) || s[end] == '.') ++end;
             std::string json = s.substr(20, json_length);

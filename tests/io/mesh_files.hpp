@@ -17,10 +17,10 @@
 namespace inkshade::test {
 
 // Unit cube, quads counter-clockwise seen from outside.
-inline const std::vector<std::array<float, 3>> kCubeVertices = {
-    {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-inline const std::vector<std::array<uint32_t, 4>> kCubeQuads = {
-    {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
+inline const std::vector<std::array<float, 3>> kCubeVertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+inline const std::vector<std::array<uint32_t, 4>> kCubeQuads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                                {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
 
 inline std::vector<std::array<uint32_t, 3>> cube_triangles() {
     std::vector<std::array<uint32_t, 3>> t;
@@ -57,15 +57,17 @@ inline std::string cube_ascii_stl() {
     s << "solid cube\n";
     for (auto t : cube_triangles()) {
         s << "  facet normal 0 0 0\n    outer loop\n";
-        for (uint32_t i : t) s << "      vertex " << kCubeVertices[i][0] << " " << kCubeVertices[i][1] << " " << kCubeVertices[i][2] << "\n";
+        for (uint32_t i : t)
+            s << "      vertex " << kCubeVertices[i][0] << " " << kCubeVertices[i][1] << " " << kCubeVertices[i][2]
+              << "\n";
         s << "    endloop\n  endfacet\n";
     }
     s << "endsolid cube\n";
     return s.str();
 }
 
-inline std::string binary_stl(const std::vector<std::array<std::array<float, 3>, 3>>& tris, std::string header = "binary cube",
-                              int64_t claimed = -1) {
+inline std::string binary_stl(const std::vector<std::array<std::array<float, 3>, 3>>& tris,
+                              std::string header = "binary cube", int64_t claimed = -1) {
     header.resize(80, ' ');
     std::string s = header;
     put<uint32_t>(s, uint32_t(claimed < 0 ? int64_t(tris.size()) : claimed));
@@ -124,11 +126,11 @@ inline std::string cube_obj() {
 
 // load_mesh must throw InputError whose message names the file, contains `phrase` and is one line.
 inline ::testing::AssertionResult LoadFailsWith(const std::string& path, const std::string& phrase,
-                                               const LoadOptions& options = {}) {
+                                                const LoadOptions& options = {}) {
     try {
         Mesh m = load_mesh(path, options);
-        return ::testing::AssertionFailure() << "loaded " << m.triangle_count() << " triangles, expected an error with '"
-                                             << phrase << "'";
+        return ::testing::AssertionFailure()
+               << "loaded " << m.triangle_count() << " triangles, expected an error with '" << phrase << "'";
     } catch (const InputError& e) {
         std::string what = e.what();
         if (what.find(path) == std::string::npos) return ::testing::AssertionFailure() << "path missing in: " << what;

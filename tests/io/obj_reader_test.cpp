@@ -55,8 +55,9 @@ TEST(ObjReader, NegativeIndicesCountBackFromTheLastVertex) {
 TEST(ObjReader, MtlDiffuseColoursArePerFace) {
     TempDir dir;
     dir.write("colours.mtl", "newmtl red\nKd 1 0 0\n\nnewmtl blue\nKd 0 0 1\n");
-    std::string obj = "mtllib colours.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-                      "f 1 2 3\nusemtl red\nf 1 3 4\nusemtl blue\nf 1 2 3 4\n";
+    std::string obj =
+        "mtllib colours.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "f 1 2 3\nusemtl red\nf 1 3 4\nusemtl blue\nf 1 2 3 4\n";
     Mesh m = load_mesh(dir.write("coloured.obj", obj));
     ASSERT_EQ(m.triangle_count(), 4u);
     ASSERT_EQ(m.face_materials.size(), 4u);
@@ -113,7 +114,8 @@ TEST(ObjReader, MissingOrBadMapKdIsAWarningNotAFailure) {
     dir.write("mat/missing.png", "\x89PNG\r\n\x1a\n garbage");
     Mesh bad = load_mesh(obj);
     ASSERT_EQ(bad.warnings.size(), 1u);
-    EXPECT_NE(bad.warnings[0].find("texture 'missing.png' not loaded (not a decodable image"), std::string::npos) << bad.warnings[0];
+    EXPECT_NE(bad.warnings[0].find("texture 'missing.png' not loaded (not a decodable image"), std::string::npos)
+        << bad.warnings[0];
 }
 
 TEST(ObjReader, MissingMtlFileFallsBackToNoMaterials) {
@@ -125,8 +127,9 @@ TEST(ObjReader, MissingMtlFileFallsBackToNoMaterials) {
 
 TEST(ObjReader, FileNormalsAreKeptAndSplitVerticesOnlyWhereTheyDiffer) {
     TempDir dir;
-    std::string s = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 -1\nvn 0 -1 0\n"
-                    "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\n";
+    std::string s =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 -1\nvn 0 -1 0\n"
+        "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\n";
     Mesh m = load_mesh(dir.write("n.obj", s));
     ASSERT_EQ(m.triangle_count(), 2u);
     EXPECT_EQ(m.vertex_count(), 6u);  // vertices 1 and 2 differ in normal between the faces
@@ -139,8 +142,9 @@ TEST(ObjReader, FileNormalsAreKeptAndSplitVerticesOnlyWhereTheyDiffer) {
 
 TEST(ObjReader, SharedCornersStayShared) {
     TempDir dir;
-    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
-                    "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+    std::string s =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
+        "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
     Mesh m = load_mesh(dir.write("quad.obj", s));
     EXPECT_EQ(m.vertex_count(), 4u);
     ASSERT_EQ(m.uvs.size(), 4u);
@@ -159,8 +163,9 @@ TEST(ObjReader, SoupWithRepeatedPositionsIsWelded) {
     TempDir dir;
     std::string s;
     for (auto t : cube_triangles()) {
-        for (uint32_t i : t) s += "v " + std::to_string(int(kCubeVertices[i][0])) + " " + std::to_string(int(kCubeVertices[i][1])) + " " +
-                                  std::to_string(int(kCubeVertices[i][2])) + "\n";
+        for (uint32_t i : t)
+            s += "v " + std::to_string(int(kCubeVertices[i][0])) + " " + std::to_string(int(kCubeVertices[i][1])) +
+                 " " + std::to_string(int(kCubeVertices[i][2])) + "\n";
         s += "f -3 -2 -1\n";
     }
     Mesh m = load_mesh(dir.write("soup.obj", s));
@@ -219,30 +224,40 @@ TEST(ObjReader, BinaryGarbageIsNotAText) {
     std::mt19937 rng(7);
     for (int i = 0; i < 4096; ++i) garbage += char(rng());
     EXPECT_TRUE(LoadFailsWith(dir.write("garbage.obj", garbage), "not a text OBJ file"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("png.obj", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)), "not a text OBJ file (binary byte at offset 6)"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("png.obj", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)),
+                              "not a text OBJ file (binary byte at offset 6)"));
 }
 
 TEST(ObjReader, NonNumericTokensAreErrors) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("a.obj", "v 0 zero 0\n"), "expected a vertex coordinate but found 'zero' at line 1"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 three\n"), "bad face index 'three' (indices are non-zero integers) at line 4"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("a.obj", "v 0 zero 0\n"), "expected a vertex coordinate but found 'zero' at line 1"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 three\n"),
+                              "bad face index 'three' (indices are non-zero integers) at line 4"));
     EXPECT_TRUE(LoadFailsWith(dir.write("c.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3\n"), "bad face index '1/a'"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("d.obj", "v 0 0 0 0 0 0 junk\n"), "expected a vertex weight or colour but found 'junk'"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("d.obj", "v 0 0 0 0 0 0 junk\n"),
+                              "expected a vertex weight or colour but found 'junk'"));
 }
 
 TEST(ObjReader, NanAndInfCoordinatesAreErrors) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"), "vertex 1 has a non-finite coordinate at line 2"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("inf.obj", "v 0 0 0\nv 0 1 0\nv 0 0 -inf\nf 1 2 3\n"), "vertex 2 has a non-finite coordinate at line 3"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("big.obj", "v 0 0 0\nv 0 1 0\nv 0 0 1e39\nf 1 2 3\n"), "vertex 2 has a non-finite coordinate"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"),
+                              "vertex 1 has a non-finite coordinate at line 2"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("inf.obj", "v 0 0 0\nv 0 1 0\nv 0 0 -inf\nf 1 2 3\n"),
+                              "vertex 2 has a non-finite coordinate at line 3"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("big.obj", "v 0 0 0\nv 0 1 0\nv 0 0 1e39\nf 1 2 3\n"),
+                              "vertex 2 has a non-finite coordinate"));
 }
 
 TEST(ObjReader, OutOfRangeIndicesAreErrors) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("big.obj", cube_obj() + "f 1 2 9\n"), "face refers to vertex 9 but the file has only 8 at line 17"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("neg.obj", cube_obj() + "f 1 2 -9\n"), "face refers to vertex -9 but only 8 are defined before it at line 17"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("big.obj", cube_obj() + "f 1 2 9\n"),
+                              "face refers to vertex 9 but the file has only 8 at line 17"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("neg.obj", cube_obj() + "f 1 2 -9\n"),
+                              "face refers to vertex -9 but only 8 are defined before it at line 17"));
     EXPECT_TRUE(LoadFailsWith(dir.write("zero.obj", cube_obj() + "f 0 1 2\n"), "bad face index '0'"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("min.obj", cube_obj() + "f 1 2 -9223372036854775808\n"), "face refers to vertex -9223372036854775808"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("min.obj", cube_obj() + "f 1 2 -9223372036854775808\n"),
+                              "face refers to vertex -9223372036854775808"));
     EXPECT_TRUE(LoadFailsWith(dir.write("max.obj", cube_obj() + "f 1 2 99999999999999999999\n"), "bad face index"));
     EXPECT_TRUE(LoadFailsWith(dir.write("quad.obj", cube_obj() + "f 1 2 3 99\n"), "face refers to vertex 99"));
     EXPECT_TRUE(LoadFailsWith(dir.write("vn.obj", std::string(kTetrahedron) + "vn 0 0 1\nf 1//2 2//1 3//1\n"),

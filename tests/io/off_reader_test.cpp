@@ -21,8 +21,9 @@ TEST(OffReader, CubeHasExactVerticesAndFanTriangles) {
 
 TEST(OffReader, CountsOnKeywordLineCommentsAndFaceColoursAreAccepted) {
     TempDir dir;
-    std::string s = "OFF 4 2 0 # counts here\n# a comment line\n\n0 0 0\n1 0 0 # trailing comment\n1 1 0\n0 1 0\n"
-                    "3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1\n";
+    std::string s =
+        "OFF 4 2 0 # counts here\n# a comment line\n\n0 0 0\n1 0 0 # trailing comment\n1 1 0\n0 1 0\n"
+        "3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1\n";
     Mesh m = load_mesh(dir.write("quad.off", s));
     EXPECT_EQ(m.vertex_count(), 4u);
     EXPECT_EQ(m.triangle_count(), 2u);
@@ -49,7 +50,8 @@ TEST(OffReader, NoffNormalsAndStoffUvsAreKept) {
     Mesh n = io::read_off(dir.write("n.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n"));
     ASSERT_EQ(n.normals.size(), 3u);
     EXPECT_EQ(n.normals[2], glm::vec3(0, 0, 1));
-    Mesh st = io::read_off(dir.write("st.off", "STCOFF\n3 1 0\n0 0 0 1 0 0 1 0.5 0.25\n1 0 0 0 1 0 1 1 0\n0 1 0 0 0 1 1 0 1\n3 0 1 2\n"));
+    Mesh st = io::read_off(
+        dir.write("st.off", "STCOFF\n3 1 0\n0 0 0 1 0 0 1 0.5 0.25\n1 0 0 0 1 0 1 1 0\n0 1 0 0 0 1 1 0 1\n3 0 1 2\n"));
     ASSERT_EQ(st.uvs.size(), 3u);
     EXPECT_EQ(st.uvs[0], glm::vec2(0.5f, 0.25f));
     EXPECT_EQ(st.colors[1], glm::vec3(0, 1, 0));
@@ -58,15 +60,19 @@ TEST(OffReader, NoffNormalsAndStoffUvsAreKept) {
 TEST(OffReader, EmptyFileIsAnError) {
     TempDir dir;
     EXPECT_TRUE(LoadFailsWith(dir.write("empty.off", ""), "empty file"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("comments.off", "# nothing\n"), "unexpected end of file before the vertex count"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("comments.off", "# nothing\n"), "unexpected end of file before the vertex count"));
 }
 
 TEST(OffReader, TruncatedFileReportsLine) {
     TempDir dir;
     std::string s = cube_off();
-    EXPECT_TRUE(LoadFailsWith(dir.write("cut.off", s.substr(0, s.size() - 4)), "unexpected end of file while reading a vertex index at line 17"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("cut2.off", s.substr(0, s.find("1 1 1"))), "header claims 8 vertices but file has only 37 bytes"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("cut3.off", s.substr(0, s.find("4 0 3 2 1"))), "unexpected end of file while reading a face vertex count at line 12"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut.off", s.substr(0, s.size() - 4)),
+                              "unexpected end of file while reading a vertex index at line 17"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut2.off", s.substr(0, s.find("1 1 1"))),
+                              "header claims 8 vertices but file has only 37 bytes"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("cut3.off", s.substr(0, s.find("4 0 3 2 1"))),
+                              "unexpected end of file while reading a face vertex count at line 12"));
 }
 
 TEST(OffReader, NonNumericNanAndInfAreErrors) {
@@ -87,7 +93,8 @@ TEST(OffReader, OutOfRangeAndNegativeIndicesAreErrors) {
     std::string big = s, neg = s;
     big.replace(s.rfind("4 1 2 6 5"), 9, "4 1 2 6 12");
     neg.replace(s.rfind("4 1 2 6 5"), 9, "4 1 2 -3 5");
-    EXPECT_TRUE(LoadFailsWith(dir.write("big.off", big), "face 5 refers to vertex 12 but there are only 8 vertices at line 17"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("big.off", big),
+                              "face 5 refers to vertex 12 but there are only 8 vertices at line 17"));
     EXPECT_TRUE(LoadFailsWith(dir.write("neg.off", neg), "face 5 refers to vertex -3"));
 }
 

@@ -63,9 +63,13 @@ TEST(PlyReader, ColoursNormalsAndUvsAreKept) {
     EXPECT_EQ(m.uvs[2], glm::vec2(0, 1));
 }
 
-std::string textured_ply(const std::string& texture_comment, const std::string& u = "texture_u", const std::string& v = "texture_v") {
-    return "ply\nformat ascii 1.0\n" + texture_comment + "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-           "property float " + u + "\nproperty float " + v + "\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+std::string textured_ply(const std::string& texture_comment, const std::string& u = "texture_u",
+                         const std::string& v = "texture_v") {
+    return "ply\nformat ascii 1.0\n" + texture_comment +
+           "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+           "property float " +
+           u + "\nproperty float " + v +
+           "\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n";
 }
 
@@ -105,9 +109,10 @@ TEST(PlyReader, SoupWeldingKeepsUvSeamsAndMergesTheRest) {
     TempDir dir;
     // Two triangles written as a soup sharing the edge (0,0,0)-(1,1,0); the uvs agree at
     // (0,0,0) but differ at (1,1,0) (a texture seam).
-    std::string s = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
-                    "property float u\nproperty float v\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
-                    "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 0 0 0 0\n1 1 0 0.5 0.5\n0 1 0 0 1\n3 0 1 2\n3 3 4 5\n";
+    std::string s =
+        "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+        "property float u\nproperty float v\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 0 0 0 0\n1 1 0 0.5 0.5\n0 1 0 0 1\n3 0 1 2\n3 3 4 5\n";
     Mesh m = load_mesh(dir.write("seam.ply", s));
     EXPECT_TRUE(m.welded);
     ASSERT_EQ(m.vertex_count(), 5u);  // (0,0,0) merged; (1,1,0) kept twice
@@ -121,10 +126,11 @@ TEST(PlyReader, SoupWeldingKeepsUvSeamsAndMergesTheRest) {
 
 TEST(PlyReader, SoupWeldingKeepsColourBoundaries) {
     TempDir dir;
-    std::string s = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
-                    "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 2\n"
-                    "property list uchar int vertex_indices\nend_header\n"
-                    "0 0 0 255 0 0\n1 0 0 255 0 0\n1 1 0 255 0 0\n0 0 0 0 0 255\n1 1 0 0 0 255\n0 1 0 0 0 255\n3 0 1 2\n3 3 4 5\n";
+    std::string s =
+        "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 2\n"
+        "property list uchar int vertex_indices\nend_header\n"
+        "0 0 0 255 0 0\n1 0 0 255 0 0\n1 1 0 255 0 0\n0 0 0 0 0 255\n1 1 0 0 0 255\n0 1 0 0 0 255\n3 0 1 2\n3 3 4 5\n";
     Mesh m = load_mesh(dir.write("colours.ply", s));
     EXPECT_EQ(m.vertex_count(), 6u);  // every shared position changes colour: nothing merges
     for (size_t k = 0; k < 3; ++k) EXPECT_EQ(m.colors[m.triangles[1][k]], glm::vec3(0, 0, 1));
@@ -132,9 +138,10 @@ TEST(PlyReader, SoupWeldingKeepsColourBoundaries) {
 
 TEST(PlyReader, FloatColoursAreKeptAsIs) {
     TempDir dir;
-    std::string s = "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
-                    "property double z\nproperty float red\nproperty float green\nproperty float blue\n"
-                    "element face 1\nproperty list int short vertex_indices\nend_header\n";
+    std::string s =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+        "property double z\nproperty float red\nproperty float green\nproperty float blue\n"
+        "element face 1\nproperty list int short vertex_indices\nend_header\n";
     float rgb[3][3] = {{0.25f, 0.5f, 0.75f}, {1, 1, 1}, {0, 0, 0}};
     double xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     for (int i = 0; i < 3; ++i) {
@@ -197,9 +204,10 @@ TEST(PlyReader, UnknownElementsAndPropertiesAreSkipped) {
 
 TEST(PlyReader, PolygonsAreFanTriangulatedAndShortFacesDropped) {
     TempDir dir;
-    std::string s = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
-                    "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
-                    "0 0 0\n1 0 0\n1 1 0\n0.5 1.5 0\n0 1 0\n5 0 1 2 3 4\n2 0 1\n";
+    std::string s =
+        "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n1 1 0\n0.5 1.5 0\n0 1 0\n5 0 1 2 3 4\n2 0 1\n";
     Mesh m = io::read_ply(dir.write("penta.ply", s));
     ASSERT_EQ(m.triangle_count(), 3u);
     EXPECT_EQ(m.triangles[2], glm::uvec3(0, 3, 4));
@@ -229,14 +237,18 @@ TEST(PlyReader, MissingMagicIsAnError) {
 
 TEST(PlyReader, HeaderErrorsAreReportedWithLine) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("a.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), "truncated PLY header (no end_header)"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("b.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty quad x\nend_header\n"),
-                              "unknown PLY property type 'quad' at line 4"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("c.ply", "ply\nformat utf8 1.0\nend_header\n"), "unknown PLY format 'utf8' at line 2"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("a.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"),
+                              "truncated PLY header (no end_header)"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("b.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty quad x\nend_header\n"),
+                      "unknown PLY property type 'quad' at line 4"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("c.ply", "ply\nformat utf8 1.0\nend_header\n"), "unknown PLY format 'utf8' at line 2"));
     EXPECT_TRUE(LoadFailsWith(dir.write("d.ply", "ply\nformat ascii 1.0\nelement vertex many\nend_header\n"),
                               "expected an element count but found 'many' at line 3"));
-    EXPECT_TRUE(LoadFailsWith(dir.write("e.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nend_header\n1\n"),
-                              "PLY vertex element lacks x, y or z"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("e.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nend_header\n1\n"),
+                      "PLY vertex element lacks x, y or z"));
 }
 
 TEST(PlyReader, TruncatedBinaryIsAnError) {
@@ -264,8 +276,9 @@ TEST(PlyReader, HeaderClaimingTwoToThe31ElementsFailsWithoutAllocating) {
     EXPECT_TRUE(LoadFailsWith(dir.write("v.ply", v), "header claims 2147483648 vertices but file has only"));
     EXPECT_TRUE(LoadFailsWith(dir.write("f.ply", f), "header claims 2147483648 faces but file has only 102 bytes"));
     EXPECT_TRUE(LoadFailsWith(dir.write("a.ply", a), "header claims 2147483648 vertices but file has only"));
-    std::string huge_list = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                            "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+    std::string huge_list =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
     for (int k = 0; k < 9; ++k) put<float>(huge_list, float(k % 2));
     put<uint32_t>(huge_list, 0x80000000u);
     put<int32_t>(huge_list, 0);
@@ -278,11 +291,13 @@ TEST(PlyReader, OutOfRangeAndNegativeIndicesAreErrors) {
     std::string big = s, neg = s;
     big.replace(big.rfind("4 1 2 6 5"), 9, "4 1 2 6 8");
     neg.replace(neg.rfind("4 1 2 6 5"), 9, "4 1 -1 6 5");
-    EXPECT_TRUE(LoadFailsWith(dir.write("big.ply", big), "face 5 refers to vertex 8 but there are only 8 vertices at line 24"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("big.ply", big), "face 5 refers to vertex 8 but there are only 8 vertices at line 24"));
     EXPECT_TRUE(LoadFailsWith(dir.write("neg.ply", neg), "face 5 refers to vertex -1"));
     std::string bin = cube_binary_ply(true);
     bin[bin.size() - 1] = 9;  // last index of the last face, big endian low byte
-    EXPECT_TRUE(LoadFailsWith(dir.write("bin.ply", bin), "face 5 refers to vertex 9 but there are only 8 vertices at byte"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("bin.ply", bin), "face 5 refers to vertex 9 but there are only 8 vertices at byte"));
 }
 
 TEST(PlyReader, NanInfAndNonNumericValuesAreErrors) {
@@ -313,8 +328,9 @@ TEST(PlyReader, ElementsWithoutPropertiesTakeNoTimeWhateverTheirCount) {
 
 TEST(PlyReader, PointCloudHasNoTriangles) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("points.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
-                                                      "property float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n"),
+    EXPECT_TRUE(LoadFailsWith(dir.write("points.ply",
+                                        "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                                        "property float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n"),
                               "no triangles"));
 }
 

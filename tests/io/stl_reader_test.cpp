@@ -64,7 +64,9 @@ TEST(StlReader, AsciiAndBinaryGiveTheSameSoup) {
 
 TEST(StlReader, AsciiKeywordsAreCaseInsensitiveAndSolidsMayRepeat) {
     TempDir dir;
-    std::string one = "SOLID a\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\nENDLOOP\nENDFACET\nENDSOLID a\n";
+    std::string one =
+        "SOLID a\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 "
+        "0\nENDLOOP\nENDFACET\nENDSOLID a\n";
     Mesh m = io::read_stl(dir.write("two.stl", one + one));
     EXPECT_EQ(m.triangle_count(), 2u);
 }
@@ -72,7 +74,8 @@ TEST(StlReader, AsciiKeywordsAreCaseInsensitiveAndSolidsMayRepeat) {
 TEST(StlReader, AsciiPolygonFacetIsFanTriangulated) {
     TempDir dir;
     Mesh m = io::read_stl(dir.write("quad.stl",
-        "solid q\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid q\n"));
+                                    "solid q\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 "
+                                    "0\nvertex 0 1 0\nendloop\nendfacet\nendsolid q\n"));
     EXPECT_EQ(m.triangle_count(), 2u);
     EXPECT_EQ(m.triangles[1], glm::uvec3(0, 2, 3));
 }
@@ -100,7 +103,8 @@ TEST(StlReader, TruncatedAsciiReportsLine) {
     TempDir dir;
     std::string text = cube_ascii_stl();
     std::string cut = text.substr(0, text.find("endloop", text.size() / 2));
-    EXPECT_TRUE(LoadFailsWith(dir.write("cut.stl", cut), "unexpected end of file (truncated STL?) inside a facet at line"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("cut.stl", cut), "unexpected end of file (truncated STL?) inside a facet at line"));
     std::string no_end = text.substr(0, text.find("endsolid"));
     EXPECT_TRUE(LoadFailsWith(dir.write("noend.stl", no_end), "missing 'endsolid' at line"));
 }
@@ -114,8 +118,9 @@ TEST(StlReader, NonNumericCoordinateIsAnError) {
 
 TEST(StlReader, MissingCoordinateIsAnError) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("bad.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0\nvertex 1 0 0\n"),
-                              "line ends before a vertex coordinate at line 4"));
+    EXPECT_TRUE(
+        LoadFailsWith(dir.write("bad.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0\nvertex 1 0 0\n"),
+                      "line ends before a vertex coordinate at line 4"));
 }
 
 TEST(StlReader, NanAndInfCoordinatesAreErrors) {
@@ -141,7 +146,8 @@ TEST(StlReader, ZeroTrianglesIsAnError) {
 
 TEST(StlReader, GarbageAfterSolidIsAnError) {
     TempDir dir;
-    EXPECT_TRUE(LoadFailsWith(dir.write("junk.stl", "solid x\nhello world\n"), "expected 'facet' or 'endsolid' but found 'hello'"));
+    EXPECT_TRUE(LoadFailsWith(dir.write("junk.stl", "solid x\nhello world\n"),
+                              "expected 'facet' or 'endsolid' but found 'hello'"));
 }
 
 }  // namespace

@@ -92,7 +92,8 @@ LineDrawing sample_drawing() {
     LineLayer suggestive;
     suggestive.settings = {"suggestive", {{"opacity", {0.8f}}}};
     // Fades in: strength 0 → 1 along the path.
-    suggestive.visible.push_back(path({{0, 0}, {10, 0}, {20, 0}, {30, 0}, {40, 0}}, false, {0.0f, 0.25f, 0.5f, 1.0f, 1.0f}));
+    suggestive.visible.push_back(
+        path({{0, 0}, {10, 0}, {20, 0}, {30, 0}, {40, 0}}, false, {0.0f, 0.25f, 0.5f, 1.0f, 1.0f}));
     LineLayer crease;
     crease.settings = {"crease", {{"taper", {1.0f}}, {"width", {2.0f}}}};
     crease.visible.push_back(path({{0, 50}, {50, 50}, {100, 50}}, false, {1.0f, 0.5f, 0.5f}));
@@ -158,7 +159,7 @@ TEST(SvgWriter, StrengthRunsScaleOpacityOrWidth) {
     EXPECT_EQ(suggestive[0].attributes.at("stroke-opacity"), "0.1");  // 0.8 × 1/8
     EXPECT_EQ(suggestive[0].attributes.at("d"), "M0 0 L10 0");
     EXPECT_EQ(suggestive[2].attributes.at("stroke-opacity"), "0.6");  // 0.8 × 6/8
-    EXPECT_FALSE(suggestive[3].attributes.count("stroke-opacity"));    // full strength: the layer's
+    EXPECT_FALSE(suggestive[3].attributes.count("stroke-opacity"));   // full strength: the layer's
     // Runs share end points: no gap.
     EXPECT_EQ(suggestive[1].attributes.at("d"), "M10 0 L20 0");
     // Taper: width instead of opacity.

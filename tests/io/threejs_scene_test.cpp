@@ -37,16 +37,20 @@ TEST(ThreejsScene, MaterialTypesMapToModelsWithSrgbColours) {
     EXPECT_EQ(s.params.at("shininess"), ParamValue{50.0f});
     EXPECT_EQ(s.params.at("emissive-intensity"), ParamValue{2.0f});
     EXPECT_EQ(s.param_fields.at("shininess"), "material.shininess");
-    for (auto [type, model] : {std::pair{"MeshBasicMaterial", "threejs-basic"}, {"MeshLambertMaterial", "threejs-lambert"},
-                               {"MeshToonMaterial", "threejs-toon"}, {"MeshNormalMaterial", "threejs-normal"}})
+    for (auto [type, model] : {std::pair{"MeshBasicMaterial", "threejs-basic"},
+                               {"MeshLambertMaterial", "threejs-lambert"},
+                               {"MeshToonMaterial", "threejs-toon"},
+                               {"MeshNormalMaterial", "threejs-normal"}})
         EXPECT_EQ(parse(std::string(R"({"mesh": "m.obj", "material": {"type": ")") + type + "\"}}").model, model);
 }
 
 TEST(ThreejsScene, ToonGradientMapSwitchesTheMapOn) {
-    ThreejsScene s = parse(R"({"mesh": "m.obj", "material": {"type": "MeshToonMaterial", "gradientMap": [0.2, 0.6, 1]}})");
+    ThreejsScene s =
+        parse(R"({"mesh": "m.obj", "material": {"type": "MeshToonMaterial", "gradientMap": [0.2, 0.6, 1]}})");
     EXPECT_EQ(s.params.at("use-gradient-map"), ParamValue{1.0f});
     EXPECT_EQ(s.params.at("gradient-map"), (ParamValue{0.2f, 0.6f, 1.0f}));
-    EXPECT_EQ(parse(R"({"mesh": "m.obj", "material": {"type": "MeshToonMaterial"}})").params.count("use-gradient-map"), 0u);
+    EXPECT_EQ(parse(R"({"mesh": "m.obj", "material": {"type": "MeshToonMaterial"}})").params.count("use-gradient-map"),
+              0u);
 }
 
 TEST(ThreejsScene, LightsBecomeLinearColoursAndIntensities) {
@@ -55,7 +59,7 @@ TEST(ThreejsScene, LightsBecomeLinearColoursAndIntensities) {
         {"type": "PointLight", "color": [1, 0.5, 0.25], "intensity": 40, "position": [1, 2, 3], "decay": 1.5, "distance": 9}]})");
     EXPECT_EQ(s.light_type, LightType::Point);
     EXPECT_EQ(*s.light_position, glm::vec3(1, 2, 3));
-    EXPECT_EQ(s.light_color, glm::vec3(1, 0.5f, 0.25f));  // arrays are linear (Color.fromArray)
+    EXPECT_EQ(s.light_color, glm::vec3(1, 0.5f, 0.25f));             // arrays are linear (Color.fromArray)
     EXPECT_NEAR(s.ambient.r, srgb_to_linear(0x40 / 255.0f), 1e-6f);  // hex is sRGB, decoded
     EXPECT_EQ(s.params.at("ambient-intensity"), ParamValue{2.0f});
     EXPECT_EQ(s.params.at("light-intensity"), ParamValue{40.0f});
@@ -106,7 +110,9 @@ TEST(ThreejsScene, BackgroundOutlineSizeAndAntialias) {
     EXPECT_EQ(s.outline->at("alpha"), ParamValue{0.5f});
     EXPECT_EQ(*s.size, glm::ivec2(640, 480));
     EXPECT_TRUE(s.antialias);
-    EXPECT_EQ(parse(R"({"mesh": "m.obj", "material": {"type": "MeshBasicMaterial"}, "background": "transparent"})").background.a, 0.0f);
+    EXPECT_EQ(parse(R"({"mesh": "m.obj", "material": {"type": "MeshBasicMaterial"}, "background": "transparent"})")
+                  .background.a,
+              0.0f);
 }
 
 TEST(ThreejsScene, ErrorsNameTheFileAndTheField) {
@@ -114,28 +120,39 @@ TEST(ThreejsScene, ErrorsNameTheFileAndTheField) {
         std::string json, field;
     };
     const std::string m = R"("mesh": "m.obj", )";
-    for (const Case& c : std::vector<Case>{
-             {"{", "not valid JSON"},
-             {R"({"mesh": "m.obj", "size": [1e400, 1]})", "not valid JSON (number overflow"},  // found by fuzzing
-             {R"({"material": {"type": "MeshBasicMaterial"}})", "mesh"},
-             {"{" + m + R"("material": {"type": "MeshStandardMaterial"}})", "material.type"},
-             {"{" + m + R"("material": {"type": "MeshLambertMaterial", "colour": "#fff"}})", "material.colour"},
-             {"{" + m + R"("material": {"type": "MeshLambertMaterial", "color": "red"}})", "material.color"},
-             {"{" + m + R"("material": {"type": "MeshLambertMaterial", "color": [2, 0, 0]}})", "material.color"},
-             {"{" + m + R"("material": {"type": "MeshPhongMaterial", "shininess": "high"}})", "material.shininess"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "lights": [{"type": "SpotLight"}]})", "lights[0].type"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "lights": [{"type": "PointLight"}, {"type": "DirectionalLight"}]})", "lights[1]"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "lights": [{"type": "AmbientLight", "intensity": -1}]})", "lights[0].intensity"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "camera": {"type": "PerspectiveCamera"}})", "camera.position"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "camera": {"type": "PerspectiveCamera", "fov": 0, "position": [0, 0, 1]}})", "camera.fov"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "camera": {"type": "OrthographicCamera", "left": 0, "position": [0, 0, 1]}})", "camera.left"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "size": [0, 10]})", "size"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "outline": {"width": 2}})", "outline.width"},
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "fog": true})", "fog"},
-             // Keys and values with line breaks are quoted with '?' (found by fuzzing).
-             {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "\nfog": true})", "?fog: unknown field"},
-             {"{" + m + R"("material": {"type": "Mesh\r\nMaterial"}})", "'Mesh??Material'"},
-         }) {
+    for (
+        const Case& c : std::vector<Case>{
+            {"{", "not valid JSON"},
+            {R"({"mesh": "m.obj", "size": [1e400, 1]})", "not valid JSON (number overflow"},  // found by fuzzing
+            {R"({"material": {"type": "MeshBasicMaterial"}})", "mesh"},
+            {"{" + m + R"("material": {"type": "MeshStandardMaterial"}})", "material.type"},
+            {"{" + m + R"("material": {"type": "MeshLambertMaterial", "colour": "#fff"}})", "material.colour"},
+            {"{" + m + R"("material": {"type": "MeshLambertMaterial", "color": "red"}})", "material.color"},
+            {"{" + m + R"("material": {"type": "MeshLambertMaterial", "color": [2, 0, 0]}})", "material.color"},
+            {"{" + m + R"("material": {"type": "MeshPhongMaterial", "shininess": "high"}})", "material.shininess"},
+            {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "lights": [{"type": "SpotLight"}]})",
+             "lights[0].type"},
+            {"{" + m +
+                 R"("material": {"type": "MeshBasicMaterial"}, "lights": [{"type": "PointLight"}, {"type": "DirectionalLight"}]})",
+             "lights[1]"},
+            {"{" + m +
+                 R"("material": {"type": "MeshBasicMaterial"}, "lights": [{"type": "AmbientLight", "intensity": -1}]})",
+             "lights[0].intensity"},
+            {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "camera": {"type": "PerspectiveCamera"}})",
+             "camera.position"},
+            {"{" + m +
+                 R"("material": {"type": "MeshBasicMaterial"}, "camera": {"type": "PerspectiveCamera", "fov": 0, "position": [0, 0, 1]}})",
+             "camera.fov"},
+            {"{" + m +
+                 R"("material": {"type": "MeshBasicMaterial"}, "camera": {"type": "OrthographicCamera", "left": 0, "position": [0, 0, 1]}})",
+             "camera.left"},
+            {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "size": [0, 10]})", "size"},
+            {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "outline": {"width": 2}})", "outline.width"},
+            {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "fog": true})", "fog"},
+            // Keys and values with line breaks are quoted with '?' (found by fuzzing).
+            {"{" + m + R"("material": {"type": "MeshBasicMaterial"}, "\nfog": true})", "?fog: unknown field"},
+            {"{" + m + R"("material": {"type": "Mesh\r\nMaterial"}})", "'Mesh??Material'"},
+        }) {
         const std::string what = error_of(c.json);
         EXPECT_EQ(what.rfind("scene.json: ", 0), 0u) << c.json << " -> " << what;
         EXPECT_NE(what.find(c.field), std::string::npos) << c.json << " -> " << what;
@@ -145,7 +162,8 @@ TEST(ThreejsScene, ErrorsNameTheFileAndTheField) {
 
 TEST(ThreejsScene, LoadResolvesRelativeMeshPathsAgainstTheSceneFolder) {
     test::TempDir dir;
-    const std::string path = dir.write("scene.json", R"({"mesh": "models/bunny.obj", "material": {"type": "MeshBasicMaterial"}})");
+    const std::string path =
+        dir.write("scene.json", R"({"mesh": "models/bunny.obj", "material": {"type": "MeshBasicMaterial"}})");
     EXPECT_EQ(load_threejs_scene(path).mesh, dir.file("models/bunny.obj"));
     const std::string builtin = dir.write("b.json", kMinimal);
     EXPECT_EQ(load_threejs_scene(builtin).mesh, "builtin:sphere");

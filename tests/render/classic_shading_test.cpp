@@ -30,8 +30,8 @@ glm::vec3 lambert_formula(const Scene& s, const glm::vec3& n) {
 glm::vec3 specular_formula(const Scene& s, const glm::vec3& n, bool blinn, float shininess, glm::vec3 ks) {
     const glm::vec3 l = glm::normalize(s.light.position - s.light.target), v(0, 0, 1);
     if (glm::dot(n, l) <= 0.0f) return glm::vec3(0);
-    float base = blinn ? std::max(glm::dot(n, glm::normalize(l + v)), 0.0f)
-                       : std::max(glm::dot(glm::reflect(-l, n), v), 0.0f);
+    float base =
+        blinn ? std::max(glm::dot(n, glm::normalize(l + v)), 0.0f) : std::max(glm::dot(glm::reflect(-l, n), v), 0.0f);
     return ks * s.light.color * std::pow(base, shininess);
 }
 
@@ -67,9 +67,11 @@ TEST_F(ClassicShading, PhongMatchesFormulaAtSampledPixels) {
     s.shading.params["shininess"] = {20};
     s.shading.params["specular"] = {0.5f, 0.4f, 0.3f};
     Image img = render(*fine_, s);
-    EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
-                  return lambert_formula(s, n) + specular_formula(s, n, false, 20, {0.5f, 0.4f, 0.3f});
-              }),
+    EXPECT_GE(compare_on_sphere(
+                  img,
+                  [&](const glm::vec3& n) {
+        return lambert_formula(s, n) + specular_formula(s, n, false, 20, {0.5f, 0.4f, 0.3f});
+                  }),
               50);
 }
 
@@ -77,9 +79,11 @@ TEST_F(ClassicShading, BlinnPhongMatchesFormulaAtSampledPixels) {
     Scene s = make_scene("blinn-phong");
     s.shading.params["shininess"] = {60};
     Image img = render(*fine_, s);
-    EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
-                  return lambert_formula(s, n) + specular_formula(s, n, true, 60, glm::vec3(0.5f));
-              }),
+    EXPECT_GE(compare_on_sphere(
+                  img,
+                  [&](const glm::vec3& n) {
+        return lambert_formula(s, n) + specular_formula(s, n, true, 60, glm::vec3(0.5f));
+                  }),
               50);
 }
 
@@ -89,9 +93,11 @@ TEST_F(ClassicShading, PhongHasNoSpecularWhereUnlit) {
     Scene s = make_scene("phong", {1.0f, 0.3f, -0.8f});
     s.shading.params["shininess"] = {4};
     Image img = render(*fine_, s);
-    EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
-                  return lambert_formula(s, n) + specular_formula(s, n, false, 4, glm::vec3(0.5f));
-              }),
+    EXPECT_GE(compare_on_sphere(
+                  img,
+                  [&](const glm::vec3& n) {
+        return lambert_formula(s, n) + specular_formula(s, n, false, 4, glm::vec3(0.5f));
+                  }),
               50);
 }
 
@@ -117,16 +123,15 @@ TEST_F(ClassicShading, PhongHighlightPeakAtMirrorPoint) {
         glm::vec2 want = project(ortho_camera(), glm::normalize(l + v));
         glm::vec2 got = sum / float(count);
         EXPECT_GT(best, 100) << model;
-        EXPECT_LT(glm::length(got - want), 2.0f) << model << " peak at " << got.x << "," << got.y << " expected "
-                                                 << want.x << "," << want.y;
+        EXPECT_LT(glm::length(got - want), 2.0f)
+            << model << " peak at " << got.x << "," << got.y << " expected " << want.x << "," << want.y;
     }
 }
 
 // Flat and Gouraud depend on the tessellation: on a coarse sphere, ray-cast the actual
 // triangle under each pixel and evaluate the formula with its face normal (flat) or with
 // the per-vertex Lambert colours interpolated barycentrically (gouraud).
-int compare_on_mesh(const Mesh& mesh, const Image& img,
-                    const std::function<glm::vec3(const Hit&)>& expected) {
+int compare_on_mesh(const Mesh& mesh, const Image& img, const std::function<glm::vec3(const Hit&)>& expected) {
     const Camera cam = ortho_camera();
     int compared = 0;
     for (int gy = 0; gy < 32; ++gy)
@@ -155,12 +160,14 @@ TEST_F(ClassicShading, FlatIsLambertWithFaceNormals) {
     Scene s = make_scene("flat");
     Image img = render(*coarse_, s);
     const Mesh& m = *coarse_;
-    EXPECT_GE(compare_on_mesh(m, img, [&](const Hit& h) {
-                  const glm::uvec3 t = m.triangles[h.triangle];
-                  glm::vec3 n = glm::normalize(glm::cross(m.positions[t.y] - m.positions[t.x],
-                                                          m.positions[t.z] - m.positions[t.x]));
-                  return lambert_formula(s, n);
-              }),
+    EXPECT_GE(compare_on_mesh(
+                  m, img,
+                  [&](const Hit& h) {
+        const glm::uvec3 t = m.triangles[h.triangle];
+        glm::vec3 n =
+            glm::normalize(glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]));
+        return lambert_formula(s, n);
+                  }),
               50);
 }
 
@@ -168,12 +175,14 @@ TEST_F(ClassicShading, GouraudInterpolatesVertexLambert) {
     Scene s = make_scene("gouraud");
     Image img = render(*coarse_, s);
     const Mesh& m = *coarse_;
-    EXPECT_GE(compare_on_mesh(m, img, [&](const Hit& h) {
-                  const glm::uvec3 t = m.triangles[h.triangle];
-                  glm::vec3 c(0);
-                  for (int k = 0; k < 3; ++k) c += h.barycentric[k] * lambert_formula(s, glm::normalize(m.normals[t[k]]));
-                  return c;
-              }),
+    EXPECT_GE(compare_on_mesh(
+                  m, img,
+                  [&](const Hit& h) {
+        const glm::uvec3 t = m.triangles[h.triangle];
+        glm::vec3 c(0);
+        for (int k = 0; k < 3; ++k) c += h.barycentric[k] * lambert_formula(s, glm::normalize(m.normals[t[k]]));
+        return c;
+                  }),
               50);
 }
 
@@ -200,10 +209,12 @@ TEST_F(ClassicShading, NdotvViewIsCosineToViewer) {
 TEST_F(ClassicShading, WViewIsTangentProjectionOfView) {
     Scene s = make_scene("w");
     Image img = render(*fine_, s);
-    EXPECT_GE(compare_on_sphere(img, [](const glm::vec3& n) {
-                  glm::vec3 v(0, 0, 1);
-                  return 0.5f * (v - glm::dot(n, v) * n) + 0.5f;
-              }),
+    EXPECT_GE(compare_on_sphere(
+                  img,
+                  [](const glm::vec3& n) {
+        glm::vec3 v(0, 0, 1);
+        return 0.5f * (v - glm::dot(n, v) * n) + 0.5f;
+                  }),
               50);
 }
 
@@ -257,10 +268,12 @@ TEST_F(ClassicShading, SrgbOptionEncodesOutput) {
         c = std::clamp(c, 0.0f, 1.0f);
         return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
     };
-    EXPECT_GE(compare_on_sphere(img, [&](const glm::vec3& n) {
-                  glm::vec3 c = lambert_formula(s, n);
-                  return glm::vec3(srgb(c.r), srgb(c.g), srgb(c.b));
-              }),
+    EXPECT_GE(compare_on_sphere(
+                  img,
+                  [&](const glm::vec3& n) {
+        glm::vec3 c = lambert_formula(s, n);
+        return glm::vec3(srgb(c.r), srgb(c.g), srgb(c.b));
+                  }),
               50);
 }
 

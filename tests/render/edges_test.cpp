@@ -164,7 +164,7 @@ TEST(Edges, TouchingObjectsSeparatedByObjectIds) {
     materials.materials = {Material{"a", glm::vec3(1)}, Material{"b", glm::vec3(1)}};
     components.face_materials.clear();
     for (const Mesh* m : {&components, &materials}) {
-        EXPECT_GE(seam_line_pixels(*m, true), 30);   // all 31 samples along the seam
+        EXPECT_GE(seam_line_pixels(*m, true), 30);  // all 31 samples along the seam
         EXPECT_EQ(seam_line_pixels(*m, false), 0);  // depth and normals see nothing there
     }
 }

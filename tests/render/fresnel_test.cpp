@@ -32,8 +32,8 @@ glm::vec3 fresnel_formula(const Scene& s, const glm::vec3& n) {
     float f = std::pow(std::clamp(1.0f - std::abs(n.z), 0.0f, 1.0f), 2.5f);
     glm::vec3 rim = 0.9f * glow * f;
     bool add = s.shading.params.at("mode")[0] == 0.0f;
-    glm::vec3 base = add ? s.shading.base_color * (s.light.color * std::max(glm::dot(n, l), 0.0f) + s.light.ambient)
-                         : glm::vec3(0);
+    glm::vec3 base =
+        add ? s.shading.base_color * (s.light.color * std::max(glm::dot(n, l), 0.0f) + s.light.ambient) : glm::vec3(0);
     return base + rim;
 }
 
@@ -152,8 +152,7 @@ TEST_F(Fresnel, OpenHemisphereSeenFromInsideHasRimAndDarkCentre) {
     // With the base shading added, the inside is lit with the normal -p (two-sided Lambert).
     Scene a = fresnel_scene("add");
     Image lit = render(bowl, a);
-    EXPECT_GE(compare_on_disc(lit, [&](const glm::vec3& n) { return fresnel_formula(a, {-n.x, -n.y, n.z}); }),
-              50);
+    EXPECT_GE(compare_on_disc(lit, [&](const glm::vec3& n) { return fresnel_formula(a, {-n.x, -n.y, n.z}); }), 50);
 }
 
 TEST_F(Fresnel, LargerPowerNarrowsTheRim) {

@@ -21,8 +21,10 @@ glm::ivec4 get_box(GLenum name) {
 TEST(GlState, CapabilityScopeRestoresEitherValue) {
     shared_renderer();
     for (bool before : {false, true}) {
-        if (before) glEnable(GL_DITHER);
-        else glDisable(GL_DITHER);
+        if (before)
+            glEnable(GL_DITHER);
+        else
+            glDisable(GL_DITHER);
         for (bool inside : {false, true}) {
             {
                 const gpu::CapabilityScope s(GL_DITHER, inside);
@@ -44,7 +46,8 @@ TEST(GlState, DepthCullAndBlendScopesRestoreTheirState) {
     {
         const gpu::DepthScope depth(GL_LEQUAL, /*write=*/false);
         const gpu::CullScope cull(std::nullopt);
-        const gpu::BlendScope blend(gpu::BlendFunc{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});
+        const gpu::BlendScope blend(
+            gpu::BlendFunc{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});
         EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
         EXPECT_EQ(get_int(GL_DEPTH_FUNC), GL_LEQUAL);
         GLboolean write = GL_TRUE;

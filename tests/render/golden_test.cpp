@@ -186,9 +186,8 @@ TEST_P(BuiltinStyle, MatchesGolden) {
     if (!fs::exists(golden_path)) {
         fs::create_directories(out);
         write_png(actual_path.string(), actual);
-        FAIL() << "no golden image " << golden_path.string() << " for style " << gc.style << " on builtin:"
-               << gc.model << ": run make update-goldens (then look at it and commit it); actual: "
-               << actual_path.string();
+        FAIL() << "no golden image " << golden_path.string() << " for style " << gc.style << " on builtin:" << gc.model
+               << ": run make update-goldens (then look at it and commit it); actual: " << actual_path.string();
     }
     const Image golden = read_png(golden_path.string());
     if (golden.width != actual.width || golden.height != actual.height) {
@@ -247,8 +246,8 @@ TEST(GoldenFiles, NoneStale) {
     }
     std::ostringstream list;
     for (const auto& s : stale) list << " " << s;
-    EXPECT_TRUE(stale.empty()) << "golden images without a built-in style or model in " << golden_dir().string()
-                               << ":" << list.str() << " (run make update-goldens to remove them)";
+    EXPECT_TRUE(stale.empty()) << "golden images without a built-in style or model in " << golden_dir().string() << ":"
+                               << list.str() << " (run make update-goldens to remove them)";
 }
 
 }  // namespace

@@ -15,8 +15,12 @@ struct GoochParams {
     float shininess = 32.0f;
 
     ParamValues to_params() const {
-        return {{"blue", {blue}},   {"yellow", {yellow}}, {"alpha", {alpha}}, {"beta", {beta}},
-                {"specular", {specular ? 1.0f : 0.0f}}, {"shininess", {shininess}}};
+        return {{"blue", {blue}},
+                {"yellow", {yellow}},
+                {"alpha", {alpha}},
+                {"beta", {beta}},
+                {"specular", {specular ? 1.0f : 0.0f}},
+                {"shininess", {shininess}}};
     }
 };
 
@@ -46,7 +50,8 @@ glm::vec3 gooch_formula(const Scene& s, const glm::vec3& n) {
     glm::vec3 warm = glm::vec3(g.yellow, g.yellow, 0) + g.beta * kd;
     float ndotl = glm::dot(n, l), t = 0.5f * (1.0f + ndotl);
     glm::vec3 c = t * warm + (1.0f - t) * cool;
-    if (g.specular && ndotl > 0.0f) c += glm::vec3(std::pow(std::max(glm::dot(glm::reflect(-l, n), v), 0.0f), g.shininess));
+    if (g.specular && ndotl > 0.0f)
+        c += glm::vec3(std::pow(std::max(glm::dot(glm::reflect(-l, n), v), 0.0f), g.shininess));
     return c;
 }
 

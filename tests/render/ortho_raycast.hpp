@@ -17,9 +17,9 @@ namespace inkshade::test {
 
 struct SurfaceHit {
     int triangle = -1;
-    float t = 0.0f;               // distance along the view direction
-    glm::vec3 point{0.0f};        // world position
-    glm::vec3 normal{0.0f};       // interpolated vertex normal, normalised
+    float t = 0.0f;          // distance along the view direction
+    glm::vec3 point{0.0f};   // world position
+    glm::vec3 normal{0.0f};  // interpolated vertex normal, normalised
 };
 
 class OrthoRaycaster {
@@ -43,8 +43,10 @@ public:
                 lo = glm::min(lo, q);
                 hi = glm::max(hi, q);
             }
-            const int x0 = std::max(0, int(std::floor(lo.x)) / kCell), x1 = std::min(cols_ - 1, int(std::floor(hi.x)) / kCell);
-            const int y0 = std::max(0, int(std::floor(lo.y)) / kCell), y1 = std::min(rows_ - 1, int(std::floor(hi.y)) / kCell);
+            const int x0 = std::max(0, int(std::floor(lo.x)) / kCell),
+                      x1 = std::min(cols_ - 1, int(std::floor(hi.x)) / kCell);
+            const int y0 = std::max(0, int(std::floor(lo.y)) / kCell),
+                      y1 = std::min(rows_ - 1, int(std::floor(hi.y)) / kCell);
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) cells_[size_t(y) * cols_ + x].push_back(uint32_t(f));
         }
@@ -82,7 +84,8 @@ public:
             if (v < 0 || u + v > 1) continue;
             const float t = glm::dot(e2, qv) / det;
             if (best && t >= best->t) continue;
-            const glm::vec3 n = (1 - u - v) * mesh_.normals[tri.x] + u * mesh_.normals[tri.y] + v * mesh_.normals[tri.z];
+            const glm::vec3 n =
+                (1 - u - v) * mesh_.normals[tri.x] + u * mesh_.normals[tri.y] + v * mesh_.normals[tri.z];
             best = SurfaceHit{int(f), t, origin + t * forward_, glm::normalize(n)};
         }
         return best;

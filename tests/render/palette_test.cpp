@@ -19,12 +19,8 @@ struct PaletteParams {
     bool lit = false;
 
     ParamValues to_params() const {
-        return {{"a", {a.r, a.g, a.b}},
-                {"b", {b.r, b.g, b.b}},
-                {"c", {c.r, c.g, c.b}},
-                {"d", {d.r, d.g, d.b}},
-                {"driver", {float(driver)}},
-                {"lit", {lit ? 1.0f : 0.0f}}};
+        return {{"a", {a.r, a.g, a.b}}, {"b", {b.r, b.g, b.b}},      {"c", {c.r, c.g, c.b}},
+                {"d", {d.r, d.g, d.b}}, {"driver", {float(driver)}}, {"lit", {lit ? 1.0f : 0.0f}}};
     }
 };
 
@@ -51,12 +47,24 @@ glm::vec3 palette_formula(const Scene& s, const glm::vec3& n) {
     const glm::vec3 l = s.l(), v(0, 0, 1);
     float ndotl = glm::dot(n, l), t = 0;
     switch (p.driver) {
-        case kNdotl: t = std::max(ndotl, 0.0f); break;
-        case kHalfLambert: t = 0.5f * ndotl + 0.5f; break;
-        case kNdotv: t = std::max(glm::dot(n, v), 0.0f); break;
-        case kHeight: t = 0.5f * (n.y + 1.0f); break;
-        case kX: t = 0.5f * (n.x + 1.0f); break;
-        case kZ: t = 0.5f * (n.z + 1.0f); break;
+        case kNdotl:
+            t = std::max(ndotl, 0.0f);
+            break;
+        case kHalfLambert:
+            t = 0.5f * ndotl + 0.5f;
+            break;
+        case kNdotv:
+            t = std::max(glm::dot(n, v), 0.0f);
+            break;
+        case kHeight:
+            t = 0.5f * (n.y + 1.0f);
+            break;
+        case kX:
+            t = 0.5f * (n.x + 1.0f);
+            break;
+        case kZ:
+            t = 0.5f * (n.z + 1.0f);
+            break;
     }
     glm::vec3 c = p.a + p.b * glm::cos(6.28318530718f * (p.c * t + p.d));
     if (p.lit) c *= s.light.color * std::max(ndotl, 0.0f) + s.light.ambient;
@@ -64,8 +72,9 @@ glm::vec3 palette_formula(const Scene& s, const glm::vec3& n) {
 }
 
 int compare_on_sphere(const Image& img, const Scene& s) {
-    return test::compare_on_sphere(img, [&](const glm::vec3& n) { return palette_formula(s, n); }, 0.2f,
-                                   "driver " + std::to_string(int(s.palette.driver)));
+    return test::compare_on_sphere(
+        img, [&](const glm::vec3& n) { return palette_formula(s, n); }, 0.2f,
+        "driver " + std::to_string(int(s.palette.driver)));
 }
 
 class Palette : public ::testing::Test {

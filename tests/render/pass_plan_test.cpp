@@ -10,8 +10,8 @@ namespace {
 
 LineSettings line(const std::string& type) { return {type, {}}; }
 
-std::vector<std::string> pass_names(Renderer& r, const ShadingSelection& shading, const std::vector<LineSettings>& lines,
-                                    const Light& light = Light{}) {
+std::vector<std::string> pass_names(Renderer& r, const ShadingSelection& shading,
+                                    const std::vector<LineSettings>& lines, const Light& light = Light{}) {
     std::vector<PassTiming> timings;
     r.render(ortho_camera(), light, shading, lines, RenderOptions{.width = 48, .height = 48}, &timings);
     std::vector<std::string> names;
@@ -45,8 +45,8 @@ TEST(PassPlan, EveryPassOfTheKrViewWithAllLineTypes) {
     EXPECT_EQ(pass_names(r, {.model = "kr"},
                          {line("contour"), line("rim-contour"), line("edges"), line("hull"), line("threejs-outline"),
                           line("suggestive-image")}),
-              (Names{"radial-curvature", "shading", "hull", "threejs-outline", "gbuffer", "image-lines",
-                     "vector-lines", "strokes", "resolve", "readback"}));
+              (Names{"radial-curvature", "shading", "hull", "threejs-outline", "gbuffer", "image-lines", "vector-lines",
+                     "strokes", "resolve", "readback"}));
 }
 
 TEST(PassPlan, ShadowMapIsDrawnAgainOnlyForANewMeshOrLight) {

@@ -16,7 +16,7 @@ Mesh translated_sphere(glm::vec3 centre, float radius) {
 }
 
 Mesh two_spheres() {
-    Mesh m = translated_sphere({0.5f, 0.2f, -2.0f}, 0.8f);        // behind
+    Mesh m = translated_sphere({0.5f, 0.2f, -2.0f}, 0.8f);       // behind
     Mesh front = translated_sphere({-0.3f, -0.1f, 0.0f}, 0.6f);  // in front, overlapping it
     const uint32_t base = uint32_t(m.positions.size());
     m.positions.insert(m.positions.end(), front.positions.begin(), front.positions.end());

@@ -144,8 +144,8 @@ inline int compare_on_sphere(const Image& img, const std::function<glm::vec3(con
             const uint8_t* got = img.pixel(px, py);
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(int(got[c]), to_byte(want[c]), 2)
-                    << what << " pixel (" << px << "," << py << ") channel " << c << " n=(" << n->x << ","
-                    << n->y << "," << n->z << ")";
+                    << what << " pixel (" << px << "," << py << ") channel " << c << " n=(" << n->x << "," << n->y
+                    << "," << n->z << ")";
             ++compared;
         }
     return compared;

@@ -50,9 +50,12 @@ TEST(ShaderSource, EveryEmbeddedStageCompiles) {
     for (const EmbeddedFile& f : gpu::embedded_shaders()) {
         const std::string path = f.path;
         GLenum type = 0;
-        if (ends_with(path, ".vert")) type = GL_VERTEX_SHADER;
-        else if (ends_with(path, ".frag")) type = GL_FRAGMENT_SHADER;
-        else continue;
+        if (ends_with(path, ".vert"))
+            type = GL_VERTEX_SHADER;
+        else if (ends_with(path, ".frag"))
+            type = GL_FRAGMENT_SHADER;
+        else
+            continue;
         const auto shader = gpu::GlShader::create(type);
         const std::string source = gpu::shader_source(path);
         const char* text = source.c_str();

@@ -44,7 +44,8 @@ struct OrthoView {
         return a * right + b * up + std::sqrt(1.0f - d2) * back;
     }
     glm::vec2 project(const glm::vec3& p) const {
-        return {0.5f * size + glm::dot(p, right) * pixels_per_unit(), 0.5f * size - glm::dot(p, up) * pixels_per_unit()};
+        return {0.5f * size + glm::dot(p, right) * pixels_per_unit(),
+                0.5f * size - glm::dot(p, up) * pixels_per_unit()};
     }
 };
 
@@ -107,8 +108,8 @@ std::vector<Dot> find_dots(const Image& img) {
 
 // Isolated dots (not merged clusters) on the part of the sphere facing the viewer
 // (n.v > min_ndotv) whose analytic n.l lies in [lo, hi].
-std::vector<Dot> dots_in_tone_band(const std::vector<Dot>& dots, const OrthoView& view, const Scene& s,
-                                   float min_ndotv, float lo, float hi, int max_area) {
+std::vector<Dot> dots_in_tone_band(const std::vector<Dot>& dots, const OrthoView& view, const Scene& s, float min_ndotv,
+                                   float lo, float hi, int max_area) {
     std::vector<Dot> out;
     for (const Dot& d : dots) {
         if (d.touches_border || d.area > max_area) continue;
@@ -192,7 +193,8 @@ TEST_F(Stipple, DotSizeInPixelsIsStableAcrossZoom) {
     const int size = 256;
     Scene s = stipple_scene(size);
     const OrthoView wide(orbit(0.0f, 2.5f), size), close(orbit(0.0f, 1.25f), size);
-    const auto dots_wide = dots_in_tone_band(find_dots(render(fine_sphere(), s, wide.camera)), wide, s, 0.6f, 0.3f, 0.7f, 60);
+    const auto dots_wide =
+        dots_in_tone_band(find_dots(render(fine_sphere(), s, wide.camera)), wide, s, 0.6f, 0.3f, 0.7f, 60);
     const auto dots_close =
         dots_in_tone_band(find_dots(render(fine_sphere(), s, close.camera)), close, s, 0.6f, 0.3f, 0.7f, 60);
     ASSERT_GE(dots_wide.size(), 50u);
@@ -210,9 +212,11 @@ TEST_F(Stipple, DotSizeParameterSetsDotArea) {
     Scene s = stipple_scene(size);
     const OrthoView view(orbit(0.0f), size);
     s.shading.params["dot-size"] = {3.0f};
-    double small = median_area(dots_in_tone_band(find_dots(render(fine_sphere(), s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
+    double small = median_area(
+        dots_in_tone_band(find_dots(render(fine_sphere(), s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
     s.shading.params["dot-size"] = {6.0f};
-    double large = median_area(dots_in_tone_band(find_dots(render(fine_sphere(), s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
+    double large = median_area(
+        dots_in_tone_band(find_dots(render(fine_sphere(), s, view.camera)), view, s, 0.6f, 0.3f, 0.7f, 200));
     EXPECT_GT(large, 2.5 * small) << small << " px -> " << large << " px";
 }
 

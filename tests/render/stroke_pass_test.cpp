@@ -24,8 +24,7 @@ float distance_to_path(glm::vec2 p, const std::vector<glm::vec2>& pts) {
 }
 
 // Draws `paths` black on white into a kW x kW framebuffer whose depth is cleared to `depth`.
-Image draw(const std::vector<LinePath>& paths, const render::StrokeStyle& style, int samples = 4,
-           float depth = 1.0f) {
+Image draw(const std::vector<LinePath>& paths, const render::StrokeStyle& style, int samples = 4, float depth = 1.0f) {
     shared_renderer();  // a current context
     gpu::Framebuffer fb(kW, kW, samples);
     fb.bind();

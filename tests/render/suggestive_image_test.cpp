@@ -12,9 +12,9 @@
 namespace inkshade::test {
 namespace {
 
-constexpr float kK = 7.5f;         // wave number: about 60 px per period in the image
-constexpr float kA = 0.5f / kK;    // A k = 0.5 (slopes of 27 degrees)
-constexpr float kTilt = 0.610865f; // 35 degrees: tan = 0.7 > A k; n.v >= 0.47 on every slope
+constexpr float kK = 7.5f;          // wave number: about 60 px per period in the image
+constexpr float kA = 0.5f / kK;     // A k = 0.5 (slopes of 27 degrees)
+constexpr float kTilt = 0.610865f;  // 35 degrees: tan = 0.7 > A k; n.v >= 0.47 on every slope
 
 Mesh height_field() {
     Mesh m;

@@ -84,8 +84,8 @@ void expect_cells(const Image& img, glm::vec3 tint, const std::string& what) {
             const uint8_t* got = img.pixel(p.x, p.y);
             for (int k = 0; k < 3; ++k)
                 EXPECT_NEAR(int(got[k]), to_byte(srgb_decode(c[k]) * tint[k]), 2)
-                    << what << ": cell (" << col << "," << row << ") at pixel (" << p.x << "," << p.y
-                    << ") channel " << k;
+                    << what << ": cell (" << col << "," << row << ") at pixel (" << p.x << "," << p.y << ") channel "
+                    << k;
         }
 }
 
@@ -192,9 +192,9 @@ TEST(Texture, GlbQuadShowsItsTextureUpright) {
         glm::vec3 texel;
         const char* name;
     };
-    for (const Expect& e : {Expect{16, 16, {1, 0, 0}, "top-left red"}, Expect{49, 16, {0, 1, 0}, "top-right green"},
-                            Expect{16, 49, {0, 0, 1}, "bottom-left blue"},
-                            Expect{49, 49, {1, 1, 1}, "bottom-right white"}})
+    for (const Expect& e :
+         {Expect{16, 16, {1, 0, 0}, "top-left red"}, Expect{49, 16, {0, 1, 0}, "top-right green"},
+          Expect{16, 49, {0, 0, 1}, "bottom-left blue"}, Expect{49, 49, {1, 1, 1}, "bottom-right white"}})
         for (int k = 0; k < 3; ++k)
             EXPECT_NEAR(int(img.pixel(e.x, e.y)[k]), to_byte(e.texel[k] * factor[k]), 2) << e.name << " channel " << k;
 }

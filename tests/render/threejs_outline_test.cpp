@@ -23,7 +23,8 @@ ShadingSelection green() {
 }
 
 LineSettings outline(float thickness, glm::vec3 color = {0, 0, 1}, float alpha = 1.0f) {
-    return {"threejs-outline", {{"thickness", {thickness}}, {"color", {color.r, color.g, color.b}}, {"alpha", {alpha}}}};
+    return {"threejs-outline",
+            {{"thickness", {thickness}}, {"color", {color.r, color.g, color.b}}, {"alpha", {alpha}}}};
 }
 
 Image render_sphere(const Camera& camera, const LineSettings& line, int size) {

@@ -23,7 +23,9 @@ float encode(float c) {
 }
 glm::vec3 decode(glm::vec3 c) { return {decode(c.r), decode(c.g), decode(c.b)}; }
 glm::vec3 encode(glm::vec3 c) { return {encode(c.r), encode(c.g), encode(c.b)}; }
-glm::vec3 hex(uint32_t rgb) { return glm::vec3(float(rgb >> 16 & 255), float(rgb >> 8 & 255), float(rgb & 255)) / 255.0f; }
+glm::vec3 hex(uint32_t rgb) {
+    return glm::vec3(float(rgb >> 16 & 255), float(rgb >> 8 & 255), float(rgb & 255)) / 255.0f;
+}
 
 // A three.js scene as the tests set it up: the material's values as typed (sRGB), the light as
 // three.js holds it (linear colour, intensity), the Inkshade scene that renders it.
@@ -31,10 +33,10 @@ struct ThreeScene {
     std::string model;
     glm::vec3 color = hex(0xffffff), emissive = hex(0x000000), specular = hex(0x111111);
     float shininess = 30, emissive_intensity = 1;
-    std::vector<float> gradient;             // empty: MeshToonMaterial's default
-    glm::vec3 base{1.0f};                    // Inkshade base colour (stands in for vertex colours)
+    std::vector<float> gradient;  // empty: MeshToonMaterial's default
+    glm::vec3 base{1.0f};         // Inkshade base colour (stands in for vertex colours)
     bool point = false;
-    glm::vec3 light_pos{2.0f, 3.0f, 4.0f};   // directional: from here towards the origin
+    glm::vec3 light_pos{2.0f, 3.0f, 4.0f};  // directional: from here towards the origin
     glm::vec3 light_color{1.0f, 0.95f, 0.9f};
     float intensity = 2.5f, decay = 2.0f;
     glm::vec3 ambient{0.3f, 0.35f, 0.4f};

@@ -109,8 +109,7 @@ glm::vec3 lighting(const Scene& s, const glm::vec3& n) {
 
 // Cell colours of pixels away from cell borders (F2 - F1 > 0.1) match the hashed colour of
 // the CPU's F1 cell; returns how many matched.
-int expect_cells_match_reference(const Image& img, const Mesh& mesh, const Placement& where, const Scene& s,
-                                 bool lit) {
+int expect_cells_match_reference(const Image& img, const Mesh& mesh, const Placement& where, const Scene& s, bool lit) {
     return for_sampled_pixels(mesh, where, 8.0f, [&](int x, int y, const PixelFeatures& f) {
         if (f.w.f2 - f.w.f1 < 0.1f) return false;
         glm::vec3 want = voronoi_cell_color(f.w.id);
@@ -188,10 +187,9 @@ TEST_F(Voronoi, CellsModeShowsHashedCellColours) {
     s.shading.params["lit"] = {0.0f};
     s.shading.params["color-mix"] = {0.0f};
     Image plain = render(fine_sphere(), s);
-    EXPECT_GE(for_sampled_pixels(fine_sphere(), {}, 8.0f,
-                                 [&](int x, int y, const PixelFeatures&) {
-                                     return expect_pixel(plain, x, y, s.shading.base_color);
-                                 }),
+    EXPECT_GE(for_sampled_pixels(
+                  fine_sphere(), {}, 8.0f,
+                  [&](int x, int y, const PixelFeatures&) { return expect_pixel(plain, x, y, s.shading.base_color); }),
               50);
 }
 

@@ -34,7 +34,8 @@ TEST(FrontEnds, LibraryCliAndBatchWriteTheSameBytes) {
     TempDir dir;
     const std::string manifest = dir.file("jobs.jsonl");
     std::ofstream(manifest) << R"({"model": "builtin:torus", "views": "60:30", "styles": "anime,ink-vector", )"
-                            << R"("size": "96x64", "format": "png,svg"})" << "\n";
+                            << R"("size": "96x64", "format": "png,svg"})"
+                            << "\n";
     const auto batch = run_cli("batch " + manifest + " -o " + dir.file("out") + " -q");
     ASSERT_EQ(batch.status, 0) << batch.err;
     for (const std::string style : {"anime", "ink-vector"}) {

@@ -46,7 +46,8 @@ TEST(Scene, BadValuesNameTheOptionAsTheFrontEndSpellsIt) {
               "--far: must be greater than --near");
     EXPECT_EQ(error_of([](SceneRequest& r) { r.camera.ortho_height = 0.0f; }, OptionNames::Keywords),
               "ortho_height: must be a positive number");
-    EXPECT_EQ(error_of([](SceneRequest& r) { r.light_color = glm::vec3(2.0f); }), "--light-color: components must be in [0, 1]");
+    EXPECT_EQ(error_of([](SceneRequest& r) { r.light_color = glm::vec3(2.0f); }),
+              "--light-color: components must be in [0, 1]");
     EXPECT_EQ(error_of([](SceneRequest& r) { r.style = "cel", r.shading = "phong"; }),
               "--style and --shading are alternatives: use one (a style names its shading model)");
     EXPECT_EQ(error_of([](SceneRequest& r) { r.outputs = {.image = false, .line_drawing = false}; }),
@@ -58,9 +59,13 @@ TEST(Scene, OverrideErrorsNameTheOverride) {
     EXPECT_EQ(error_of([](SceneRequest& r) { r.style = "cel", r.sets = {"hull.width=2"}; }, OptionNames::Keywords)
                   .rfind("set hull.width=2: ", 0),
               0u);
-    EXPECT_EQ(error_of([](SceneRequest& r) { r.style = "anime", r.sets = {"hull.width=2", "cel.shade-color=0.2,0.1,0.3"}; }),
+    EXPECT_EQ(error_of([](SceneRequest& r) {
+                  r.style = "anime", r.sets = {"hull.width=2", "cel.shade-color=0.2,0.1,0.3"};
+              }),
               "");
-    EXPECT_EQ(error_of([](SceneRequest& r) { r.style = "lambert", r.sets = {"shininess=3"}; }).rfind("--set shininess=3: ", 0),
+    EXPECT_EQ(error_of([](SceneRequest& r) {
+                  r.style = "lambert", r.sets = {"shininess=3"};
+              }).rfind("--set shininess=3: ", 0),
               0u);
 }
 
@@ -185,7 +190,8 @@ TEST(Scene, CameraAndLightAreTheDefaultsWithTheRequestsValues) {
             try {
                 make_scene(r).light(box, cam);
             } catch (const InputError& e) {
-                EXPECT_STREQ(e.what(), "--light-pos: equals the light's target, so a directional light has no direction");
+                EXPECT_STREQ(e.what(),
+                             "--light-pos: equals the light's target, so a directional light has no direction");
                 throw;
             }
         },
@@ -205,7 +211,8 @@ TEST(Scene, OptionTextParsesOrNamesTheOption) {
         }
         return std::string();
     };
-    EXPECT_EQ(message([] { parse_image_size("--size", "big"); }), "--size: expected WxH with each side in 1..16384, got 'big'");
+    EXPECT_EQ(message([] { parse_image_size("--size", "big"); }),
+              "--size: expected WxH with each side in 1..16384, got 'big'");
     EXPECT_EQ(message([] { parse_vec3("--eye", "1,2"); }), "--eye: expected x,y,z but got '1,2'");
     EXPECT_EQ(message([] { parse_vec3("--eye", "1,2,inf"); }), "--eye: expected x,y,z but got '1,2,inf'");
     EXPECT_EQ(message([] { parse_light_type("--light-type", "spot"); }),

@@ -47,7 +47,8 @@ TEST(StyleFuzzRegressions, ReplaySavedInputs) {
 // toml++ 3.3 writes a string with a line break as '''...''' even when it holds ''' itself,
 // and then cannot read it back: such strings are written as escaped basic strings.
 TEST(StyleFuzzRegressions, SavedStringsWithQuotesAndLineBreaksReadBack) {
-    for (const std::string description : {"a\nb''' c", "tab\tquote\" back\\slash", "del\x7f bell\x07", "it's", "plain text"}) {
+    for (const std::string description :
+         {"a\nb''' c", "tab\tquote\" back\\slash", "del\x7f bell\x07", "it's", "plain text"}) {
         Style style = parse_style("[shading]\nmodel = 'phong'\n", "s.toml");
         style.description = description;
         const std::string text = format_style(style);
@@ -83,7 +84,8 @@ TEST(SceneFuzzRegressions, ReplaySavedInputs) {
 // such characters only in strings and comments; elsewhere parse_style refuses them first.
 TEST(StyleFuzzRegressions, NonAsciiOutsideStringsIsAnErrorBeforeTomlSeesIt) {
     const std::string model = "[shading]\nmodel = \"lambert\"\n";
-    EXPECT_EQ(error_of(model + "base\xd0\x9c" "color = 1\n"),
+    EXPECT_EQ(error_of(model + "base\xd0\x9c"
+                               "color = 1\n"),
               "my.toml: line 3: non-ASCII character outside a string or comment (keys and values are ASCII)");
     EXPECT_EQ(error_of("background = \"white\" \xc2\xa1\n" + model),
               "my.toml: line 1: non-ASCII character outside a string or comment (keys and values are ASCII)");
@@ -97,11 +99,14 @@ TEST(StyleFuzzRegressions, NonAsciiOutsideStringsIsAnErrorBeforeTomlSeesIt) {
                   "my.toml: line 1: non-ASCII character outside a string or comment (keys and values are ASCII)")
             << value;
     // Where TOML allows them they are fine: comments, strings of every kind, quoted keys.
-    const std::string colour = error_of("\xEF\xBB\xBF# caf\xc3\xa9 \xe2\x80\x94 n\xc2\xb7v\ndescription = \"\xc3\xa9\\\"\xe2\x80\x94\" # \xc2\xa1\n"
-                                        "[light]\n\"color\" = '\xc3\xa9' # bad colour, but not a non-ASCII problem\n" + model);
+    const std::string colour = error_of(
+        "\xEF\xBB\xBF# caf\xc3\xa9 \xe2\x80\x94 n\xc2\xb7v\ndescription = \"\xc3\xa9\\\"\xe2\x80\x94\" # \xc2\xa1\n"
+        "[light]\n\"color\" = '\xc3\xa9' # bad colour, but not a non-ASCII problem\n" +
+        model);
     EXPECT_EQ(colour.rfind("my.toml: light.color: bad colour", 0), 0u) << colour;  // got past the check and toml++
-    EXPECT_EQ(error_of("description = \"\"\"\xc3\xa9\n\xe2\x80\x94 \\\n   x\"\"\"\"\"\ntext = '''\xc3\xa9'''\n" + model),
-              "my.toml: unknown key 'text' (allowed: description, background, base-color, light, shading, lines)");
+    EXPECT_EQ(
+        error_of("description = \"\"\"\xc3\xa9\n\xe2\x80\x94 \\\n   x\"\"\"\"\"\ntext = '''\xc3\xa9'''\n" + model),
+        "my.toml: unknown key 'text' (allowed: description, background, base-color, light, shading, lines)");
 }
 
 // toml++ nests a table per dot of a key and frees them recursively: a key of 300000 dots (a
@@ -109,8 +114,10 @@ TEST(StyleFuzzRegressions, NonAsciiOutsideStringsIsAnErrorBeforeTomlSeesIt) {
 TEST(StyleFuzzRegressions, DeeplyDottedKeysAreRefusedBeforeTheStackOverflows) {
     std::string deep = "[shading]\nmodel = \"lambert\"\n";
     for (int i = 0; i < 300000; ++i) deep += "a.";
-    EXPECT_EQ(error_of(deep + "b = 1\n"), "my.toml: line 3: more than 128 dots outside strings (keys nest at most that deep)");
-    EXPECT_EQ(error_of("[" + deep.substr(30) + "b]\n"), "my.toml: line 1: more than 128 dots outside strings (keys nest at most that deep)");
+    EXPECT_EQ(error_of(deep + "b = 1\n"),
+              "my.toml: line 3: more than 128 dots outside strings (keys nest at most that deep)");
+    EXPECT_EQ(error_of("[" + deep.substr(30) + "b]\n"),
+              "my.toml: line 1: more than 128 dots outside strings (keys nest at most that deep)");
     // Dots in strings and comments do not count; 128 on a line are fine (then: an unknown key).
     std::string fine = "description = \"" + std::string(1000, '.') + "\" # " + std::string(1000, '.') + "\n";
     for (int i = 0; i < 128; ++i) fine += "a.";

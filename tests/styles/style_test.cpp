@@ -40,7 +40,8 @@ ambient = "0.2"
 model = "phong"
 shininess = 64
 specular = "#ff0000"
-)", "test.toml");
+)",
+                          "test.toml");
     EXPECT_EQ(s.name, "test");
     EXPECT_EQ(s.description, "test");
     EXPECT_EQ(s.background, glm::vec4(0, 0, 0, 1));

@@ -5,16 +5,13 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera&, const LineSettings&) {
-    return data.borders();
-}
+std::vector<LineSegment> extract(MeshLineData& data, const Camera&, const LineSettings&) { return data.borders(); }
 
-const ObjectLineRegistration registration{
-    {.name = "border",
-     .summary = "borders: mesh boundary edges (edges of exactly one face)",
-     .params = object_line_params(glm::vec3(0.0f), 1.5f, {}, 0.0f)},
-    extract,
-    {.adjacency = true}};
+const ObjectLineRegistration registration{{.name = "border",
+                                           .summary = "borders: mesh boundary edges (edges of exactly one face)",
+                                           .params = object_line_params(glm::vec3(0.0f), 1.5f, {}, 0.0f)},
+                                          extract,
+                                          {.adjacency = true}};
 
 }  // namespace
 

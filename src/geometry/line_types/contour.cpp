@@ -11,7 +11,10 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     if (line_number(settings, "silhouette-edges") != 0.0f) {
         const auto& p = data.mesh().positions;
         for (const SilhouetteEdge& e : mesh_silhouette_edges(data.mesh(), camera))
-            segments.push_back({.a = p[e.v0], .b = p[e.v1], .edge_a = vertex_key(e.v0), .edge_b = vertex_key(e.v1),
+            segments.push_back({.a = p[e.v0],
+                                .b = p[e.v1],
+                                .edge_a = vertex_key(e.v0),
+                                .edge_b = vertex_key(e.v1),
                                 .face = 0xffffffffu});
     }
     return segments;
@@ -19,7 +22,8 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
 
 const ObjectLineRegistration registration{
     {.name = "contour",
-     .summary = "occluding contours: zero crossings of n·v interpolated along mesh edges (the simple method marks whole edges)",
+     .summary = "occluding contours: zero crossings of n·v interpolated along mesh edges (the simple method marks "
+                "whole edges)",
      .params = object_line_params(
          glm::vec3(0.0f), 1.5f,
          {bool_param("silhouette-edges", false,

@@ -16,7 +16,8 @@ template <class F>
 auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, F&& f) {
     const auto start = std::chrono::steady_clock::now();
     auto result = f();
-    log.emplace_back(stage, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    log.emplace_back(stage,
+                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     return result;
 }
 
@@ -50,8 +51,10 @@ MeshLineData::MeshLineData(Mesh&& mesh)
 }
 
 MeshLineData::MeshLineData(std::shared_ptr<const Mesh> mesh) {
-    if (normals_are_sane(*mesh)) mesh_ = std::move(mesh);
-    else mesh_ = line_mesh(padded_copy(mesh->positions), mesh->triangles, mesh->normals);
+    if (normals_are_sane(*mesh))
+        mesh_ = std::move(mesh);
+    else
+        mesh_ = line_mesh(padded_copy(mesh->positions), mesh->triangles, mesh->normals);
 }
 
 void MeshLineData::release_derived() {

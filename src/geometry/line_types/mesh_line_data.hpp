@@ -20,8 +20,8 @@ namespace inkshade::geometry {
 
 // The mesh-wide data a line type reads besides positions and normals.
 struct MeshLineNeeds {
-    bool adjacency = false;  // creases, borders
-    bool curvature = false;  // suggestive contours, ridges, valleys
+    bool adjacency = false;                              // creases, borders
+    bool curvature = false;                              // suggestive contours, ridges, valleys
     float crease_angle = CreaseOptions{}.angle_degrees;  // classified by prepare() with adjacency
 };
 

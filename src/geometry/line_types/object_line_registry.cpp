@@ -53,8 +53,6 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
     return params;
 }
 
-float line_number(const LineSettings& settings, const std::string& name) {
-    return line_param(settings, name).at(0);
-}
+float line_number(const LineSettings& settings, const std::string& name) { return line_param(settings, name).at(0); }
 
 }  // namespace inkshade::geometry

@@ -1,4 +1,5 @@
-// `ridge` (optional line type): maxima of the larger principal curvature along its direction (Ohtake et al. 2004; rtsc) (extract_ridges).
+// `ridge` (optional line type): maxima of the larger principal curvature along its direction (Ohtake et al. 2004; rtsc)
+// (extract_ridges).
 #include "geometry/line_types/object_line_registry.hpp"
 
 namespace inkshade::geometry {

@@ -1,4 +1,5 @@
-// `valley` (optional line type): minima of the smaller principal curvature along its direction (Ohtake et al. 2004; rtsc) (extract_ridges).
+// `valley` (optional line type): minima of the smaller principal curvature along its direction (Ohtake et al. 2004;
+// rtsc) (extract_ridges).
 #include "geometry/line_types/object_line_registry.hpp"
 
 namespace inkshade::geometry {

@@ -8,10 +8,10 @@ namespace {
 
 std::vector<ParamSpec> edges_params() {
     std::vector<ParamSpec> p = stroke_params(glm::vec3(0.0f), 2.0f);
-    p.push_back(compile_time(choice_param(
-        "detector", {"sobel", "canny"}, 0,
-        "sobel: 3x3 Sobel at spacing width/2 (lines about width px); canny: Sobel + non-maximum "
-        "suppression + double threshold with one-step hysteresis on normals (1 px lines)")));
+    p.push_back(compile_time(
+        choice_param("detector", {"sobel", "canny"}, 0,
+                     "sobel: 3x3 Sobel at spacing width/2 (lines about width px); canny: Sobel + non-maximum "
+                     "suppression + double threshold with one-step hysteresis on normals (1 px lines)")));
     p.push_back(bool_param("depth", true, "find depth discontinuities"));
     p.push_back(float_param("depth-threshold", 0.02f, 0.0f, 10.0f,
                             "relative second difference of linear depth |z+ + z- - 2z| / z above which a pixel "
@@ -28,7 +28,8 @@ std::vector<ParamSpec> edges_params() {
 
 const LineTypeRegistration edges_type{{
     .name = "edges",
-    .summary = "image-space edges: Sobel/Canny on a G-buffer of depth, face normals and object ids (Saito & Takahashi 1990)",
+    .summary =
+        "image-space edges: Sobel/Canny on a G-buffer of depth, face normals and object ids (Saito & Takahashi 1990)",
     .space = LineSpace::Image,
     .params = edges_params(),
 }};

@@ -21,7 +21,8 @@ std::vector<ParamSpec> hull_params() {
 
 const LineTypeRegistration hull_type{{
     .name = "hull",
-    .summary = "inverted hull silhouette: mesh pushed out along welded normals, front faces culled (the classic inverted hull)",
+    .summary = "inverted hull silhouette: mesh pushed out along welded normals, front faces culled (the classic "
+               "inverted hull)",
     .space = LineSpace::Image,
     .params = hull_params(),
 }};

@@ -16,8 +16,8 @@ bool on(const LineSettings& s, const char* name) { return line_param(s, name).at
 
 ImageLinesPass::ImageLinesPass() : vao_(gpu::GlVertexArray::create()) {}
 
-glm::ivec4 ImageLinesPass::image_lines_region(const BoundingBox& bounds, const Camera& camera, int width,
-                                              int height, int margin) {
+glm::ivec4 ImageLinesPass::image_lines_region(const BoundingBox& bounds, const Camera& camera, int width, int height,
+                                              int margin) {
     const glm::ivec4 whole(0, 0, width, height);
     const glm::mat4 clip_from_world = camera.projection(float(width) / float(height)) * camera.view();
     glm::vec2 lo(INFINITY), hi(-INFINITY);
@@ -62,7 +62,8 @@ void ImageLinesPass::run(Frame& frame) {
         defines += "#define EDGES_CANNY " + std::to_string(line_param(*edges, "detector").at(0) == 1.0f ? 1 : 0) + "\n";
     }
     auto& program = programs_[defines];
-    if (!program) program = std::make_unique<gpu::ShaderProgram>("lines/fullscreen.vert", "lines/image_lines.frag", defines);
+    if (!program)
+        program = std::make_unique<gpu::ShaderProgram>("lines/fullscreen.vert", "lines/image_lines.frag", defines);
     gpu::ShaderProgram& p = *program;
     p.use();
     constexpr GLuint kSurfaceUnit = 3, kFaceNormalUnit = 4;
@@ -89,7 +90,8 @@ void ImageLinesPass::run(Frame& frame) {
     }
     const gpu::DepthScope depth(std::nullopt);
     const gpu::CullScope cull(std::nullopt);
-    const gpu::BlendScope blend(gpu::BlendFunc{GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});  // premultiplied "over"
+    const gpu::BlendScope blend(
+        gpu::BlendFunc{GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});  // premultiplied "over"
     const gpu::ScissorScope scissor(region);
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -1,5 +1,6 @@
-// `suggestive-image`: the image-space suggestive contours of Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading Techniques for Anime-Style Rendering" (section 3.8), computed on the
-// GPU by ImageLinesPass (shaders/lines/suggestive_image.glsl).
+// `suggestive-image`: the image-space suggestive contours of Qu, Chen & Zwicker 2022, "Non-Photorealistic Shading
+// Techniques for Anime-Style Rendering" (section 3.8), computed on the GPU by ImageLinesPass
+// (shaders/lines/suggestive_image.glsl).
 #include "inkshade/lines.hpp"
 
 namespace inkshade::render {
@@ -24,7 +25,8 @@ std::vector<ParamSpec> suggestive_params() {
 
 const LineTypeRegistration suggestive_image_type{{
     .name = "suggestive-image",
-    .summary = "image-space suggestive contours: D_w(n.v) = 0, D_w D_w(n.v) > 0 by finite differences on the GPU (DeCarlo et al. 2003; finite differences as in Qu et al. 2022)",
+    .summary = "image-space suggestive contours: D_w(n.v) = 0, D_w D_w(n.v) > 0 by finite differences on the GPU "
+               "(DeCarlo et al. 2003; finite differences as in Qu et al. 2022)",
     .space = LineSpace::Image,
     .params = suggestive_params(),
 }};

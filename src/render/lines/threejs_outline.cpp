@@ -19,11 +19,13 @@ const LineTypeRegistration threejs_outline_type{{
     .space = LineSpace::Image,
     .params =
         {
-            float_param("thickness", 0.003f, 0.0f, 1.0f,
-                        "offset in normalised device coordinates, about thickness*H/2 pixels (OutlineEffect default 0.003)"),
+            float_param(
+                "thickness", 0.003f, 0.0f, 1.0f,
+                "offset in normalised device coordinates, about thickness*H/2 pixels (OutlineEffect default 0.003)"),
             color_param("color", glm::vec3(0.0f),
                         "outline colour, linear like OutlineEffect's [r, g, b] array (written sRGB-encoded)"),
-            float_param("alpha", 1.0f, 0.0f, 1.0f, "outline opacity; below 1 blended over the model (OutlineEffect default 1)"),
+            float_param("alpha", 1.0f, 0.0f, 1.0f,
+                        "outline opacity; below 1 blended over the model (OutlineEffect default 1)"),
         },
 }};
 

@@ -24,10 +24,10 @@ static const ShadingModelRegistration cel_model{{
                         "colour of light level 0 instead of black: lit = mix(shade, 1, level)"),
             float_param("smoothing", 1.0f, 0.0f, 16.0f,
                         "edge blend width in units of fwidth (pixels); 0 = hard edges (classic cel shading)"),
-            compile_time(bool_param("specular", false, "hard Blinn-Phong highlight: max(n.h, 0)^shininess above a threshold")),
+            compile_time(
+                bool_param("specular", false, "hard Blinn-Phong highlight: max(n.h, 0)^shininess above a threshold")),
             float_param("shininess", 32.0f, 1.0f, 4096.0f, "highlight exponent p of max(n.h, 0)^p"),
-            float_param("specular-threshold", 0.5f, 0.0f, 1.0f,
-                        "highlight where max(n.h, 0)^p exceeds this"),
+            float_param("specular-threshold", 0.5f, 0.0f, 1.0f, "highlight where max(n.h, 0)^p exceeds this"),
             color_param("specular-color", glm::vec3(1.0f), "highlight colour (multiplies E)"),
             compile_time(bool_param("rim", false, "rim light on the lit side near the silhouette")),
             color_param("rim-color", glm::vec3(1.0f), "rim colour (multiplies E)"),

@@ -15,12 +15,17 @@ static const ShadingModelRegistration mtoon_model{{
     .params =
         {
             color_param("shade-color", glm::vec3(0.0f), "shade colour S (MToon shadeColorFactor)"),
-            float_param("shading-shift", 0.0f, -1.0f, 1.0f, "shift added to n.l before the toon step (MToon shadingShiftFactor)"),
-            float_param("shading-toony", 0.9f, 0.0f, 1.0f, "toony-ness: 1 = hard terminator, 0 = smooth (MToon shadingToonyFactor)"),
+            float_param("shading-shift", 0.0f, -1.0f, 1.0f,
+                        "shift added to n.l before the toon step (MToon shadingShiftFactor)"),
+            float_param("shading-toony", 0.9f, 0.0f, 1.0f,
+                        "toony-ness: 1 = hard terminator, 0 = smooth (MToon shadingToonyFactor)"),
             color_param("rim-color", glm::vec3(0.0f), "rim colour (MToon parametricRimColorFactor; black = no rim)"),
-            float_param("rim-fresnel-power", 5.0f, 0.0f, 100.0f, "rim exponent on 1 - n.v (MToon parametricRimFresnelPowerFactor)"),
-            float_param("rim-lift", 0.0f, 0.0f, 1.0f, "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
-            float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f, "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
+            float_param("rim-fresnel-power", 5.0f, 0.0f, 100.0f,
+                        "rim exponent on 1 - n.v (MToon parametricRimFresnelPowerFactor)"),
+            float_param("rim-lift", 0.0f, 0.0f, 1.0f,
+                        "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
+            float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f,
+                        "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
             choice_param("convention", {"seeds", "threejs"}, 0,
                          "seeds: values as they are, no 1/pi, no sRGB (Inkshade's default convention); "
                          "threejs: 1/pi light units and sRGB output (three-vrm)"),

@@ -14,8 +14,9 @@ static const ShadingModelRegistration palette_model{{
             color_param("b", glm::vec3(0.5f), "amplitude"),
             list_param("c", {1.0f, 1.0f, 1.0f}, 3, 0.0f, 4.0f, "frequency per channel (oscillations over t in [0, 1])"),
             list_param("d", {0.0f, 0.33f, 0.67f}, 3, 0.0f, 1.0f, "phase per channel, in cycles"),
-            choice_param("driver", {"ndotl", "half-lambert", "ndotv", "height", "x", "z"}, 0,
-                         "t: max(n.l,0), 0.5*n.l+0.5, max(n.v,0), or model-space y, x, z normalised over the bounding box"),
+            choice_param(
+                "driver", {"ndotl", "half-lambert", "ndotv", "height", "x", "z"}, 0,
+                "t: max(n.l,0), 0.5*n.l+0.5, max(n.v,0), or model-space y, x, z normalised over the bounding box"),
             bool_param("lit", false, "multiply by E*max(n.l,0) + A"),
         },
 }};

@@ -26,8 +26,9 @@ inline std::vector<ParamSpec> light_params() {
 }
 
 inline std::vector<ParamSpec> emissive_params() {
-    return {srgb_color_param("emissive", glm::vec3(0.0f), "emitted colour, sRGB as typed in three.js (default 0x000000)"),
-            float_param("emissive-intensity", 1.0f, 0.0f, 1e6f, "scales emissive (three.js emissiveIntensity, default 1)")};
+    return {
+        srgb_color_param("emissive", glm::vec3(0.0f), "emitted colour, sRGB as typed in three.js (default 0x000000)"),
+        float_param("emissive-intensity", 1.0f, 0.0f, 1e6f, "scales emissive (three.js emissiveIntensity, default 1)")};
 }
 
 // The parameters of a lit model: color, then the model's own, then emissive and the lights.

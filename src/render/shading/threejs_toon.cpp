@@ -6,7 +6,8 @@ namespace inkshade {
 // use-gradient-map switches it on at compile time, as three.js's USE_GRADIENTMAP does.
 static const ShadingModelRegistration threejs_toon_model{{
     .name = "threejs-toon",
-    .summary = "three.js r187 MeshToonMaterial: sRGB(C/pi*(E*g(0.5*n.l + 0.5) + A) + emissive), g from the gradient map",
+    .summary =
+        "three.js r187 MeshToonMaterial: sRGB(C/pi*(E*g(0.5*n.l + 0.5) + A) + emissive), g from the gradient map",
     .fragment = "shading/threejs-toon.frag",
     .params = shading::threejs::lit_params(
         {compile_time(bool_param("use-gradient-map", false,

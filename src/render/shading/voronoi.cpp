@@ -13,8 +13,9 @@ static const ShadingModelRegistration voronoi_model{{
             float_param("scale", 8.0f, 0.25f, 256.0f, "cells per longest side of the model's bounding box"),
             // Compile-time: llvmpipe evaluates both sides of a uniform branch, so the isolines'
             // and the cell colours' work would be paid in every mode.
-            compile_time(choice_param("mode", {"cells", "distance", "isolines"}, 0,
-                                      "cells: flat colour per cell; distance: grey F1; isolines: lines of equal F1 (concentric rings)")),
+            compile_time(choice_param(
+                "mode", {"cells", "distance", "isolines"}, 0,
+                "cells: flat colour per cell; distance: grey F1; isolines: lines of equal F1 (concentric rings)")),
             float_param("color-mix", 0.8f, 0.0f, 1.0f, "cells mode: 0 = base colour C, 1 = the cell's hashed colour"),
             float_param("edge-width", 0.05f, 0.0f, 1.0f,
                         "cell borders where F2 - F1 < width, in cell units (0 = none); anti-aliased"),
