@@ -22,10 +22,10 @@ namespace {
 
 // The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
 // with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
-const std::vector<std::string> kSceneKeywords = {"size",        "azimuth", "elevation",  "distance",     "eye",
-                                                 "target",      "up",      "fov",        "ortho",        "ortho_height",
-                                                 "near",        "far",     "light_pos",  "light_target", "light_type",
-                                                 "light_color", "ambient", "base_color", "srgb"};
+const std::vector<std::string> kSceneKeywords = {
+    "size",         "azimuth",    "elevation",   "distance",     "eye",        "target", "up",
+    "up_axis",      "fov",        "ortho",       "ortho_height", "near",       "far",    "light_pos",
+    "light_target", "light_type", "light_color", "ambient",      "base_color", "srgb"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -88,6 +88,8 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             c.near_plane = value.cast<float>();
         else if (key == "far")
             c.far_plane = value.cast<float>();
+        else if (key == "up_axis")
+            c.up_axis = parse_up_axis(key, value.cast<std::string>());
         else if (key == "light_pos")
             r.light_position = to_vec3(key, value);
         else if (key == "light_target")

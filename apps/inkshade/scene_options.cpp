@@ -19,6 +19,10 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--eye", eye, "camera position x,y,z");
     cmd.add_option("--target", target, "camera target x,y,z (default: model centre)");
     cmd.add_option("--up", up, "camera up vector x,y,z")->capture_default_str();
+    cmd.add_option("--up-axis", up_axis,
+                   "the model's up axis: y (glTF, three.js, most OBJ), z (many CAD and Blender exports), x, -x, "
+                   "-y or -z; azimuth turns about it")
+        ->capture_default_str();
     cmd.add_option("--fov", c.fov_degrees, "vertical field of view in degrees")->capture_default_str();
     cmd.add_flag("--ortho", c.orthographic, "orthographic projection");
     cmd.add_option("--ortho-height", c.ortho_height,
@@ -44,6 +48,7 @@ SceneRequest SceneOptions::to_request(const CLI::App& cmd, const std::string& sc
     if (!eye.empty()) r.camera.eye = parse_vec3("--eye", eye);
     if (!target.empty()) r.camera.target = parse_vec3("--target", target);
     if (!up.empty()) r.camera.up = parse_vec3("--up", up);
+    r.camera.up_axis = parse_up_axis("--up-axis", up_axis);
     r.light_type = parse_light_type("--light-type", light_type);
     if (!light_pos.empty()) r.light_position = parse_vec3("--light-pos", light_pos);
     if (!light_target.empty()) r.light_target = parse_vec3("--light-target", light_target);

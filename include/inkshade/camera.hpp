@@ -22,6 +22,15 @@ struct Camera {
     glm::mat4 projection(float aspect) const;
 };
 
+// The axis that points up in a model's coordinates: +y for glTF (by definition), three.js and
+// most OBJ files; +z for many CAD and Blender exports.
+enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ };
+
+// The rotation taking the camera math's frame (+y up, azimuth 0 looking from +z) to a model
+// whose up is `axis`: +y goes to `axis`, and the front (+z) to the direction a viewer of such
+// files calls front (for +z up: -y, as in Blender's front view). A signed permutation.
+glm::mat3 up_axis_rotation(UpAxis axis);
+
 // How the user places the camera; anything unset is chosen by auto-framing.
 struct CameraOptions {
     std::optional<float> azimuth_degrees;    // about +y; 0 looks from +z towards -z, 90 from +x
@@ -33,6 +42,9 @@ struct CameraOptions {
     // Fixed instead of fitted to the model (a three.js camera's near, far, top - bottom).
     std::optional<float> near_plane, far_plane;
     std::optional<float> ortho_height;
+    // Azimuth turns about this axis and elevation rises towards it; the default up vector is it.
+    // Eye, target and up, when given, are in the model's coordinates whatever the axis.
+    UpAxis up_axis = UpAxis::PosY;
 };
 
 // Default view angles of auto-framing: a three-quarter view from slightly above.

@@ -5,9 +5,10 @@
 
 namespace inkshade {
 
-// Rotates the eye about the target: `yaw_degrees` about the world up axis (+y), `pitch_degrees`
-// about the camera's right axis, the pitch clamped so the view never flips over the pole.
-void orbit(Camera& camera, float yaw_degrees, float pitch_degrees);
+// Rotates the eye about the target: `yaw_degrees` about the model's up axis (+y unless given),
+// `pitch_degrees` about the camera's right axis, the pitch clamped so the view never flips over
+// the pole.
+void orbit(Camera& camera, float yaw_degrees, float pitch_degrees, UpAxis up_axis = UpAxis::PosY);
 
 // Moves eye and target together by (dx, dy) pixels of a viewport `viewport_height` pixels high,
 // so the point under the cursor at the target's depth follows the cursor.

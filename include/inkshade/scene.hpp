@@ -109,5 +109,6 @@ glm::ivec2 parse_image_size(const std::string& option, const std::string& text);
 glm::vec3 parse_vec3(const std::string& option, const std::string& text);         // "x,y,z"
 glm::vec4 parse_color(const std::string& option, const std::string& text);        // parse_color
 LightType parse_light_type(const std::string& option, const std::string& text);   // directional|point
+UpAxis parse_up_axis(const std::string& option, const std::string& text);         // x|y|z|-x|-y|-z
 
 }  // namespace inkshade

@@ -43,7 +43,10 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     text += "view=" + job.view.name + " az=" + optional_number(c.azimuth_degrees) +
             " el=" + optional_number(c.elevation_degrees) + " dist=" + optional_number(c.distance) +
             " eye=" + optional_vec3(c.eye) + " target=" + optional_vec3(c.target) + " up=" + optional_vec3(c.up) +
-            " fov=" + number(c.fov_degrees) + " ortho=" + (c.orthographic ? "1" : "0") + "\n";
+            " fov=" + number(c.fov_degrees) + " ortho=" + (c.orthographic ? "1" : "0");
+    // Only a model that is not y-up adds to the text, so earlier jobs keep their hashes.
+    if (c.up_axis != UpAxis::PosY) text += " up-axis=" + std::to_string(int(c.up_axis));
+    text += "\n";
     text += "size=" + std::to_string(job.width) + "x" + std::to_string(job.height) +
             " samples=" + std::to_string(samples) + " png=" + (job.outputs.png ? "1" : "0") +
             " svg=" + (job.outputs.svg ? "1" : "0") + "\n";

@@ -90,6 +90,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.outputs = d.outputs;
     g.fov_degrees = d.fov_degrees;
     g.orthographic = d.orthographic;
+    g.up_axis = d.up_axis;
     return g;
 }
 
@@ -117,6 +118,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
         for (BatchView view : views) {
             view.camera.fov_degrees = group.fov_degrees;
             view.camera.orthographic = group.orthographic;
+            view.camera.up_axis = group.up_axis;
             BatchJob job;
             job.model = group.model;
             job.style = style;

@@ -20,6 +20,7 @@ struct JobGroup {
     BatchOutputs outputs;
     float fov_degrees = 30.0f;
     bool orthographic = false;
+    UpAxis up_axis = UpAxis::PosY;
     std::string source;
 };
 

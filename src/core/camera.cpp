@@ -32,7 +32,30 @@ glm::vec3 safe_up(const glm::vec3& forward, const glm::vec3& up) {
 
 }  // namespace
 
-Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect) {
+glm::mat3 up_axis_rotation(UpAxis axis) {
+    const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    // Columns: where +x, +y and +z of the camera frame go; each a right-handed rotation.
+    switch (axis) {
+        case UpAxis::PosX:
+            return {-y, x, z};
+        case UpAxis::NegX:
+            return {y, -x, z};
+        case UpAxis::PosY:
+            return {x, y, z};
+        case UpAxis::NegY:
+            return {-x, -y, z};
+        case UpAxis::PosZ:
+            return {x, z, -y};
+        case UpAxis::NegZ:
+            return {x, -z, y};
+    }
+    return {x, y, z};
+}
+
+namespace {
+
+// frame_camera for a model whose up is +y.
+Camera frame_y_up(const BoundingBox& box, const CameraOptions& o, float aspect) {
     Camera cam;
     cam.fov_degrees = std::clamp(o.fov_degrees, 1.0f, 170.0f);
     cam.orthographic = o.orthographic;
@@ -76,6 +99,26 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect
     fit_clip_planes(cam, box);
     if (o.near_plane) cam.near_plane = *o.near_plane;
     if (o.far_plane) cam.far_plane = *o.far_plane;
+    return cam;
+}
+
+}  // namespace
+
+Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect) {
+    if (o.up_axis == UpAxis::PosY) return frame_y_up(box, o, aspect);
+    // Frame the model in the camera math's frame (a signed permutation keeps the box
+    // axis-aligned), then turn the camera back into the model's coordinates.
+    const glm::mat3 to_model = up_axis_rotation(o.up_axis), to_frame = glm::transpose(to_model);
+    const glm::vec3 a = to_frame * box.min, b = to_frame * box.max;
+    const BoundingBox local{glm::min(a, b), glm::max(a, b)};
+    CameraOptions lo = o;
+    if (o.eye) lo.eye = to_frame * *o.eye;
+    if (o.target) lo.target = to_frame * *o.target;
+    if (o.up) lo.up = to_frame * *o.up;
+    Camera cam = frame_y_up(local, lo, aspect);
+    cam.eye = to_model * cam.eye;
+    cam.target = to_model * cam.target;
+    cam.up = to_model * cam.up;
     return cam;
 }
 

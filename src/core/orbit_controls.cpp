@@ -7,8 +7,10 @@
 
 namespace inkshade {
 
-void orbit(Camera& camera, float yaw_degrees, float pitch_degrees) {
-    glm::vec3 offset = camera.eye - camera.target;
+void orbit(Camera& camera, float yaw_degrees, float pitch_degrees, UpAxis up_axis) {
+    // In the camera math's frame (+y up), then back to the model's.
+    const glm::mat3 to_model = up_axis_rotation(up_axis);
+    glm::vec3 offset = glm::transpose(to_model) * (camera.eye - camera.target);
     const float dist = glm::length(offset);
     if (!(dist > 0.0f)) return;
     // Pitch as an elevation change, clamped to +-89 degrees so up never aligns with the view.
@@ -16,9 +18,9 @@ void orbit(Camera& camera, float yaw_degrees, float pitch_degrees) {
     float new_elevation = std::clamp(elevation + pitch_degrees, -89.0f, 89.0f);
     float azimuth = glm::degrees(std::atan2(offset.x, offset.z)) + yaw_degrees;
     float az = glm::radians(azimuth), el = glm::radians(new_elevation);
-    camera.eye =
-        camera.target + dist * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-    camera.up = {0.0f, 1.0f, 0.0f};
+    camera.eye = camera.target +
+                 to_model * (dist * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)));
+    camera.up = to_model * glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
 void pan(Camera& camera, float dx_pixels, float dy_pixels, int viewport_height) {

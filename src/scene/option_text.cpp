@@ -44,6 +44,15 @@ glm::vec4 parse_color(const std::string& option, const std::string& text) {
     }
 }
 
+UpAxis parse_up_axis(const std::string& option, const std::string& text) {
+    static const std::pair<const char*, UpAxis> axes[] = {
+        {"x", UpAxis::PosX},  {"-x", UpAxis::NegX}, {"y", UpAxis::PosY},  {"-y", UpAxis::NegY}, {"z", UpAxis::PosZ},
+        {"-z", UpAxis::NegZ}, {"+x", UpAxis::PosX}, {"+y", UpAxis::PosY}, {"+z", UpAxis::PosZ}};
+    for (const auto& [name, axis] : axes)
+        if (text == name) return axis;
+    throw InputError(option + ": expected x, y, z, -x, -y or -z, got " + io::quote_token(text));
+}
+
 LightType parse_light_type(const std::string& option, const std::string& text) {
     if (text == "directional") return LightType::Directional;
     if (text == "point") return LightType::Point;

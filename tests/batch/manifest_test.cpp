@@ -91,6 +91,19 @@ TEST(BatchManifest, DefaultsFillWhatALineLeavesOut) {
     EXPECT_FALSE(jobs[0].outputs.png);
 }
 
+TEST(BatchManifest, UpAxisColumnAndDefaultTurnTheViews) {
+    BatchDefaults d;
+    d.up_axis = UpAxis::PosX;
+    const auto jobs = parse_manifest("model,up-axis\nx.stl,z\ny.stl,\n", "m.csv", d);
+    ASSERT_EQ(jobs.size(), 2u);
+    EXPECT_EQ(jobs[0].view.camera.up_axis, UpAxis::PosZ);
+    EXPECT_EQ(jobs[1].view.camera.up_axis, UpAxis::PosX);  // an empty cell takes the default
+    // A z-up job hashes differently from the same job y-up; a y-up job's hash is unchanged.
+    BatchJob y_up = jobs[0];
+    y_up.view.camera.up_axis = UpAxis::PosY;
+    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(y_up, "", -1, 4));
+}
+
 TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
     // No extension: '{' means JSON Lines, anything else CSV.
     EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);
@@ -121,6 +134,7 @@ TEST(BatchManifest, EveryBadLineIsAnInputErrorNamingSourceAndLine) {
         {"model,format\na.obj,gif\n", "m.csv:2: format: unknown output format 'gif'"},
         {"model,fov\na.obj,180\n", "m.csv:2: fov:"},
         {"model,ortho\na.obj,maybe\n", "m.csv:2: ortho:"},
+        {"model,up-axis\na.obj,w\n", "m.csv:2: up-axis: expected x, y, z, -x, -y or -z, got 'w'"},
         {"model,output\na.obj,/abs\n", "m.csv:2: output: '/abs' must be relative"},
         {"model,output\na.obj,x/../../y\n", "m.csv:2: output: 'x/../../y' must stay inside"},
         {"model,views,output\na.obj,orbit2x1,x\n", "m.csv:2: output: names one job"},

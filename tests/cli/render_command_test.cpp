@@ -191,5 +191,47 @@ TEST(StylesCommand, ListsEveryModelWithParameters) {
         EXPECT_NE(r.out.find(m), std::string::npos) << m;
 }
 
+// A box four times taller along +z than wide, as a Z-up CAD export writes it (ASCII STL, no
+// normals): upright with --up-axis z, lying down without.
+TEST(RenderCommand, UpAxisZStandsAZUpModelUpright) {
+    TempDir dir;
+    std::string stl = "solid tall\n";
+    const float x0 = 0, x1 = 1, y0 = 0, y1 = 1, z0 = 0, z1 = 4;
+    const float v[8][3] = {{x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0},
+                           {x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}};
+    const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                              {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+    for (const auto& f : faces) {
+        stl += "facet normal 0 0 0\nouter loop\n";
+        for (int k : f)
+            stl += "vertex " + std::to_string(v[k][0]) + " " + std::to_string(v[k][1]) + " " + std::to_string(v[k][2]) +
+                   "\n";
+        stl += "endloop\nendfacet\n";
+    }
+    const std::string model = dir.write("tall.stl", stl + "endsolid tall\n");
+    auto extent = [&](const std::string& options) {  // width and height of the non-white pixels
+        const std::string png = dir.file("a.png");
+        const auto r =
+            run_cli("render " + model + " --size 96x96 --azimuth 20 --elevation 10 " + options + " -o " + png);
+        EXPECT_EQ(r.status, 0) << r.err;
+        const Image image = read_png(png);
+        int x_min = image.width, x_max = -1, y_min = image.height, y_max = -1;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                if (image.pixel(x, y)[0] < 250) {
+                    x_min = std::min(x_min, x), x_max = std::max(x_max, x);
+                    y_min = std::min(y_min, y), y_max = std::max(y_max, y);
+                }
+        return std::pair<int, int>(x_max - x_min + 1, y_max - y_min + 1);
+    };
+    const auto [w_up, h_up] = extent("--up-axis z");
+    EXPECT_GT(h_up, 2 * w_up);  // standing
+    const auto [w_flat, h_flat] = extent("");
+    EXPECT_GT(w_flat, h_flat);  // lying along the view's horizontal
+    const auto bad = run_cli("render " + model + " --up-axis w -o " + dir.file("b.png"));
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("--up-axis: expected x, y, z, -x, -y or -z, got 'w'"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace inkshade::test

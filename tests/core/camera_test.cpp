@@ -85,5 +85,41 @@ TEST(Light, DefaultLightIsAboveAndInFrontOfModel) {
     EXPECT_GT(to_light.y, 0.3f);
 }
 
+// A model whose up is another axis is framed as the y-up model it is a rotation of: the camera
+// is that model's camera turned by the same rotation, for every axis.
+TEST(FrameCamera, UpAxisFramesTheModelAsItsYUpTwin) {
+    const BoundingBox y_up{{-1.0f, 0.0f, -0.5f}, {1.0f, 4.0f, 0.5f}};  // tall along +y
+    CameraOptions o;
+    o.azimuth_degrees = 30.0f;
+    o.elevation_degrees = 15.0f;
+    const Camera reference = frame_camera(y_up, o, 1.5f);
+    for (UpAxis axis : {UpAxis::PosX, UpAxis::NegX, UpAxis::NegY, UpAxis::PosZ, UpAxis::NegZ}) {
+        SCOPED_TRACE(int(axis));
+        const glm::mat3 r = up_axis_rotation(axis);
+        EXPECT_NEAR(glm::determinant(r), 1.0f, 1e-6f);  // a rotation, not a mirror
+        const glm::vec3 a = r * y_up.min, b = r * y_up.max;
+        CameraOptions turned = o;
+        turned.up_axis = axis;
+        const Camera c = frame_camera({glm::min(a, b), glm::max(a, b)}, turned, 1.5f);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(c.eye[k], (r * reference.eye)[k], 1e-4f);
+            EXPECT_NEAR(c.target[k], (r * reference.target)[k], 1e-4f);
+            EXPECT_NEAR(c.up[k], (r * reference.up)[k], 1e-5f);
+        }
+        EXPECT_NEAR(c.near_plane, reference.near_plane, 1e-4f);
+        EXPECT_NEAR(c.far_plane, reference.far_plane, 1e-4f);
+    }
+    // +z up: the camera's up is +z, and azimuth 0 at elevation 0 looks from -y.
+    CameraOptions front;
+    front.azimuth_degrees = 0.0f;
+    front.elevation_degrees = 0.0f;
+    front.up_axis = UpAxis::PosZ;
+    const Camera c = frame_camera({glm::vec3(-1.0f), glm::vec3(1.0f)}, front, 1.0f);
+    EXPECT_NEAR(c.up.z, 1.0f, 1e-6f);
+    EXPECT_LT(c.eye.y, -1.0f);
+    EXPECT_NEAR(c.eye.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(c.eye.z, 0.0f, 1e-5f);
+}
+
 }  // namespace
 }  // namespace inkshade

@@ -77,5 +77,17 @@ TEST(OrbitControls, ZoomScalesDistanceAndOrthoHeightAndRefitsClipPlanes) {
     EXPECT_EQ(c.eye, eye);
 }
 
+TEST(OrbitControls, YawTurnsAboutTheModelsUpAxis) {
+    Camera c;
+    c.target = glm::vec3(0.0f);
+    c.eye = glm::vec3(0.0f, -5.0f, 1.0f);  // in front of a z-up model, a little above
+    c.up = glm::vec3(0.0f, 0.0f, 1.0f);
+    orbit(c, 90.0f, 0.0f, UpAxis::PosZ);
+    EXPECT_NEAR(c.eye.z, 1.0f, 1e-4f);  // the height above the ground plane is kept
+    EXPECT_NEAR(glm::length(c.eye), std::sqrt(26.0f), 1e-4f);
+    EXPECT_NEAR(c.eye.y, 0.0f, 1e-4f);  // a quarter turn about +z
+    EXPECT_EQ(c.up, glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
 }  // namespace
 }  // namespace inkshade

@@ -186,6 +186,9 @@ class ModuleTest(unittest.TestCase):
             self.renderer.render("cel", set=["hull.width=2"])
         with self.assertRaisesRegex(ValueError, r"^types: 'hull' is drawn in the image"):
             self.renderer.lines(["hull"])
+        with self.assertRaisesRegex(ValueError, r"^up_axis: expected x, y, z"):
+            self.renderer.render("lambert", up_axis="w")
+        self.assertEqual(self.renderer.render("lambert", size=(8, 8), up_axis="z").shape, (8, 8, 4))
         with self.assertRaisesRegex(ValueError, r"^light_type: expected directional or point"):
             self.renderer.render("lambert", light_type="spot")
         with self.assertRaisesRegex(ValueError, "no mesh"):
