@@ -1,4 +1,4 @@
-// `inkshade info MODEL`: facts about a mesh as loaded.
+// `inkshade info MODEL`: facts about a mesh as loaded, duplicate faces kept (they are counted).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -29,7 +29,9 @@ Command add_info_command(CLI::App& app) {
     cmd->add_option("MODEL", *model, "mesh file or builtin:NAME")->required();
     return [model] {
         auto start = std::chrono::steady_clock::now();
-        Mesh mesh = load_mesh(*model);
+        LoadOptions as_in_file;  // count the file's duplicate faces rather than drop them
+        as_in_file.drop_duplicate_faces = false;
+        Mesh mesh = load_mesh(*model, as_in_file);
         print_mesh_warnings(mesh);
         double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         geometry::MeshStats s = geometry::mesh_stats(mesh);

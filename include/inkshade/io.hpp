@@ -13,6 +13,10 @@ struct LoadOptions {
     float weld_epsilon = 1e-6f;
     // Compute angle-weighted vertex normals when the file has none (or they are not sane).
     bool compute_normals = true;
+    // Drop faces with the same vertex set as an earlier face (either winding; compared after
+    // welding), keeping the first, with one warning giving the count. `inkshade info` turns this
+    // off to report what the file holds. Built-in models have none.
+    bool drop_duplicate_faces = true;
 };
 
 // Loads a mesh by path or "builtin:NAME". Throws InputError("FILE: problem") on bad input.

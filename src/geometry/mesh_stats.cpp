@@ -1,6 +1,7 @@
-// Mesh topology facts. Edges and duplicate faces are found by sorting packed keys (TBB
-// parallel sort) rather than with node-based maps, so 10 M triangles take about a second;
-// components use union-find with path halving and union by size (Tarjan 1975).
+// Mesh topology facts. Edges and duplicate faces (geometry/duplicate_faces.hpp) are found by
+// sorting packed keys (TBB parallel sort) rather than with node-based maps, so 10 M triangles
+// take about a second; components use union-find with path halving and union by size (Tarjan
+// 1975).
 #include "geometry/mesh_stats.hpp"
 
 #include <tbb/parallel_sort.h>
@@ -11,6 +12,8 @@
 #include <cstdint>
 #include <numeric>
 #include <vector>
+
+#include "geometry/duplicate_faces.hpp"
 
 namespace inkshade::geometry {
 namespace {
@@ -52,17 +55,20 @@ MeshStats mesh_stats(const Mesh& mesh) {
 
     std::vector<uint64_t> edges;
     edges.reserve(3 * mesh.triangles.size());
-    std::vector<std::array<uint32_t, 3>> sorted_faces;
-    sorted_faces.reserve(mesh.triangles.size());
+    // A face is a duplicate when an earlier face has the same vertex set. The earlier face of an
+    // in-range duplicate is in range too, so counting flagged in-range faces counts among those.
+    const std::vector<uint8_t> duplicate = find_duplicate_faces(mesh.triangles);
     std::vector<uint8_t> referenced(n, 0);
     UnionFind components(n);
     size_t valid_faces = 0;
-    for (const glm::uvec3& t : mesh.triangles) {
+    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const glm::uvec3& t = mesh.triangles[f];
         if (t.x >= n || t.y >= n || t.z >= n) {
             ++s.degenerate_faces;
             continue;
         }
         ++valid_faces;
+        if (duplicate[f]) ++s.duplicate_faces;
         const glm::dvec3 a(p[t.x]), b(p[t.y]), c(p[t.z]);
         const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
         const bool repeated = t.x == t.y || t.y == t.z || t.x == t.z;
@@ -70,7 +76,6 @@ MeshStats mesh_stats(const Mesh& mesh) {
 
         std::array<uint32_t, 3> v{t.x, t.y, t.z};
         std::sort(v.begin(), v.end());
-        sorted_faces.push_back(v);
         const auto key = [](uint32_t lo, uint32_t hi) { return (uint64_t(lo) << 32) | hi; };
         if (v[0] != v[1]) edges.push_back(key(v[0], v[1]));
         if (v[1] != v[2]) edges.push_back(key(v[1], v[2]));
@@ -91,11 +96,6 @@ MeshStats mesh_stats(const Mesh& mesh) {
         if (j - i > 2) ++s.non_manifold_edges;
         i = j;
     }
-
-    // A face is a duplicate when an earlier face has the same vertex set: total minus unique.
-    tbb::parallel_sort(sorted_faces.begin(), sorted_faces.end());
-    const size_t unique_faces = size_t(std::unique(sorted_faces.begin(), sorted_faces.end()) - sorted_faces.begin());
-    s.duplicate_faces = sorted_faces.size() - unique_faces;
 
     size_t referenced_count = 0;
     for (size_t v = 0; v < n; ++v) {

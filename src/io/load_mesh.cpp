@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/builtin_models.hpp"
+#include "geometry/duplicate_faces.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/weld.hpp"
 #include "inkshade/error.hpp"
@@ -186,6 +187,15 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         // cluster would win, so recompute smooth ones instead.
         mesh.normals.clear();
         weld_keeping_attributes(mesh, options.weld_epsilon);
+    }
+    // Duplicates (same or opposite winding) z-fight into speckles and make crease lines where a
+    // face meets its own reverse. Compared on welded indices, before normals (a reversed copy
+    // would cancel its original's contribution).
+    if (options.drop_duplicate_faces) {
+        const size_t dropped = geometry::drop_duplicate_faces(mesh);
+        if (dropped > 0)
+            mesh.warnings.push_back(path + ": dropped " + std::to_string(dropped) + " duplicate face" +
+                                    (dropped == 1 ? "" : "s") + " (same vertices as an earlier face, either winding)");
     }
     if (options.compute_normals)
         geometry::ensure_vertex_normals(mesh);

@@ -81,6 +81,11 @@ struct Header {
     size_t data_offset = 0;    // first byte after "end_header\n"
     size_t data_line = 0;      // line number of that byte (ascii)
     std::string texture_file;  // `comment TextureFile NAME` (MeshLab, Blender), relative to the file
+    // Lines that start with no PLY keyword (Blender 2.4x writes "Created by Blender3D ..."
+    // without `comment`): skipped, as assimp and Blender skip them, with one warning.
+    size_t foreign_lines = 0;
+    size_t first_foreign_line = 0;
+    std::string first_foreign_text;
 };
 
 // The NAME of a `comment TextureFile NAME` line (the rest of the line, trimmed; may hold spaces).
@@ -145,7 +150,15 @@ Header parse_header(std::string_view text, const std::string& path) {
             if (p.name.empty()) in.fail("property without a name");
             h.elements.back().properties.push_back(std::move(p));
         } else {
-            in.fail("unknown PLY header keyword " + quote_token(key));
+            // Not a keyword (a malformed keyword line failed above): skip the line.
+            if (h.foreign_lines++ == 0) {
+                h.first_foreign_line = line;
+                std::string_view shown = raw;
+                while (!shown.empty() && (shown.back() == '\r' || shown.back() == ' ' || shown.back() == '\t'))
+                    shown.remove_suffix(1);
+                h.first_foreign_text =
+                    quote_token(shown.substr(std::min(shown.find_first_not_of(" \t"), shown.size())));
+            }
         }
     }
     if (!have_format) throw InputError(path, "PLY header has no format line");
@@ -402,6 +415,12 @@ Mesh read_ply(const std::string& path) {
     FileBytes file(path);
     Header h = parse_header(file.view(), path);
     Mesh mesh;
+    if (h.foreign_lines > 0) {
+        const bool one = h.foreign_lines == 1;
+        mesh.warnings.push_back(path + ": skipped " + std::to_string(h.foreign_lines) + " header line" +
+                                (one ? " that is" : "s that are") + " not PLY (" + (one ? "" : "first: ") + "line " +
+                                std::to_string(h.first_foreign_line) + ": " + h.first_foreign_text + ")");
+    }
     switch (h.encoding) {
         case Encoding::Ascii: {
             AsciiSource src(file.view(), h.data_offset, h.data_line, path);

@@ -183,6 +183,28 @@ TEST(InfoCommand, BadFileIsExit2) {
     EXPECT_EQ(line_count(r.err), 1);
 }
 
+// Two triangles of a square, the first repeated as written and reversed.
+const char* kSquareWithDuplicates = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\nf 1 2 3\nf 3 2 1\n";
+
+TEST(InfoCommand, CountsTheDuplicateFacesTheFileHolds) {
+    TempDir dir;
+    const std::string obj = dir.write("dup.obj", kSquareWithDuplicates);
+    auto r = run_cli("info '" + obj + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("triangles:            4\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("duplicate faces:      2\n"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "");  // nothing dropped, so nothing to warn about
+}
+
+TEST(RenderCommand, WarnsOnceAboutDroppedDuplicateFaces) {
+    TempDir dir;
+    const std::string obj = dir.write("dup.obj", kSquareWithDuplicates);
+    auto r = run_cli("lines '" + obj + "' --size 64x64 -o " + dir.file("dup.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "inkshade: warning: " + obj +
+                         ": dropped 2 duplicate faces (same vertices as an earlier face, either winding)\n");
+}
+
 TEST(StylesCommand, ListsEveryModelWithParameters) {
     auto r = run_cli("styles");
     ASSERT_EQ(r.status, 0);

@@ -64,15 +64,100 @@ TEST(LoadMesh, NormalsAreComputedUnlessDisabled) {
     EXPECT_TRUE(load_mesh(p, no_normals).normals.empty());
 }
 
-TEST(LoadMesh, ZeroAreaAndDuplicateFacesLoad) {
+TEST(LoadMesh, ZeroAreaFacesLoadAndDuplicatesAreDropped) {
     TempDir dir;
     std::string s =
         "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n0 0 1\n"
         "3 0 1 2\n3 0 1 2\n3 0 1 3\n3 4 4 4\n";  // duplicate, collinear, collapsed
     Mesh m = load_mesh(dir.write("degenerate.off", s));
-    EXPECT_EQ(m.triangle_count(), 4u);
+    EXPECT_EQ(m.triangle_count(), 3u);
     EXPECT_EQ(m.normals.size(), m.vertex_count());
     for (auto n : m.normals) EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+}
+
+// The message load_mesh gives for `count` dropped faces of `path`.
+std::string dropped_warning(const std::string& path, size_t count) {
+    return path + ": dropped " + std::to_string(count) + " duplicate face" + (count == 1 ? "" : "s") +
+           " (same vertices as an earlier face, either winding)";
+}
+
+TEST(LoadMesh, DuplicateFacesOfEitherWindingAreDroppedWithOneWarning) {
+    TempDir dir;
+    // The cube with quads repeated: one as written, one reversed, one rotated (each two triangles).
+    std::string off = cube_off();
+    const std::string header = "OFF\n# unit cube\n8 6 12\n";
+    ASSERT_EQ(off.rfind(header, 0), 0u);
+    off.replace(0, header.size(), "OFF\n8 9 12\n");
+    off += "4 0 3 2 1\n4 0 1 2 3\n4 6 7 4 5\n";
+    const std::string p = dir.write("dup.off", off);
+    Mesh m = load_mesh(p);
+    EXPECT_EQ(m.triangle_count(), 12u);
+    EXPECT_EQ(m.vertex_count(), 8u);
+    EXPECT_EQ(m.warnings, std::vector<std::string>{dropped_warning(p, 6)});
+    EXPECT_EQ(sorted_positions(m), sorted_cube());
+    // The kept faces are the cube's own, in the file's order, with its orientation.
+    for (size_t t = 0; t < 12; ++t)
+        EXPECT_EQ(m.triangles[t], glm::uvec3(cube_triangles()[t][0], cube_triangles()[t][1], cube_triangles()[t][2]));
+    for (auto n : m.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+
+    LoadOptions keep;
+    keep.drop_duplicate_faces = false;
+    Mesh all = load_mesh(p, keep);
+    EXPECT_EQ(all.triangle_count(), 18u);
+    EXPECT_TRUE(all.warnings.empty());
+}
+
+TEST(LoadMesh, DroppedDuplicatesKeepFaceMaterialsAligned) {
+    TempDir dir;
+    dir.write("colours.mtl", "newmtl red\nKd 1 0 0\n\nnewmtl blue\nKd 0 0 1\n\nnewmtl green\nKd 0 1 0\n");
+    const std::string obj =
+        "mtllib colours.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+        "usemtl red\nf 1 2 3\nusemtl blue\nf 3 2 1\nf 1 3 4\nusemtl green\nf 2 3 1\nf 2 5 3\nusemtl blue\nf 4 1 3\n";
+    const std::string p = dir.write("dup.obj", obj);
+    Mesh m = load_mesh(p);
+    ASSERT_EQ(m.triangle_count(), 3u);
+    ASSERT_EQ(m.face_materials.size(), 3u);
+    EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2));
+    EXPECT_EQ(m.triangles[1], glm::uvec3(0, 2, 3));
+    EXPECT_EQ(m.triangles[2], glm::uvec3(1, 4, 2));
+    EXPECT_EQ(m.materials[m.face_materials[0]].name, "red");
+    EXPECT_EQ(m.materials[m.face_materials[1]].name, "blue");
+    EXPECT_EQ(m.materials[m.face_materials[2]].name, "green");
+    EXPECT_EQ(m.warnings, std::vector<std::string>{dropped_warning(p, 3)});
+}
+
+TEST(LoadMesh, DuplicatesAreFoundAfterWelding) {
+    TempDir dir;
+    auto soup = cube_soup();
+    soup.push_back(soup[3]);                               // as written
+    soup.push_back({soup[5][0], soup[5][2], soup[5][1]});  // reversed
+    const std::string p = dir.write("dup.stl", binary_stl(soup));
+    Mesh m = load_mesh(p);
+    EXPECT_EQ(m.vertex_count(), 8u);
+    EXPECT_EQ(m.triangle_count(), 12u);
+    EXPECT_EQ(m.warnings, std::vector<std::string>{dropped_warning(p, 2)});
+}
+
+TEST(LoadMesh, AFaceAndItsReverseKeepOneFace) {
+    TempDir dir;
+    const std::string p = dir.write("pair.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n");
+    Mesh m = load_mesh(p);
+    ASSERT_EQ(m.triangle_count(), 1u);
+    EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2));
+    EXPECT_EQ(m.warnings, std::vector<std::string>{dropped_warning(p, 1)});
+    ASSERT_EQ(m.normals.size(), 3u);
+    EXPECT_NEAR(m.normals[0].z, 1.0f, 1e-6f);
+}
+
+TEST(LoadMesh, NoDuplicatesNoWarning) {
+    TempDir dir;
+    for (auto [name, bytes] : std::vector<std::pair<std::string, std::string>>{
+             {"a.obj", cube_obj()}, {"b.stl", cube_binary_stl()}, {"c.ply", cube_ascii_ply()}, {"d.off", cube_off()}}) {
+        Mesh m = load_mesh(dir.write(name, bytes));
+        EXPECT_EQ(m.triangle_count(), 12u) << name;
+        EXPECT_TRUE(m.warnings.empty()) << name;
+    }
+    EXPECT_TRUE(load_mesh("builtin:teapot").warnings.empty());
 }
 
 TEST(LoadMesh, NonManifoldMeshLoads) {

@@ -58,7 +58,9 @@ TEST(ObjReader, MtlDiffuseColoursArePerFace) {
     std::string obj =
         "mtllib colours.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
         "f 1 2 3\nusemtl red\nf 1 3 4\nusemtl blue\nf 1 2 3 4\n";
-    Mesh m = load_mesh(dir.write("coloured.obj", obj));
+    LoadOptions keep;  // the quad repeats the first two triangles: keep them to see every face's material
+    keep.drop_duplicate_faces = false;
+    Mesh m = load_mesh(dir.write("coloured.obj", obj), keep);
     ASSERT_EQ(m.triangle_count(), 4u);
     ASSERT_EQ(m.face_materials.size(), 4u);
     auto colour = [&](size_t t) { return m.materials[m.face_materials[t]].diffuse; };
@@ -192,8 +194,11 @@ TEST(ObjReader, LargePolygonsAreTriangulated) {
             s += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
             f += " " + std::to_string(i + 1);
         }
-        Mesh m = load_mesh(dir.write("poly.obj", s + f + "\nf 1 2 3\n"));
+        // The triangle after it is not one of the fan's (those would be dropped as duplicates).
+        Mesh m = load_mesh(dir.write("poly.obj", s + f + "\nf 2 3 4\n"));
         EXPECT_EQ(m.triangle_count(), size_t(n - 2 + 1)) << n;
+        EXPECT_EQ(m.triangles.back(), glm::uvec3(1, 2, 3)) << n;
+        EXPECT_TRUE(m.warnings.empty()) << n;
     }
 }
 

@@ -251,6 +251,55 @@ TEST(PlyReader, HeaderErrorsAreReportedWithLine) {
                       "PLY vertex element lacks x, y or z"));
 }
 
+// Blender 2.47's PLY export writes this line without `comment`; assimp and Blender skip it.
+const std::string kBlenderLine = "Created by Blender3D 247 - www.blender.org, source file: ''";
+
+// `ply` with `line` inserted after the format line (line 3).
+std::string with_line_after_format(std::string ply, const std::string& line) {
+    const size_t at = ply.find('\n', ply.find("format")) + 1;
+    return ply.insert(at, line + "\n");
+}
+
+TEST(PlyReader, HeaderLinesThatAreNotPlyAreSkippedWithOneWarning) {
+    TempDir dir;
+    for (auto [name, bytes] : std::vector<std::pair<std::string, std::string>>{
+             {"ascii.ply", cube_ascii_ply()}, {"le.ply", cube_binary_ply(false)}, {"be.ply", cube_binary_ply(true)}}) {
+        const std::string p = dir.write(name, with_line_after_format(bytes, kBlenderLine));
+        Mesh m = load_mesh(p);
+        EXPECT_EQ(m.vertex_count(), 8u) << name;
+        EXPECT_EQ(m.triangle_count(), 12u) << name;
+        EXPECT_EQ(sorted_positions(m), sorted_cube()) << name;
+        EXPECT_EQ(m.warnings,
+                  std::vector<std::string>{
+                      p + ": skipped 1 header line that is not PLY (line 3: 'Created by Blender3D 247...')"})
+            << name;
+    }
+}
+
+TEST(PlyReader, SeveralForeignHeaderLinesNameTheFirst) {
+    TempDir dir;
+    std::string ply = with_line_after_format(cube_ascii_ply(), "  exported\r");
+    ply = with_line_after_format(ply, "by hand");  // now line 3; "  exported" is line 4
+    const size_t props = ply.find("property float z\n");
+    ply.insert(props, "x-custom 1 2\n");
+    const std::string p = dir.write("several.ply", ply);
+    Mesh m = load_mesh(p);
+    EXPECT_EQ(m.triangle_count(), 12u);
+    EXPECT_EQ(m.warnings,
+              std::vector<std::string>{p + ": skipped 3 header lines that are not PLY (first: line 3: 'by hand')"});
+}
+
+TEST(PlyReader, MalformedKeywordLinesAreStillErrors) {
+    TempDir dir;
+    const std::string ply = with_line_after_format(cube_ascii_ply(), kBlenderLine);
+    std::string bad = ply;
+    bad.replace(bad.find("element vertex 8"), 16, "element vertex x");
+    EXPECT_TRUE(LoadFailsWith(dir.write("a.ply", bad), "expected an element count but found 'x' at line 5"));
+    bad = ply;
+    bad.replace(bad.find("property float z"), 16, "property quad z");
+    EXPECT_TRUE(LoadFailsWith(dir.write("b.ply", bad), "unknown PLY property type 'quad' at line 8"));
+}
+
 TEST(PlyReader, TruncatedBinaryIsAnError) {
     TempDir dir;
     std::string s = cube_binary_ply(false);
