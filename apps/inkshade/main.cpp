@@ -6,6 +6,7 @@
 #include <map>
 
 #include "commands.hpp"
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/version.hpp"
 
@@ -17,6 +18,39 @@ void print_error(const std::string& message) {
     for (char& c : line)
         if (c == '\n' || c == '\r') c = ' ';
     std::cerr << "inkshade: " << line << "\n";
+}
+
+// " (did you mean 'x'?)" for a parse error caused by a misspelt subcommand or long option, or
+// empty. Reads argv, as CLI11 (2.1 in Debian 12) reports the arguments it rejected only as text:
+// before the subcommand, a word that is not one is matched against the subcommands and an
+// unknown --option against the top-level ones; after it, an unknown --option against the
+// subcommand's (there, only when the error message names it).
+std::string suggestion(CLI::App& app, int argc, char** argv, const std::string& error) {
+    CLI::App* sub = nullptr;
+    auto long_options = [](const CLI::App& a) {
+        std::vector<std::string> names;
+        for (const CLI::Option* o : a.get_options())
+            for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+        return names;
+    };
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--") break;  // the rest are positional
+        if (!sub && arg.rfind("-", 0) != 0) {
+            for (CLI::App* s : app.get_subcommands({}))
+                if (s->get_name() == arg) sub = s;
+            if (sub) continue;
+            std::vector<std::string> names;
+            for (const CLI::App* s : app.get_subcommands({})) names.push_back(s->get_name());
+            return inkshade::did_you_mean(arg, names);  // CLI11 may only say "A subcommand is required"
+        }
+        if (arg.rfind("--", 0) != 0 || arg.size() < 3) continue;
+        const std::string name = arg.substr(0, arg.find('='));
+        CLI::App& owner = sub ? *sub : app;
+        if (owner.get_option_no_throw(name) || (sub && error.find(name) == std::string::npos)) continue;
+        return inkshade::did_you_mean(name, long_options(owner));
+    }
+    return "";
 }
 
 }  // namespace
@@ -49,7 +83,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        print_error(std::string(e.what()) + " (see inkshade --help)");
+        print_error(std::string(e.what()) + suggestion(app, argc, argv, e.what()) + " (see inkshade --help)");
         return 2;
     }
     try {

@@ -7,7 +7,8 @@
 
 namespace inkshade {
 
-// Throws InputError("bad colour 'x' (use #rrggbb, r,g,b in [0,1] or a name)").
+// Throws InputError("bad colour 'x' (use #rrggbb, r,g,b with components in [0,1], or a name: black,
+// ...)"), with " (did you mean 'red'?)" when the text is close to a name. Names ignore case.
 glm::vec4 parse_color(const std::string& text);
 
 // The sRGB transfer function (IEC 61966-2-1) with three.js's ColorManagement constants:

@@ -8,24 +8,37 @@
 #include <sstream>
 #include <vector>
 
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 
 namespace inkshade {
 
 namespace {
 
-[[noreturn]] void bad(const std::string& text) {
-    throw InputError("bad colour '" + text + "' (use #rrggbb, r,g,b with components in [0,1], or a name)");
-}
-
-}  // namespace
-
-glm::vec4 parse_color(const std::string& text) {
+const std::map<std::string, glm::vec4>& color_names() {
     static const std::map<std::string, glm::vec4> names = {
         {"black", {0, 0, 0, 1}},         {"white", {1, 1, 1, 1}},     {"grey", {0.5f, 0.5f, 0.5f, 1}},
         {"gray", {0.5f, 0.5f, 0.5f, 1}}, {"red", {1, 0, 0, 1}},       {"green", {0, 1, 0, 1}},
         {"blue", {0, 0, 1, 1}},          {"yellow", {1, 1, 0, 1}},    {"cyan", {0, 1, 1, 1}},
         {"magenta", {1, 0, 1, 1}},       {"orange", {1, 0.5f, 0, 1}}, {"transparent", {0, 0, 0, 0}}};
+    return names;
+}
+
+[[noreturn]] void bad(const std::string& text) {
+    std::vector<std::string> names;
+    std::string list;
+    for (const auto& [name, value] : color_names()) {
+        names.push_back(name);
+        list += (list.empty() ? "" : ", ") + name;
+    }
+    throw InputError("bad colour '" + text + "' (use #rrggbb, r,g,b with components in [0,1], or a name: " + list +
+                     ")" + did_you_mean(text, names));
+}
+
+}  // namespace
+
+glm::vec4 parse_color(const std::string& text) {
+    const auto& names = color_names();
     std::string lower = text;
     std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
     if (auto it = names.find(lower); it != names.end()) return it->second;

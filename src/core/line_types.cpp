@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/lines.hpp"
 
@@ -36,9 +37,16 @@ std::vector<const LineType*> line_types() {
 const LineType& line_type(const std::string& name) {
     for (const auto& t : registry())
         if (t.name == name) return t;
+    for (const auto& t : registry())  // names are lower case; what users type may not be
+        if (equal_ignoring_case(t.name, name)) return t;
     std::string names;
-    for (const auto* t : line_types()) names += (names.empty() ? "" : ", ") + t->name;
-    throw InputError("unknown line type '" + name + "' (choose " + (names.empty() ? "none registered" : names) + ")");
+    std::vector<std::string> candidates;
+    for (const auto* t : line_types()) {
+        names += (names.empty() ? "" : ", ") + t->name;
+        candidates.push_back(t->name);
+    }
+    throw InputError("unknown line type '" + name + "' (choose " + (names.empty() ? "none registered" : names) + ")" +
+                     did_you_mean(name, candidates));
 }
 
 const ParamValue& line_param(const LineSettings& settings, const std::string& name) {

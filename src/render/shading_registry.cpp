@@ -3,6 +3,7 @@
 // nothing else.
 #include <algorithm>
 
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/shading.hpp"
 
@@ -32,9 +33,15 @@ std::vector<const ShadingModel*> shading_models() {
 const ShadingModel& shading_model(const std::string& name) {
     for (const auto& m : registry())
         if (m.name == name) return m;
+    for (const auto& m : registry())  // names are lower case; what users type may not be
+        if (equal_ignoring_case(m.name, name)) return m;
     std::string names;
-    for (const auto* m : shading_models()) names += (names.empty() ? "" : ", ") + m->name;
-    throw InputError("unknown shading model '" + name + "' (choose " + names + ")");
+    std::vector<std::string> candidates;
+    for (const auto* m : shading_models()) {
+        names += (names.empty() ? "" : ", ") + m->name;
+        candidates.push_back(m->name);
+    }
+    throw InputError("unknown shading model '" + name + "' (choose " + names + ")" + did_you_mean(name, candidates));
 }
 
 }  // namespace inkshade

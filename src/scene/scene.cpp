@@ -109,9 +109,9 @@ std::vector<LineSettings> select_vector_lines(const Style& style, const SceneReq
             throw InputError(option + ": '" + name + "' is drawn in the image by `inkshade render`, not as vector " +
                              "lines (choose " + names + ")");
         }
-        for (const LineSettings& l : out)
-            if (l.type == name) throw InputError(option + ": '" + name + "' is listed twice");
-        out.push_back(from_style(name));
+        for (const LineSettings& l : out)  // type.name: the canonical (lower-case) name
+            if (l.type == type.name) throw InputError(option + ": '" + type.name + "' is listed twice");
+        out.push_back(from_style(type.name));
     }
     if (out.empty()) throw InputError(option + ": no line type given");
     return out;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include <toml++/toml.h>
 
 #include "core/embedded_file.hpp"
+#include "core/name_suggestion.hpp"
 #include "inkshade/color.hpp"
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
@@ -346,9 +348,9 @@ void apply_override_unchecked(Style& style, const std::string& text) {
     if (size_t dot = key.find('.'); dot != std::string::npos) {
         const std::string prefix = key.substr(0, dot);
         key = key.substr(dot + 1);
-        if (prefix != model.name) {
+        if (!equal_ignoring_case(prefix, model.name)) {
             for (const LineType* t : line_types())
-                if (t->name == prefix) line = t;
+                if (equal_ignoring_case(t->name, prefix)) line = t;
             if (!line)
                 throw InputError("parameter is for model '" + prefix + "' but the shading model is '" + model.name +
                                  "' (and there is no line type '" + prefix + "')");
@@ -445,6 +447,18 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
     return style;
 }
 
+// The built-in style `name` (a preset, else a shading model's defaults), spelt exactly.
+std::optional<Style> builtin_style(const std::string& name) {
+    if (const EmbeddedFile* f = embedded_preset(name)) {
+        Style s = parse_style(f->contents, std::string("builtin style ") + name);
+        s.name = name;
+        return s;
+    }
+    for (const ShadingModel* m : shading_models())
+        if (m->name == name) return model_default_style(*m);
+    return std::nullopt;
+}
+
 }  // namespace
 
 void apply_style_light(const Style& style, Light& light) {
@@ -469,20 +483,18 @@ Style parse_style(std::string_view text, const std::string& source) {
 }
 
 Style load_style(const std::string& name_or_path) {
-    if (const EmbeddedFile* f = embedded_preset(name_or_path)) {
-        Style s = parse_style(f->contents, std::string("builtin style ") + name_or_path);
-        s.name = name_or_path;
-        return s;
-    }
-    for (const ShadingModel* m : shading_models())
-        if (m->name == name_or_path) return model_default_style(*m);
+    if (auto s = builtin_style(name_or_path)) return *s;
 
     namespace fs = std::filesystem;
     std::error_code ec;
     if (!fs::exists(name_or_path, ec)) {
+        // Built-in names are matched ignoring case, after files: a path stays a path.
+        if (auto s = builtin_style(lower_ascii(name_or_path))) return *s;
+        const std::vector<std::string> builtin = builtin_style_names();
         std::string names;
-        for (const auto& n : builtin_style_names()) names += (names.empty() ? "" : ", ") + n;
-        throw InputError(name_or_path, "no such style file or built-in style (built-in: " + names + ")");
+        for (const auto& n : builtin) names += (names.empty() ? "" : ", ") + n;
+        throw InputError(name_or_path, "no such style file or built-in style (built-in: " + names + ")" +
+                                           did_you_mean(name_or_path, builtin));
     }
     if (!fs::is_regular_file(name_or_path, ec)) throw InputError(name_or_path, "not a regular file");
     if (fs::file_size(name_or_path, ec) > kMaxStyleFileBytes)

@@ -205,6 +205,56 @@ TEST(RenderCommand, WarnsOnceAboutDroppedDuplicateFaces) {
                          ": dropped 2 duplicate faces (same vertices as an earlier face, either winding)\n");
 }
 
+// One line, exit 2, and the suggestion, for each kind of name a user can get slightly wrong.
+TEST(RenderCommand, MisspeltNamesSuggestTheClosest) {
+    TempDir dir;
+    const std::string out = " -o " + dir.file("a.png");
+    const std::pair<std::string, std::string> cases[] = {
+        {"render builtin:sphere --style anmie" + out, "did you mean 'anime'?"},
+        {"render builtin:sphere --shading phnog" + out, "did you mean 'phong'?"},
+        {"lines builtin:sphere --lines contuor -o " + dir.file("a.svg"), "did you mean 'contour'?"},
+        {"rendr", "did you mean 'render'?"},
+        {"Render builtin:sphere" + out, "did you mean 'render'?"},
+        {"render --szie 64x64 builtin:sphere" + out, "did you mean '--size'?"},
+        {"render builtin:sphere --sampels=4" + out, "did you mean '--samples'?"},
+        {"--verison", "did you mean '--version'?"},
+        {"render builtin:sphere --background whiet" + out, "did you mean 'white'?"},
+    };
+    for (const auto& [args, suggestion] : cases) {
+        auto r = run_cli(args);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+        EXPECT_EQ(r.err.rfind("inkshade: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(suggestion), std::string::npos) << args << ": " << r.err;
+    }
+    auto bg = run_cli("render builtin:sphere --background whiet" + out);
+    EXPECT_NE(bg.err.find("or a name: black, blue, cyan, gray, green, grey, magenta, orange, red, transparent, white, "
+                          "yellow)"),
+              std::string::npos)
+        << bg.err;
+}
+
+TEST(RenderCommand, NamesWithNoCloseMatchGetNoSuggestion) {
+    TempDir dir;
+    const std::string out = " -o " + dir.file("a.png");
+    for (const std::string& args :
+         {"render builtin:sphere --style watercolour" + out, "render builtin:sphere --shading glossy" + out,
+          "lines builtin:sphere --lines squiggle -o " + dir.file("a.svg"), std::string("paint"),
+          "render builtin:sphere --frobnicate 3" + out, "render builtin:sphere --background plaid" + out}) {
+        auto r = run_cli(args);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+        EXPECT_EQ(r.err.find("did you mean"), std::string::npos) << args << ": " << r.err;
+    }
+}
+
+TEST(RenderCommand, NamesIgnoreCase) {
+    TempDir dir;
+    EXPECT_EQ(run_cli("render builtin:sphere --size 32x32 --style Anime -o " + dir.file("a.png")).status, 0);
+    EXPECT_EQ(run_cli("render builtin:sphere --size 32x32 --shading PHONG -o " + dir.file("b.png")).status, 0);
+    EXPECT_EQ(run_cli("lines builtin:sphere --size 32x32 --lines Contour -o " + dir.file("c.svg")).status, 0);
+}
+
 TEST(StylesCommand, ListsEveryModelWithParameters) {
     auto r = run_cli("styles");
     ASSERT_EQ(r.status, 0);

@@ -135,6 +135,21 @@ TEST(Scene, LinesOptionSelectsTypesAndOverridesReachThem) {
     EXPECT_EQ(lines_error({}), "--lines: no line type given");
     EXPECT_EQ(lines_error({""}), "--lines: empty line type name");
     EXPECT_NE(lines_error({"nope"}).find("unknown line type 'nope'"), std::string::npos);
+    EXPECT_NE(lines_error({"contuor"}).find("(did you mean 'contour'?)"), std::string::npos);
+    EXPECT_EQ(lines_error({"contour", "Contour"}), "--lines: 'contour' is listed twice");
+}
+
+TEST(Scene, NamesIgnoreCase) {
+    SceneRequest r;
+    r.outputs = {.image = false, .line_drawing = true};
+    r.vector_lines = std::vector<std::string>{"Ridge", "CONTOUR"};
+    EXPECT_EQ(types_of(make_scene(r).vector_lines), (std::vector<std::string>{"ridge", "contour"}));
+    SceneRequest shaded;
+    shaded.shading = "Gooch";
+    EXPECT_EQ(make_scene(shaded).style.shading.model, "gooch");
+    SceneRequest styled;
+    styled.style = "INK";
+    EXPECT_EQ(make_scene(styled).style.name, "ink");
 }
 
 TEST(Scene, StyleDataGivesItsLightsToANamedStyle) {

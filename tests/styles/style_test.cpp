@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <functional>
 
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
@@ -83,6 +85,70 @@ TEST(Style, UnknownStyleNameListsBuiltins) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("cel-000"), std::string::npos) << e.what();
     }
+}
+
+TEST(Style, UnknownNamesSuggestTheClosestOne) {
+    auto error = [](const std::function<void()>& f) {
+        try {
+            f();
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string style = error([] { load_style("anmie"); });
+    EXPECT_EQ(style.rfind("anmie: no such style file or built-in style (built-in: anime, ", 0), 0u) << style;
+    EXPECT_TRUE(style.ends_with(") (did you mean 'anime'?)")) << style;
+    const std::string model = error([] { shading_model("phnog"); });
+    EXPECT_EQ(model.rfind("unknown shading model 'phnog' (choose ", 0), 0u) << model;
+    EXPECT_TRUE(model.ends_with(") (did you mean 'phong'?)")) << model;
+    const std::string line = error([] { line_type("contuor"); });
+    EXPECT_EQ(line.rfind("unknown line type 'contuor' (choose ", 0), 0u) << line;
+    EXPECT_TRUE(line.ends_with(") (did you mean 'contour'?)")) << line;
+    // Nothing close: the list alone.
+    for (const std::string& e : {error([] { load_style("glossy"); }), error([] { shading_model("glossy"); }),
+                                 error([] { line_type("squiggle"); })}) {
+        EXPECT_FALSE(e.empty());
+        EXPECT_EQ(e.find("did you mean"), std::string::npos) << e;
+    }
+    EXPECT_NE(error_of("[shading]\nmodel = 'lambret'").find("(did you mean 'lambert'?)"), std::string::npos);
+    EXPECT_NE(error_of("[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'crese'").find("(did you mean 'crease'?)"),
+              std::string::npos);
+}
+
+TEST(Style, NamesIgnoreCaseAndKeepTheirCanonicalSpelling) {
+    EXPECT_EQ(shading_model("PHONG").name, "phong");
+    EXPECT_EQ(shading_model("Blinn-Phong").name, "blinn-phong");
+    EXPECT_EQ(line_type("Contour").name, "contour");
+    EXPECT_EQ(line_type("RIM-contour").name, "rim-contour");
+    const Style anime = load_style("Anime");
+    EXPECT_EQ(anime.name, "anime");
+    EXPECT_EQ(anime.shading.model, load_style("anime").shading.model);
+    const Style phong = load_style("PHONG");  // a model's default style
+    EXPECT_EQ(phong.name, "phong");
+    EXPECT_EQ(phong.shading.model, "phong");
+    const Style file = parse_style("[shading]\nmodel = 'Phong'\n[[lines]]\ntype = 'Hull'\n", "my.toml");
+    EXPECT_EQ(file.shading.model, "phong");
+    ASSERT_EQ(file.lines.size(), 1u);
+    EXPECT_EQ(file.lines[0].type, "hull");
+    Style over = load_style("phong");
+    apply_override(over, "PHONG.shininess=8");
+    EXPECT_EQ(over.shading.params.at("shininess"), ParamValue{8.0f});
+}
+
+TEST(Style, AStylePathStaysAPath) {
+    // A file spelt like a built-in but for case is the file, not the built-in.
+    test::TempDir dir;
+    const std::string path = dir.write("Toon", "[shading]\nmodel = 'gooch'\n");
+    const auto cwd = std::filesystem::current_path();
+    std::filesystem::current_path(dir.path());
+    Style s;
+    EXPECT_NO_THROW(s = load_style("Toon"));
+    std::filesystem::current_path(cwd);
+    EXPECT_EQ(s.shading.model, "gooch");
+    EXPECT_EQ(load_style(path).shading.model, "gooch");
+    EXPECT_EQ(load_style("toon").name, "toon");              // the built-in when spelt exactly
+    EXPECT_THROW(load_style(dir.file("TOON")), InputError);  // no such file: a path is not a name
 }
 
 TEST(Style, BuiltinsIncludePresetsAndOneStylePerModel) {
