@@ -305,16 +305,17 @@ PYBIND11_MODULE(inkshade, m) {
         .def(
             "render",
             [](PyRenderer& r, const std::string& style, const std::vector<std::string>& set, int samples,
-               const py::object& background, const py::kwargs& kwargs) {
+               const py::object& background, const std::vector<std::string>& lines, const py::kwargs& kwargs) {
         SceneRequest request = request_of(style, set, kwargs, {.image = true, .line_drawing = false});
         request.samples = samples;
+        request.added_lines = lines;
         if (!background.is_none()) request.background = to_color("background", background, true);
         return r.render(make_scene(request));
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
-            py::arg("background") = py::none(),
+            py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
             "RGBA uint8 array (height, width, 4), top row first: the PNG `inkshade render` writes for the same "
-            "options.")
+            "options; `lines` adds line types to the style, as `inkshade render --lines`.")
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,

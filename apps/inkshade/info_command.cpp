@@ -26,7 +26,7 @@ size_t texture_count(const Mesh& mesh) {
 Command add_info_command(CLI::App& app) {
     auto model = std::make_shared<std::string>();
     CLI::App* cmd = app.add_subcommand("info", "print facts about a mesh (counts, bounds, topology)");
-    cmd->add_option("MODEL", *model, "mesh file or builtin:NAME")->required();
+    cmd->add_option("MODEL", *model, "mesh file (" + readable_extensions() + ") or builtin:NAME")->required();
     return [model] {
         auto start = std::chrono::steady_clock::now();
         LoadOptions as_in_file;  // count the file's duplicate faces rather than drop them

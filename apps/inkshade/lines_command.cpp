@@ -68,22 +68,12 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
                 peak_rss_mib());
 }
 
-// The line types --lines names, comma-separated; unset when it is not given.
-std::optional<std::vector<std::string>> split_lines_option(const std::string& text) {
-    if (text.empty()) return std::nullopt;
-    std::vector<std::string> names;
-    std::stringstream ss(text);
-    std::string name;
-    while (std::getline(ss, name, ',')) names.push_back(name);
-    return names;
-}
-
 int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     check_output_path("-o", args.output);
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);
     SceneRequest request = args.scene.to_request(cmd);
     request.outputs = {.image = false, .line_drawing = true};
-    request.vector_lines = split_lines_option(args.lines);
+    request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
     const Scene scene = make_scene(request);
 

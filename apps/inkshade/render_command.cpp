@@ -24,11 +24,14 @@ struct RenderArgs {
     int timing = 0;
     std::string save_style;
     std::string scene_file;  // --scene
+    std::string lines;       // --lines a,b: line types added to the style
 };
 
 int run_render(RenderArgs& args, const CLI::App& cmd) {
     check_output_path("-o", args.output);
-    const Scene scene = make_scene(args.scene.to_request(cmd, args.scene_file));
+    SceneRequest request = args.scene.to_request(cmd, args.scene_file);
+    request.added_lines = split_names(args.lines).value_or(std::vector<std::string>{});
+    const Scene scene = make_scene(request);
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     const RenderOptions& options = scene.options;
     const auto load_start = std::chrono::steady_clock::now();
@@ -91,6 +94,9 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "output PNG file (written atomically)")->required();
     cmd->add_option("--timing", args->timing, "render N extra frames and print median ms per pass and total")
         ->check(CLI::Range(0, 100000));
+    cmd->add_option("--lines", args->lines,
+                    "line types added to the style, comma-separated: raster (hull, rim-contour, edges, ...) or "
+                    "object-space (contour, suggestive, crease, ...); --set TYPE.param=value then reaches them");
     cmd->add_option("--save-style", args->save_style,
                     "also write the style used (with every --set applied) to a .toml file");
     cmd->add_option("--scene", args->scene_file,

@@ -1,11 +1,16 @@
 #include "scene_options.hpp"
 
+#include <sstream>
+
+#include "inkshade/io.hpp"
+
 namespace inkshade::cli {
 
 void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     SceneRequest& r = request;
     CameraOptions& c = r.camera;
-    cmd.add_option("MODEL", r.model, "mesh file (.obj .stl .ply .off) or builtin:sphere|torus|torus-knot|teapot")
+    cmd.add_option("MODEL", r.model,
+                   "mesh file (" + readable_extensions() + ") or builtin:sphere|torus|torus-knot|teapot")
         ->required(model_required);
     cmd.add_option("--style", r.style, "built-in style name or style file (.toml); see `inkshade styles`");
     cmd.add_option("--shading", r.shading, "shading model with default parameters (default lambert)");
@@ -40,6 +45,14 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--background", background, "background colour or 'transparent' (default: the style's, white)");
     cmd.add_option("--samples", r.samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd.add_flag("--srgb", r.srgb, "sRGB-encode the output (default: formula values as they are)");
+}
+
+std::optional<std::vector<std::string>> split_names(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    std::vector<std::string> names;
+    std::stringstream ss(text);
+    for (std::string name; std::getline(ss, name, ',');) names.push_back(name);
+    return names;
 }
 
 SceneRequest SceneOptions::to_request(const CLI::App& cmd, const std::string& scene_file) const {

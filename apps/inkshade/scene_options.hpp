@@ -2,7 +2,9 @@
 // camera, light, image. They fill a SceneRequest (inkshade/scene.hpp), which make_scene checks
 // as it checks every front end's.
 #pragma once
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -23,5 +25,8 @@ struct SceneOptions {
     // `scene_file`, a three.js scene's values where `cmd` has no option of its own.
     SceneRequest to_request(const CLI::App& cmd, const std::string& scene_file = {}) const;
 };
+
+// The names of a comma-separated option (--lines a,b), or nothing when it is not given.
+std::optional<std::vector<std::string>> split_names(const std::string& text);
 
 }  // namespace inkshade::cli

@@ -24,6 +24,10 @@ struct LoadOptions {
 // Problems that do not stop the load (a texture that cannot be read) are in Mesh::warnings.
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 
+// Every file extension load_mesh reads, space-separated: ".obj .stl .ply .off .gltf .glb .vrm"
+// and, when built with assimp, the other formats it has importers for.
+std::string readable_extensions();
+
 // Names accepted after "builtin:" (sphere, torus, torus-knot, teapot).
 std::vector<std::string> builtin_model_names();
 

@@ -41,6 +41,9 @@ struct SceneRequest {
     // default_vector_lines() when the style draws none.
     std::optional<std::vector<std::string>> vector_lines;
     bool hidden = false;  // the line drawing also has the hidden parts (dashed layers)
+    // Line types added to an image's style (raster or object-space; `render --lines`), in
+    // order after the style's; a type the style draws keeps its parameters.
+    std::vector<std::string> added_lines;
 
     glm::ivec2 size{1024, 1024};
     CameraOptions camera;  // what is unset is auto-framed (frame_camera)

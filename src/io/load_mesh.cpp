@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -205,6 +206,15 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
 }
 
 std::vector<std::string> builtin_model_names() { return builtin::names(); }
+
+std::string readable_extensions() {
+    std::string out = ".obj .stl .ply .off .gltf .glb .vrm";
+    const std::string native = out + " ";
+    std::istringstream others(io::assimp_extensions());
+    for (std::string ext; others >> ext;)
+        if (native.find(lowercase(ext) + " ") == std::string::npos) out += " " + lowercase(ext);
+    return out;
+}
 
 namespace io {
 

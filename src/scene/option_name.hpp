@@ -8,8 +8,10 @@
 namespace inkshade {
 
 inline std::string option_name(OptionNames names, const std::string& option) {
+    // The line drawing's types are `lines --lines` on the command line, Renderer.lines(types)
+    // and svg(types) in Python.
+    if (option == "vector-lines") return names == OptionNames::Cli ? "--lines" : "types";
     if (names == OptionNames::Cli) return "--" + option;
-    if (option == "lines") return "types";  // Renderer.lines(types) and svg(types)
     std::string keyword = option;
     for (char& c : keyword)
         if (c == '-') c = '_';

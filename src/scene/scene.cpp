@@ -2,6 +2,7 @@
 // (named style or shading model, a three.js scene's lights, --set overrides, colour options).
 #include "inkshade/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "inkshade/error.hpp"
@@ -67,6 +68,22 @@ Style named_style(const SceneRequest& r) {
     return s;
 }
 
+// The line types the request adds to an image's style, before the overrides so that
+// TYPE.param=value reaches them; a type the style draws keeps its parameters.
+void add_lines(const SceneRequest& r, Style& s) {
+    const std::string option = option_name(r.names, "lines");
+    std::vector<std::string> seen;
+    for (const std::string& name : r.added_lines) {
+        if (name.empty()) throw InputError(option + ": empty line type name");
+        const LineType& type = line_type(name);  // InputError names the choices (and the closest)
+        if (std::find(seen.begin(), seen.end(), type.name) != seen.end())
+            throw InputError(option + ": '" + type.name + "' is listed twice");
+        seen.push_back(type.name);
+        if (std::none_of(s.lines.begin(), s.lines.end(), [&](const LineSettings& l) { return l.type == type.name; }))
+            s.lines.push_back({type.name, {}});
+    }
+}
+
 // --set overrides, then the colour options, which win over the style's.
 void apply_overrides(const SceneRequest& r, Style& s) {
     for (const std::string& set : r.sets) {
@@ -98,7 +115,7 @@ std::vector<LineSettings> select_vector_lines(const Style& style, const SceneReq
             for (const std::string& name : default_vector_lines()) out.push_back(from_style(name));
         return out;
     }
-    const std::string option = option_name(r.names, "lines");
+    const std::string option = option_name(r.names, "vector-lines");
     for (const std::string& name : *r.vector_lines) {
         if (name.empty()) throw InputError(option + ": empty line type name");
         const LineType& type = line_type(name);  // InputError names the choices
@@ -146,6 +163,7 @@ Scene make_scene(const SceneRequest& r) {
     const Style named = named_style(r);
     if (r.outputs.image) {
         scene.style = named;
+        add_lines(r, scene.style);
         apply_overrides(r, scene.style);
     }
     if (r.outputs.line_drawing) {

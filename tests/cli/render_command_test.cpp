@@ -305,5 +305,37 @@ TEST(RenderCommand, UpAxisZStandsAZUpModelUpright) {
     EXPECT_NE(bad.err.find("--up-axis: expected x, y, z, -x, -y or -z, got 'w'"), std::string::npos) << bad.err;
 }
 
+// --lines adds line types to any style; --set then reaches them.
+TEST(RenderCommand, LinesOptionAddsLineTypesToTheStyle) {
+    TempDir dir;
+    const std::string base = "render builtin:torus --size 96x96 --style mtoon --samples 1";
+    auto r = run_cli(base + " -o " + dir.file("plain.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli(base + " --lines hull --set hull.width=4 --set hull.color=1,0,0 -o " + dir.file("hull.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Image plain = read_png(dir.file("plain.png")), hull = read_png(dir.file("hull.png"));
+    int red = 0;  // the outline's pure red, which mtoon's shading of the torus never gives
+    for (int y = 0; y < hull.height; ++y)
+        for (int x = 0; x < hull.width; ++x) {
+            const auto h = hull.pixel(x, y), p = plain.pixel(x, y);
+            red += h[0] == 255 && h[1] == 0 && h[2] == 0 && !(p[0] == 255 && p[1] == 0 && p[2] == 0);
+        }
+    EXPECT_GT(red, 100);
+    r = run_cli(base + " --lines hul -o " + dir.file("x.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("did you mean 'hull'?"), std::string::npos) << r.err;
+}
+
+TEST(RenderCommand, HelpListsEveryReadableFormat) {
+    const auto r = run_cli("render --help");
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* ext : {".obj", ".stl", ".ply", ".off", ".gltf", ".glb", ".vrm"})
+        EXPECT_NE(r.out.find(ext), std::string::npos) << ext;
+#ifdef INKSHADE_HAVE_ASSIMP
+    EXPECT_NE(r.out.find(".fbx"), std::string::npos);  // assimp's importers
+    EXPECT_NE(r.out.find(".dae"), std::string::npos);
+#endif
+}
+
 }  // namespace
 }  // namespace inkshade::test

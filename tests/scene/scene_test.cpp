@@ -235,5 +235,27 @@ TEST(Scene, OptionTextParsesOrNamesTheOption) {
     EXPECT_EQ(message([] { parse_color("--base-color", "nope"); }).rfind("--base-color: ", 0), 0u);
 }
 
+TEST(Scene, AddedLinesJoinTheImageStyleBeforeTheOverrides) {
+    SceneRequest r;
+    r.style = "mtoon";  // draws no lines of its own
+    r.added_lines = {"hull", "Contour"};
+    r.sets = {"hull.width=5"};
+    const Scene s = make_scene(r);
+    ASSERT_EQ(types_of(s.style.lines), (std::vector<std::string>{"hull", "contour"}));
+    EXPECT_EQ(s.style.lines[0].params.at("width"), ParamValue{5.0f});
+    // A type the style draws keeps its parameters and its place.
+    r.style = "ink-vector";
+    r.added_lines = {"suggestive", "hull"};
+    r.sets = {};
+    const Scene ink = make_scene(r);
+    EXPECT_EQ(types_of(ink.style.lines),
+              (std::vector<std::string>{"contour", "suggestive", "crease", "border", "hull"}));
+    EXPECT_EQ(ink.style.lines[1].params.at("width"), ParamValue{1.5f});
+    EXPECT_EQ(error_of([](SceneRequest& q) { q.added_lines = {"hull", "hull"}; }), "--lines: 'hull' is listed twice");
+    EXPECT_EQ(error_of([](SceneRequest& q) { q.added_lines = {"hull", "hull"}; }, OptionNames::Keywords),
+              "lines: 'hull' is listed twice");
+    EXPECT_NE(error_of([](SceneRequest& q) { q.added_lines = {"hul"}; }).find("did you mean 'hull'?"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace inkshade
