@@ -2,6 +2,7 @@
 // suggestive contours, creases, borders, ...) with hidden lines removed, as layered SVG.
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -70,6 +71,10 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
 
 int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     check_output_path("-o", args.output);
+    std::string ext = std::filesystem::path(args.output).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    // Until line drawings are rasterised, anything but SVG text would land in a misnamed file.
+    if (ext != ".svg") throw InputError(args.output + ": `inkshade lines` writes SVG: name the output .svg");
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);
     SceneRequest request = args.scene.to_request(cmd);
     request.outputs = {.image = false, .line_drawing = true};

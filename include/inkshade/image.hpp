@@ -24,6 +24,15 @@ void flip_vertically(Image& image);
 // Throws RuntimeError with "FILE: reason" when it cannot.
 void write_png(const std::string& path, const Image& image);
 
+// JPEG (baseline, 8-bit RGB) at `quality` 1..100, written atomically; the alpha channel is
+// dropped, so callers refuse images with transparency first. Throws RuntimeError.
+void write_jpeg(const std::string& path, const Image& image, int quality = 95);
+
+// The image formats the CLI writes, chosen by the output's extension (case-insensitive).
+enum class ImageFormat { Png, Jpeg };
+// Throws InputError("FILE: cannot write '.bmp' images (write .png, .jpg or .jpeg)").
+ImageFormat image_format_of(const std::string& path);
+
 // Reads a PNG into RGBA8 (used by tests and golden comparisons). Throws InputError.
 Image read_png(const std::string& path);
 

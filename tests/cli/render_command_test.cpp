@@ -1,6 +1,7 @@
 // `inkshade render`, `info`, `styles`: exit codes, one-line errors, outputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -335,6 +336,56 @@ TEST(RenderCommand, HelpListsEveryReadableFormat) {
     EXPECT_NE(r.out.find(".fbx"), std::string::npos);  // assimp's importers
     EXPECT_NE(r.out.find(".dae"), std::string::npos);
 #endif
+}
+
+// The output's extension chooses the format; anything else fails before any work.
+TEST(RenderCommand, OutputFormatFollowsTheExtension) {
+    TempDir dir;
+    const std::string base = "render builtin:torus --size 64x48 --style cel-000 ";
+    auto r = run_cli(base + "-o " + dir.file("a.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli(base + "-o " + dir.file("a.JPG"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string jpeg = slurp(dir.file("a.JPG"));
+    ASSERT_GT(jpeg.size(), 3u);
+    EXPECT_EQ(jpeg.substr(0, 3), std::string("\xFF\xD8\xFF"));                         // JPEG's start-of-image marker
+    const Image png = read_png(dir.file("a.png")), jpg = read_png(dir.file("a.JPG"));  // stb decodes both
+    ASSERT_EQ(jpg.width, 64);
+    ASSERT_EQ(jpg.height, 48);
+    double error = 0.0;
+    for (size_t i = 0; i < png.rgba.size(); ++i)
+        if (i % 4 != 3) error += std::abs(int(png.rgba[i]) - int(jpg.rgba[i]));
+    EXPECT_LT(error / double(png.width * png.height * 3), 4.0);  // quality 95: a few levels at most
+    r = run_cli(base + "--quality 20 -o " + dir.file("b.jpeg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_LT(slurp(dir.file("b.jpeg")).size(), jpeg.size());
+
+    for (const std::string& bad :
+         {base + "-o " + dir.file("c.bmp"), base + "-o " + dir.file("c"), base + "--quality 50 -o " + dir.file("c.png"),
+          base + "--background transparent -o " + dir.file("c.jpg")}) {
+        r = run_cli(bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_EQ(line_count(r.err), 1) << r.err;
+    }
+    EXPECT_NE(
+        run_cli(base + "-o " + dir.file("c.bmp")).err.find("cannot write '.bmp' images (write .png, .jpg or .jpeg)"),
+        std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir.file("c.bmp")));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("c.jpg")));
+}
+
+// A second output that cannot be written leaves no first one behind.
+TEST(RenderCommand, EveryOutputIsCheckedBeforeWork) {
+    TempDir dir;
+    auto r = run_cli("render builtin:sphere --size 16x16 -o " + dir.file("a.png") + " --save-style " +
+                     dir.file("missing/s.toml"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("missing"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
+    r = run_cli("lines builtin:sphere --size 16x16 -o " + dir.file("l.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("writes SVG"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("l.png")));
 }
 
 }  // namespace
