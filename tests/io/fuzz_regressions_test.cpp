@@ -18,36 +18,16 @@
 #include "io/gltf_files.hpp"
 #include "io/mesh_files.hpp"
 #include "io/texture_image.hpp"
+#include "support/fuzz_replay.hpp"
 #include "support/temp_dir.hpp"
 
 namespace inkshade::test {
 namespace {
 
-std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// Feeds every saved input of `target`, and its seed corpus (fuzz/corpus/TARGET: valid files),
-// to `run`; a broken contract or an exception other than InputError fails the test and names
-// the file.
+// Every saved input of `target` and its seed corpus (fuzz/corpus/TARGET: valid files).
 void replay(const std::string& target, void (*run)(std::string_view)) {
-    const std::filesystem::path root(INKSHADE_SOURCE_DIR);
-    std::vector<std::filesystem::path> files;
-    for (const auto& dir : {root / "tests/io/fuzz_regressions" / target, root / "fuzz/corpus" / target})
-        if (std::filesystem::is_directory(dir))
-            for (const auto& entry : std::filesystem::directory_iterator(dir)) files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    EXPECT_FALSE(files.empty()) << "no inputs for " << target;
-    for (const auto& file : files) {
-        try {
-            run(read_bytes(file));
-        } catch (const std::exception& e) {
-            ADD_FAILURE() << file.string() << ": " << e.what();
-        }
-    }
+    const std::string saved = "tests/io/fuzz_regressions/" + target, corpus = "fuzz/corpus/" + target;
+    replay_fuzz_inputs({saved.c_str(), corpus.c_str()}, [&](const std::string& bytes) { run(bytes); });
 }
 
 TEST(FuzzRegressions, ReplayObj) { replay("obj", fuzz::obj_input); }

@@ -11,6 +11,7 @@
 
 #include "../../fuzz/scene_target.hpp"
 #include "../../fuzz/style_target.hpp"
+#include "support/fuzz_replay.hpp"
 
 namespace inkshade {
 namespace {
@@ -26,22 +27,8 @@ std::string error_of(std::string_view text) {
 
 // Every saved input, and the seed corpus (fuzz/corpus/style: the presets and an override file).
 TEST(StyleFuzzRegressions, ReplaySavedInputs) {
-    const std::filesystem::path root(INKSHADE_SOURCE_DIR);
-    std::vector<std::filesystem::path> files;
-    for (const auto& dir : {root / "tests/styles/fuzz_regressions", root / "fuzz/corpus/style"})
-        for (const auto& entry : std::filesystem::directory_iterator(dir)) files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    ASSERT_FALSE(files.empty());
-    for (const auto& file : files) {
-        std::ifstream in(file, std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        try {
-            fuzz::style_input(bytes.str());
-        } catch (const std::exception& e) {
-            ADD_FAILURE() << file.string() << ": " << e.what();
-        }
-    }
+    test::replay_fuzz_inputs({"tests/styles/fuzz_regressions", "fuzz/corpus/style"},
+                             [](const std::string& bytes) { fuzz::style_input(bytes); });
 }
 
 // toml++ 3.3 writes a string with a line break as '''...''' even when it holds ''' itself,
@@ -60,23 +47,9 @@ TEST(StyleFuzzRegressions, SavedStringsWithQuotesAndLineBreaksReadBack) {
 // line break, quoted in an error; a number beyond double range, which nlohmann::json reports as
 // out_of_range rather than parse_error).
 TEST(SceneFuzzRegressions, ReplaySavedInputs) {
-    const std::filesystem::path root(INKSHADE_SOURCE_DIR);
-    size_t n = 0;
-    for (const auto& dir : {root / "tests/styles/scene_fuzz_regressions", root / "fuzz/corpus/scene"}) {
-        if (!std::filesystem::exists(dir)) continue;
-        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-            std::ifstream in(entry.path(), std::ios::binary);
-            std::ostringstream bytes;
-            bytes << in.rdbuf();
-            ++n;
-            try {
-                fuzz::scene_input(bytes.str());
-            } catch (const std::exception& e) {
-                ADD_FAILURE() << entry.path().string() << ": " << e.what();
-            }
-        }
-    }
-    EXPECT_GE(n, 7u);
+    EXPECT_GE(test::replay_fuzz_inputs({"tests/styles/scene_fuzz_regressions", "fuzz/corpus/scene"},
+                                       [](const std::string& bytes) { fuzz::scene_input(bytes); }),
+              7u);
 }
 
 // toml++ 3.3 reaches __builtin_unreachable when it tests a non-ASCII character for whitespace
