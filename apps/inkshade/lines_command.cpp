@@ -2,7 +2,6 @@
 // suggestive contours, creases, borders, ...) with hidden lines removed, as layered SVG.
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
@@ -71,8 +71,7 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
 
 int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     check_output_path("-o", args.output);
-    std::string ext = std::filesystem::path(args.output).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower_ascii(std::filesystem::path(args.output).extension().string());
     // Until line drawings are rasterised, anything but SVG text would land in a misnamed file.
     if (ext != ".svg") throw InputError(args.output + ": `inkshade lines` writes SVG: name the output .svg");
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/jobs.hpp"
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/scene.hpp"
 #include "io/text_scanner.hpp"
@@ -227,8 +228,7 @@ void parse_jsonl(const std::vector<std::pair<int, std::string_view>>& lines, con
 }
 
 bool is_json_lines(std::string_view text, const std::string& source) {
-    std::string ext = std::filesystem::path(source).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower_ascii(std::filesystem::path(source).extension().string());
     if (ext == ".csv") return false;
     if (ext == ".jsonl" || ext == ".ndjson" || ext == ".json") return true;
     for (const auto& [number, line] : numbered_lines(text))

@@ -1,8 +1,8 @@
 // The models of a directory for `inkshade batch --models DIR` (find_models, inkshade/batch.hpp).
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 
+#include "core/name_suggestion.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
 
@@ -12,8 +12,7 @@ namespace {
 
 // The extensions load_mesh reads (io/load_mesh.cpp); other files (textures, .mtl) are not models.
 bool is_model_file(const std::filesystem::path& p) {
-    std::string ext = p.extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower_ascii(p.extension().string());
     for (const char* known : {".obj", ".stl", ".ply", ".off", ".gltf", ".glb", ".vrm"})
         if (ext == known) return true;
     return false;

@@ -29,7 +29,6 @@ double ms_since(Clock::time_point start) {
 
 // A job's style, loaded once for the whole batch to check it and hash its text.
 struct ResolvedStyle {
-    Style style;
     std::string toml;   // format_style: hashed and recorded, so an edited style file re-renders
     std::string error;  // the style does not load: every job of the style fails with this
 };
@@ -39,8 +38,7 @@ ResolvedStyle resolve_style(const std::string& name) {
     try {
         SceneRequest request;
         request.style = name;
-        r.style = make_scene(request).style;
-        r.toml = format_style(r.style);
+        r.toml = format_style(make_scene(request).style);
     } catch (const std::exception& e) {
         r.error = e.what();
     }

@@ -39,8 +39,7 @@ const std::map<std::string, glm::vec4>& color_names() {
 
 glm::vec4 parse_color(const std::string& text) {
     const auto& names = color_names();
-    std::string lower = text;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string lower = lower_ascii(text);
     if (auto it = names.find(lower); it != names.end()) return it->second;
 
     if (!lower.empty() && lower[0] == '#') {

@@ -40,6 +40,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "io/file_bytes.hpp"
 #include "io/readers.hpp"
@@ -964,8 +965,7 @@ void check_required_extensions(const tinygltf::Model& model, const std::string& 
 Mesh read_gltf(const std::string& path) {
     FileBytes file(path);
     const std::string_view bytes = file.view();
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower_ascii(std::filesystem::path(path).extension().string());
     // By content where it is unambiguous: GLB magic, or JSON's opening brace (a .gltf renamed
     // .glb); otherwise the extension decides, and its reader's errors say what is wrong.
     const size_t first = bytes.find_first_not_of(" \t\r\n");

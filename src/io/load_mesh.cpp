@@ -1,7 +1,6 @@
 // load_mesh: dispatch on the extension, validate what the reader returned, weld soups and
 // make sure there are normals. The readers parse; everything format-independent is here.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -9,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/name_suggestion.hpp"
 #include "geometry/builtin_models.hpp"
 #include "geometry/duplicate_faces.hpp"
 #include "geometry/normals.hpp"
@@ -20,11 +20,6 @@
 
 namespace inkshade {
 namespace {
-
-std::string lowercase(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -152,7 +147,7 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         return mesh;
     }
 
-    std::string ext = lowercase(std::filesystem::path(path).extension().string());
+    std::string ext = lower_ascii(std::filesystem::path(path).extension().string());
     Mesh mesh;
     bool soup = io::format_is_soup(ext);
     if (ext == ".obj") {
@@ -208,18 +203,22 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
 std::vector<std::string> builtin_model_names() { return builtin::names(); }
 
 std::string readable_extensions() {
-    std::string out = ".obj .stl .ply .off .gltf .glb .vrm";
-    const std::string native = out + " ";
-    std::istringstream others(io::assimp_extensions());
-    for (std::string ext; others >> ext;)
-        if (native.find(lowercase(ext) + " ") == std::string::npos) out += " " + lowercase(ext);
-    return out;
+    // Asked by every command's --help text at start-up: assimp's importer list is built once.
+    static const std::string list = [] {
+        std::string out = ".obj .stl .ply .off .gltf .glb .vrm";
+        const std::string native = out + " ";
+        std::istringstream others(io::assimp_extensions());
+        for (std::string ext; others >> ext;)
+            if (native.find(lower_ascii(ext) + " ") == std::string::npos) out += " " + lower_ascii(ext);
+        return out;
+    }();
+    return list;
 }
 
 namespace io {
 
 bool format_is_soup(const std::string& extension) {
-    std::string ext = lowercase(extension);
+    std::string ext = lower_ascii(extension);
     if (ext.starts_with('.')) ext.erase(0, 1);
     return ext == "stl";
 }

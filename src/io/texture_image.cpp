@@ -1,5 +1,5 @@
-// Texture decoding through stb_image (Debian libstb, the same library png.cpp uses). The header
-// is read first (stbi_info_from_memory) so an image claiming 100000 x 100000 pixels, or more
+// Texture decoding through stb_image (Debian libstb, as image_file.cpp uses it). The header is
+// read first (stbi_info_from_memory) so an image claiming 100000 x 100000 pixels, or more
 // pixels than its bytes can encode, is refused before anything is allocated.
 #include "io/texture_image.hpp"
 

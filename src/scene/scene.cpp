@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "inkshade/error.hpp"
 #include "scene/option_name.hpp"
@@ -13,32 +14,6 @@ namespace inkshade {
 namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-}  // namespace
-
-void check_camera_options(const CameraOptions& o, OptionNames names) {
-    auto name = [&](const char* option) { return option_name(names, option); };
-    for (auto [value, option] : {std::pair{o.azimuth_degrees, "azimuth"}, std::pair{o.elevation_degrees, "elevation"}})
-        if (value && !std::isfinite(*value)) throw InputError(name(option) + ": must be a finite number");
-    if (o.distance && !(*o.distance > 0.0f && std::isfinite(*o.distance)))
-        throw InputError(name("distance") + ": must be a positive number");
-    for (auto [value, option] : {std::pair{o.eye, "eye"}, std::pair{o.target, "target"}, std::pair{o.up, "up"}})
-        if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
-    if (o.up && glm::length(*o.up) == 0.0f) throw InputError(name("up") + ": must not be zero");
-    if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
-        throw InputError(name("fov") + ": expected degrees in (0, 180)");
-    const auto& near = o.near_plane;
-    const auto& far = o.far_plane;
-    if (near && !std::isfinite(*near)) throw InputError(name("near") + ": must be a finite number");
-    // An orthographic view may start behind the eye (three.js allows a negative near).
-    if (near && !(*near > 0.0f) && !o.orthographic) throw InputError(name("near") + ": must be a positive number");
-    if (far && !(std::isfinite(*far) && *far > near.value_or(0.0f)))
-        throw InputError(name("far") + ": must be greater than " + name("near"));
-    if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
-        throw InputError(name("ortho-height") + ": must be a positive number");
-}
-
-namespace {
 
 void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNames names) {
     if (!c) return;
@@ -68,20 +43,29 @@ Style named_style(const SceneRequest& r) {
     return s;
 }
 
+// The line types `names` lists, each named once (any case; InputError with the closest name for
+// an unknown one), for the errors of `option`; `check` sees each as typed before the repeat test.
+std::vector<const LineType*> listed_line_types(
+    const std::vector<std::string>& names, const std::string& option,
+    const std::function<void(const std::string& typed, const LineType&)>& check = {}) {
+    std::vector<const LineType*> types;
+    for (const std::string& name : names) {
+        if (name.empty()) throw InputError(option + ": empty line type name");
+        const LineType& type = line_type(name);
+        if (check) check(name, type);
+        if (std::find(types.begin(), types.end(), &type) != types.end())
+            throw InputError(option + ": '" + type.name + "' is listed twice");
+        types.push_back(&type);
+    }
+    return types;
+}
+
 // The line types the request adds to an image's style, before the overrides so that
 // TYPE.param=value reaches them; a type the style draws keeps its parameters.
 void add_lines(const SceneRequest& r, Style& s) {
-    const std::string option = option_name(r.names, "lines");
-    std::vector<std::string> seen;
-    for (const std::string& name : r.added_lines) {
-        if (name.empty()) throw InputError(option + ": empty line type name");
-        const LineType& type = line_type(name);  // InputError names the choices (and the closest)
-        if (std::find(seen.begin(), seen.end(), type.name) != seen.end())
-            throw InputError(option + ": '" + type.name + "' is listed twice");
-        seen.push_back(type.name);
-        if (std::none_of(s.lines.begin(), s.lines.end(), [&](const LineSettings& l) { return l.type == type.name; }))
-            s.lines.push_back({type.name, {}});
-    }
+    for (const LineType* type : listed_line_types(r.added_lines, option_name(r.names, "lines")))
+        if (std::none_of(s.lines.begin(), s.lines.end(), [&](const LineSettings& l) { return l.type == type->name; }))
+            s.lines.push_back({type->name, {}});
 }
 
 // --set overrides, then the colour options, which win over the style's.
@@ -116,25 +100,43 @@ std::vector<LineSettings> select_vector_lines(const Style& style, const SceneReq
         return out;
     }
     const std::string option = option_name(r.names, "vector-lines");
-    for (const std::string& name : *r.vector_lines) {
-        if (name.empty()) throw InputError(option + ": empty line type name");
-        const LineType& type = line_type(name);  // InputError names the choices
-        if (type.space != LineSpace::Object) {
-            std::string names;
-            for (const LineType* t : line_types())
-                if (t->space == LineSpace::Object) names += (names.empty() ? "" : ", ") + t->name;
-            throw InputError(option + ": '" + name + "' is drawn in the image by `inkshade render`, not as vector " +
-                             "lines (choose " + names + ")");
-        }
-        for (const LineSettings& l : out)  // type.name: the canonical (lower-case) name
-            if (l.type == type.name) throw InputError(option + ": '" + type.name + "' is listed twice");
-        out.push_back(from_style(type.name));
-    }
+    const auto object_space = [&](const std::string& typed, const LineType& type) {
+        if (type.space == LineSpace::Object) return;
+        std::string names;
+        for (const LineType* t : line_types())
+            if (t->space == LineSpace::Object) names += (names.empty() ? "" : ", ") + t->name;
+        throw InputError(option + ": '" + typed + "' is drawn in the image by `inkshade render`, not as vector " +
+                         "lines (choose " + names + ")");
+    };
+    for (const LineType* type : listed_line_types(*r.vector_lines, option, object_space))
+        out.push_back(from_style(type->name));
     if (out.empty()) throw InputError(option + ": no line type given");
     return out;
 }
 
 }  // namespace
+
+void check_camera_options(const CameraOptions& o, OptionNames names) {
+    auto name = [&](const char* option) { return option_name(names, option); };
+    for (auto [value, option] : {std::pair{o.azimuth_degrees, "azimuth"}, std::pair{o.elevation_degrees, "elevation"}})
+        if (value && !std::isfinite(*value)) throw InputError(name(option) + ": must be a finite number");
+    if (o.distance && !(*o.distance > 0.0f && std::isfinite(*o.distance)))
+        throw InputError(name("distance") + ": must be a positive number");
+    for (auto [value, option] : {std::pair{o.eye, "eye"}, std::pair{o.target, "target"}, std::pair{o.up, "up"}})
+        if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
+    if (o.up && glm::length(*o.up) == 0.0f) throw InputError(name("up") + ": must not be zero");
+    if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
+        throw InputError(name("fov") + ": expected degrees in (0, 180)");
+    const auto& near = o.near_plane;
+    const auto& far = o.far_plane;
+    if (near && !std::isfinite(*near)) throw InputError(name("near") + ": must be a finite number");
+    // An orthographic view may start behind the eye (three.js allows a negative near).
+    if (near && !(*near > 0.0f) && !o.orthographic) throw InputError(name("near") + ": must be a positive number");
+    if (far && !(std::isfinite(*far) && *far > near.value_or(0.0f)))
+        throw InputError(name("far") + ": must be greater than " + name("near"));
+    if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
+        throw InputError(name("ortho-height") + ": must be a positive number");
+}
 
 const std::vector<std::string>& default_vector_lines() {
     // The lines of a classic line drawing: outline, interior shape cues, sharp edges, open edges.
