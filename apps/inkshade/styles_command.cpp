@@ -24,18 +24,12 @@ std::string range_text(const ParamSpec& p) {
 
 const char* type_text(ParamType t) {
     switch (t) {
-        case ParamType::Float:
-            return "float";
-        case ParamType::Int:
-            return "int";
-        case ParamType::Bool:
-            return "bool";
-        case ParamType::Color:
-            return "colour";
-        case ParamType::Choice:
-            return "choice";
-        case ParamType::FloatList:
-            return "list";
+        case ParamType::Float: return "float";
+        case ParamType::Int: return "int";
+        case ParamType::Bool: return "bool";
+        case ParamType::Color: return "colour";
+        case ParamType::Choice: return "choice";
+        case ParamType::FloatList: return "list";
     }
     return "?";
 }

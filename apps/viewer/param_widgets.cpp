@@ -13,9 +13,7 @@ bool widget(const ParamSpec& spec, ParamValue& v) {
     const char* label = spec.name.c_str();
     bool changed = false;
     switch (spec.type) {
-        case ParamType::Float:
-            changed = ImGui::SliderFloat(label, &v[0], spec.min, spec.max, "%.3f");
-            break;
+        case ParamType::Float: changed = ImGui::SliderFloat(label, &v[0], spec.min, spec.max, "%.3f"); break;
         case ParamType::Int: {
             int i = int(v[0]);
             changed = ImGui::SliderInt(label, &i, int(spec.min), int(spec.max));
@@ -28,9 +26,7 @@ bool widget(const ParamSpec& spec, ParamValue& v) {
             v[0] = b ? 1.0f : 0.0f;
             break;
         }
-        case ParamType::Color:
-            changed = ImGui::ColorEdit3(label, v.data());
-            break;
+        case ParamType::Color: changed = ImGui::ColorEdit3(label, v.data()); break;
         case ParamType::Choice: {
             int i = std::clamp(int(v[0]), 0, int(spec.choices.size()) - 1);
             if (ImGui::BeginCombo(label, spec.choices.at(size_t(i)).c_str())) {

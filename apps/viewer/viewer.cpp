@@ -284,26 +284,16 @@ void Viewer::save_style_file(const std::string& path) {
 
 void Viewer::handle_key(int key) {
     switch (key) {
-        case GLFW_KEY_F:
-            cycle_shading_model();
-            break;
-        case GLFW_KEY_H:
-            gui_ = !gui_;
-            break;
-        case GLFW_KEY_S:
-            save_frame(frame_path_);
-            break;
-        case GLFW_KEY_R:
-            reset_camera();
-            break;
+        case GLFW_KEY_F: cycle_shading_model(); break;
+        case GLFW_KEY_H: gui_ = !gui_; break;
+        case GLFW_KEY_S: save_frame(frame_path_); break;
+        case GLFW_KEY_R: reset_camera(); break;
         case GLFW_KEY_O:
             camera_.orthographic = !camera_.orthographic;
             fit_clip_planes(camera_, box_);
             dirty_ = true;
             break;
-        case GLFW_KEY_ESCAPE:
-            glfwSetWindowShouldClose(window_, GLFW_TRUE);
-            break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
         default:
             if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) toggle_line_type(size_t(key - GLFW_KEY_1));
             break;
@@ -448,12 +438,8 @@ void Viewer::draw_gui() {
 void Viewer::run_script_command(const ScriptCommand& c) {
     const std::string& a = c.argument;
     switch (c.kind) {
-        case ScriptCommand::Frames:
-            wait_frames_ = c.count;
-            break;
-        case ScriptCommand::Key:
-            handle_key(c.count);
-            break;
+        case ScriptCommand::Frames: wait_frames_ = c.count; break;
+        case ScriptCommand::Key: handle_key(c.count); break;
         case ScriptCommand::Set:
             try {
                 apply_set(scene_.style, a);
@@ -462,40 +448,23 @@ void Viewer::run_script_command(const ScriptCommand& c) {
                 report(e.what(), true);
             }
             break;
-        case ScriptCommand::StyleName:
-            try {
-                set_style(load_style(a));
+        case ScriptCommand::StyleName: try { set_style(load_style(a));
             } catch (const std::exception& e) {
                 report(e.what(), true);
             }
             break;
-        case ScriptCommand::LightPos:
-            scene_.light_position = c.vector, dirty_ = true;
-            break;
+        case ScriptCommand::LightPos: scene_.light_position = c.vector, dirty_ = true; break;
         case ScriptCommand::Orbit:
             orbit(camera_, c.vector.x, c.vector.y, scene_.camera.up_axis), fit_clip_planes(camera_, box_),
                 dirty_ = true;
             break;
-        case ScriptCommand::Zoom:
-            zoom(camera_, c.vector.x, box_), dirty_ = true;
-            break;
-        case ScriptCommand::Open:
-            open_model(a);
-            break;
-        case ScriptCommand::Screenshot:
-            break;  // after the frame is drawn (run loop)
-        case ScriptCommand::SaveFrame:
-            save_frame(a);
-            break;
-        case ScriptCommand::SaveStyle:
-            save_style_file(a);
-            break;
-        case ScriptCommand::Gui:
-            gui_ = c.count != 0;
-            break;
-        case ScriptCommand::Quit:
-            quit_ = true;
-            break;
+        case ScriptCommand::Zoom: zoom(camera_, c.vector.x, box_), dirty_ = true; break;
+        case ScriptCommand::Open: open_model(a); break;
+        case ScriptCommand::Screenshot: break;  // after the frame is drawn (run loop)
+        case ScriptCommand::SaveFrame: save_frame(a); break;
+        case ScriptCommand::SaveStyle: save_style_file(a); break;
+        case ScriptCommand::Gui: gui_ = c.count != 0; break;
+        case ScriptCommand::Quit: quit_ = true; break;
     }
 }
 

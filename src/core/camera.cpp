@@ -36,18 +36,12 @@ glm::mat3 up_axis_rotation(UpAxis axis) {
     const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
     // Columns: where +x, +y and +z of the camera frame go; each a right-handed rotation.
     switch (axis) {
-        case UpAxis::PosX:
-            return {-y, x, z};
-        case UpAxis::NegX:
-            return {y, -x, z};
-        case UpAxis::PosY:
-            return {x, y, z};
-        case UpAxis::NegY:
-            return {-x, -y, z};
-        case UpAxis::PosZ:
-            return {x, z, -y};
-        case UpAxis::NegZ:
-            return {x, -z, y};
+        case UpAxis::PosX: return {-y, x, z};
+        case UpAxis::NegX: return {y, -x, z};
+        case UpAxis::PosY: return {x, y, z};
+        case UpAxis::NegY: return {-x, -y, z};
+        case UpAxis::PosZ: return {x, z, -y};
+        case UpAxis::NegZ: return {x, -z, y};
     }
     return {x, y, z};
 }

@@ -139,8 +139,7 @@ ParamValue parse_param_value(const ParamSpec& spec, const std::string& text) {
             return check_param_value(spec, v);
         }
         case ParamType::Float:
-        case ParamType::Int:
-            break;
+        case ParamType::Int: break;
     }
     return check_param_value(spec, {parse_number(spec, text)});
 }

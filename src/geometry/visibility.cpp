@@ -84,16 +84,11 @@ void skip_near_faces(const RTCFilterFunctionNArguments* args) {
 
 std::string device_error_text(RTCDevice device) {
     switch (rtcGetDeviceError(device)) {
-        case RTC_ERROR_NONE:
-            return "no error";
-        case RTC_ERROR_OUT_OF_MEMORY:
-            return "out of memory";
-        case RTC_ERROR_INVALID_ARGUMENT:
-            return "invalid argument";
-        case RTC_ERROR_UNSUPPORTED_CPU:
-            return "unsupported CPU";
-        default:
-            return "error " + std::to_string(int(rtcGetDeviceError(device)));
+        case RTC_ERROR_NONE: return "no error";
+        case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+        case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+        case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+        default: return "error " + std::to_string(int(rtcGetDeviceError(device)));
     }
 }
 

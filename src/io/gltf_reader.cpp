@@ -220,31 +220,22 @@ size_t check_glb(std::string_view bytes, const std::string& path) {
 int component_size(int type) {
     switch (type) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return 1;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            return 4;
-        default:
-            return 0;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+        default: return 0;
     }
 }
 
 int component_count(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return 1;
-        case TINYGLTF_TYPE_VEC2:
-            return 2;
-        case TINYGLTF_TYPE_VEC3:
-            return 3;
-        case TINYGLTF_TYPE_VEC4:
-            return 4;
-        default:
-            return 0;  // matrices are not vertex attributes
+        case TINYGLTF_TYPE_SCALAR: return 1;
+        case TINYGLTF_TYPE_VEC2: return 2;
+        case TINYGLTF_TYPE_VEC3: return 3;
+        case TINYGLTF_TYPE_VEC4: return 4;
+        default: return 0;  // matrices are not vertex attributes
     }
 }
 
@@ -257,8 +248,7 @@ float component(const unsigned char* p, int type, bool normalized) {
             std::memcpy(&f, p, 4);
             return f;
         }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return normalized ? float(p[0]) / 255.0f : float(p[0]);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? float(p[0]) / 255.0f : float(p[0]);
         case TINYGLTF_COMPONENT_TYPE_BYTE: {
             int8_t v;
             std::memcpy(&v, p, 1);
@@ -279,15 +269,13 @@ float component(const unsigned char* p, int type, bool normalized) {
             std::memcpy(&v, p, 4);
             return float(v);
         }
-        default:
-            return 0.0f;
+        default: return 0.0f;
     }
 }
 
 uint32_t index_value(const unsigned char* p, int type) {
     switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return p[0];
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
             uint16_t v;
             std::memcpy(&v, p, 2);

@@ -20,14 +20,10 @@ double clean(float v) { return std::isfinite(v) ? std::stod(format_number(v)) : 
 
 nlohmann::json param_json(const ParamSpec& spec, const ParamValue& value) {
     switch (spec.type) {
-        case ParamType::Bool:
-            return value.at(0) != 0.0f;
-        case ParamType::Int:
-            return int(std::lround(value.at(0)));
-        case ParamType::Choice:
-            return format_param_value(spec, value);
-        case ParamType::Float:
-            return clean(value.at(0));
+        case ParamType::Bool: return value.at(0) != 0.0f;
+        case ParamType::Int: return int(std::lround(value.at(0)));
+        case ParamType::Choice: return format_param_value(spec, value);
+        case ParamType::Float: return clean(value.at(0));
         default: {
             nlohmann::json a = nlohmann::json::array();
             for (float v : value) a.push_back(clean(v));

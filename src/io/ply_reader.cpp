@@ -178,22 +178,14 @@ public:
     double scalar(Scalar t) {
         need(size_of(t));
         switch (t) {
-            case Scalar::I8:
-                return get<int8_t>();
-            case Scalar::U8:
-                return get<uint8_t>();
-            case Scalar::I16:
-                return get<int16_t>();
-            case Scalar::U16:
-                return get<uint16_t>();
-            case Scalar::I32:
-                return get<int32_t>();
-            case Scalar::U32:
-                return get<uint32_t>();
-            case Scalar::F32:
-                return get<float>();
-            case Scalar::F64:
-                return get<double>();
+            case Scalar::I8: return get<int8_t>();
+            case Scalar::U8: return get<uint8_t>();
+            case Scalar::I16: return get<int16_t>();
+            case Scalar::U16: return get<uint16_t>();
+            case Scalar::I32: return get<int32_t>();
+            case Scalar::U32: return get<uint32_t>();
+            case Scalar::F32: return get<float>();
+            case Scalar::F64: return get<double>();
         }
         return 0;
     }

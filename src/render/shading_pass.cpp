@@ -32,14 +32,10 @@ void upload_params(gpu::ShaderProgram& program, const ShadingModel& model, const
         const ParamValue& v = value_or_default(spec, values);
         const std::string u = uniform_name(spec.name);
         switch (spec.type) {
-            case ParamType::Float:
-                program.set(u, v.at(0));
-                break;
+            case ParamType::Float: program.set(u, v.at(0)); break;
             case ParamType::Int:
             case ParamType::Bool:
-            case ParamType::Choice:
-                program.set(u, int(v.at(0)));
-                break;
+            case ParamType::Choice: program.set(u, int(v.at(0))); break;
             case ParamType::Color: {
                 const glm::vec3 c(v.at(0), v.at(1), v.at(2));
                 program.set(u, spec.srgb ? srgb_to_linear(c) : c);  // three.js colours: decoded once here

@@ -246,21 +246,11 @@ std::string toml_string(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
         switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            case '\r':
-                out += "\\r";
-                break;
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            case '\r': out += "\\r"; break;
             default:
                 if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
                     char buf[8];
@@ -312,20 +302,12 @@ void write_params(std::ostream& out, const std::vector<ParamSpec>& params, const
         const ParamValue& v = value_or_default(p, values);
         out << p.name << " = ";
         switch (p.type) {
-            case ParamType::Bool:
-                out << (v.at(0) != 0.0f ? "true" : "false");
-                break;
+            case ParamType::Bool: out << (v.at(0) != 0.0f ? "true" : "false"); break;
             case ParamType::Float:
-            case ParamType::Int:
-                out << format_param_value(p, v);
-                break;
-            case ParamType::FloatList:
-                out << "[" << format_param_value(p, v) << "]";
-                break;
+            case ParamType::Int: out << format_param_value(p, v); break;
+            case ParamType::FloatList: out << "[" << format_param_value(p, v) << "]"; break;
             case ParamType::Choice:
-            case ParamType::Color:
-                out << toml_string(format_param_value(p, v));
-                break;
+            case ParamType::Color: out << toml_string(format_param_value(p, v)); break;
         }
         out << "  # " << p.doc << "\n";
     }

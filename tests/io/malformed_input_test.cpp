@@ -61,18 +61,10 @@ TEST(MalformedInput, DamagedValidFilesFailCleanly) {
             for (int edits = 1 + int(rng() % 3); edits > 0 && !s.empty(); --edits) {
                 size_t at = rng() % s.size();
                 switch (rng() % 4) {
-                    case 0:
-                        s[at] = char(rng());
-                        break;  // flip a byte
-                    case 1:
-                        s.resize(at);
-                        break;  // truncate
-                    case 2:
-                        s.insert(at, tokens[rng() % std::size(tokens)]);
-                        break;  // splice a token
-                    case 3:
-                        s.erase(at, rng() % 8);
-                        break;  // drop bytes
+                    case 0: s[at] = char(rng()); break;                              // flip a byte
+                    case 1: s.resize(at); break;                                     // truncate
+                    case 2: s.insert(at, tokens[rng() % std::size(tokens)]); break;  // splice a token
+                    case 3: s.erase(at, rng() % 8); break;                           // drop bytes
                 }
             }
             if (s.empty()) s = "x";

@@ -47,24 +47,12 @@ glm::vec3 palette_formula(const Scene& s, const glm::vec3& n) {
     const glm::vec3 l = s.l(), v(0, 0, 1);
     float ndotl = glm::dot(n, l), t = 0;
     switch (p.driver) {
-        case kNdotl:
-            t = std::max(ndotl, 0.0f);
-            break;
-        case kHalfLambert:
-            t = 0.5f * ndotl + 0.5f;
-            break;
-        case kNdotv:
-            t = std::max(glm::dot(n, v), 0.0f);
-            break;
-        case kHeight:
-            t = 0.5f * (n.y + 1.0f);
-            break;
-        case kX:
-            t = 0.5f * (n.x + 1.0f);
-            break;
-        case kZ:
-            t = 0.5f * (n.z + 1.0f);
-            break;
+        case kNdotl: t = std::max(ndotl, 0.0f); break;
+        case kHalfLambert: t = 0.5f * ndotl + 0.5f; break;
+        case kNdotv: t = std::max(glm::dot(n, v), 0.0f); break;
+        case kHeight: t = 0.5f * (n.y + 1.0f); break;
+        case kX: t = 0.5f * (n.x + 1.0f); break;
+        case kZ: t = 0.5f * (n.z + 1.0f); break;
     }
     glm::vec3 c = p.a + p.b * glm::cos(6.28318530718f * (p.c * t + p.d));
     if (p.lit) c *= s.light.color * std::max(ndotl, 0.0f) + s.light.ambient;

@@ -252,9 +252,14 @@ TEST(Scene, AddedLinesJoinTheImageStyleBeforeTheOverrides) {
               (std::vector<std::string>{"contour", "suggestive", "crease", "border", "hull"}));
     EXPECT_EQ(ink.style.lines[1].params.at("width"), ParamValue{1.5f});
     EXPECT_EQ(error_of([](SceneRequest& q) { q.added_lines = {"hull", "hull"}; }), "--lines: 'hull' is listed twice");
-    EXPECT_EQ(error_of([](SceneRequest& q) { q.added_lines = {"hull", "hull"}; }, OptionNames::Keywords),
+    EXPECT_EQ(error_of(
+                  [](SceneRequest& q) {
+        q.added_lines = {"hull", "hull"};
+                  },
+                  OptionNames::Keywords),
               "lines: 'hull' is listed twice");
-    EXPECT_NE(error_of([](SceneRequest& q) { q.added_lines = {"hul"}; }).find("did you mean 'hull'?"), std::string::npos);
+    EXPECT_NE(error_of([](SceneRequest& q) { q.added_lines = {"hul"}; }).find("did you mean 'hull'?"),
+              std::string::npos);
 }
 
 }  // namespace
