@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
         request.style = "anime";
         request.size = {512, 512};
         const inkshade::Scene scene = inkshade::make_scene(request);  // checks every value
-        const inkshade::Mesh mesh = inkshade::load_mesh(scene.model);
+        const inkshade::Mesh mesh = inkshade::load_mesh(scene.model, scene.load_options());
         const inkshade::Camera camera = scene.frame(mesh.bounds());  // auto-framed
 
         inkshade::Renderer renderer;  // headless OpenGL 4.5 (EGL)

@@ -212,8 +212,16 @@ PYBIND11_MODULE(inkshade, m) {
                    std::to_string(mesh.triangle_count()) + " triangles>";
         });
     m.def(
-        "load_mesh", [](const std::string& path) { return load_mesh(path); }, py::arg("path"),
-        "Loads OBJ/STL/PLY/OFF/glTF/GLB/VRM or builtin:NAME (sphere, torus, torus-knot, teapot).");
+        "load_mesh",
+        [](const std::string& path, float smooth_angle) {
+        SceneRequest request;  // the angle checked as every front end checks it
+        request.names = OptionNames::Keywords;
+        request.smooth_angle = smooth_angle;
+        return load_mesh(path, make_scene(request).load_options());
+        },
+        py::arg("path"), py::arg("smooth_angle") = LoadOptions{}.smooth_angle,
+        "Loads OBJ/STL/PLY/OFF/glTF/GLB/VRM or builtin:NAME (sphere, torus, torus-knot, teapot). A file "
+        "without normals gets hard edges where faces meet at more than smooth_angle degrees (180: all smooth).");
     m.def("styles", &builtin_style_names, "Built-in style names (presets and shading models).");
     m.def("line_types", [] {
         std::vector<std::string> names;

@@ -33,6 +33,7 @@ struct BatchArgs {
     float fov = 30.0f;
     bool ortho = false;
     std::string up_axis = "y";
+    std::optional<float> smooth_angle;
     int samples = 4;
     std::string shard;
     bool force = false, dry_run = false, quiet = false;
@@ -98,12 +99,14 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     shared.camera.fov_degrees = a.fov;
     shared.camera.orthographic = a.ortho;
     shared.camera.up_axis = parse_up_axis("--up-axis", a.up_axis);
+    shared.smooth_angle = a.smooth_angle;
     make_scene(shared);
     d.width = shared.size.x, d.height = shared.size.y;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
     d.fov_degrees = a.fov;
     d.orthographic = a.ortho;
     d.up_axis = shared.camera.up_axis;
+    d.smooth_angle = a.smooth_angle;
     return d;
 }
 
@@ -210,6 +213,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--up-axis", args->up_axis,
                     "the models' up axis where the manifest gives none (x, y, z, -x, -y, -z)")
         ->capture_default_str();
+    cmd->add_option("--smooth-angle", args->smooth_angle,
+                    "auto-smooth angle in degrees for models without normals where the manifest gives none "
+                    "(default: the style's, else 30)");
     cmd->add_option("--samples", args->samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");

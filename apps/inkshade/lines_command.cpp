@@ -82,7 +82,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     const Scene scene = make_scene(request);
 
     const auto load_start = std::chrono::steady_clock::now();
-    Mesh mesh = load_mesh(scene.model);
+    Mesh mesh = load_mesh(scene.model, scene.load_options());
     print_mesh_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();

@@ -46,7 +46,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
         throw InputError(args.output + ": JPEG has no transparency; write .png for a transparent background");
     const RenderOptions& options = scene.options;
     const auto load_start = std::chrono::steady_clock::now();
-    Mesh mesh = load_mesh(scene.model);
+    Mesh mesh = load_mesh(scene.model, scene.load_options());
     print_mesh_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();

@@ -28,6 +28,9 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
                    "the model's up axis: y (glTF, three.js, most OBJ), z (many CAD and Blender exports), x, -x, "
                    "-y or -z; azimuth turns about it")
         ->capture_default_str();
+    cmd.add_option("--smooth-angle", r.smooth_angle,
+                   "auto-smooth for files without normals: shading normals split at edges sharper than this "
+                   "many degrees (default: the style's, else 30; 180 = all smooth)");
     cmd.add_option("--fov", c.fov_degrees, "vertical field of view in degrees")->capture_default_str();
     cmd.add_flag("--ortho", c.orthographic, "orthographic projection");
     cmd.add_option("--ortho-height", c.ortho_height,

@@ -194,7 +194,7 @@ void Viewer::report(const std::string& message, bool error) {
 
 bool Viewer::open_model(const std::string& path) {
     try {
-        Mesh mesh = load_mesh(path);
+        Mesh mesh = load_mesh(path, scene_.load_options());
         renderer_->set_mesh(mesh);
         mesh_ = std::move(mesh);
         box_ = mesh_.bounds();
@@ -352,6 +352,10 @@ void Viewer::draw_gui() {
         if (ImGui::Button("Open")) open_model(model_field_);
         ImGui::SameLine();
         ImGui::TextDisabled("(or drop a file on the window)");
+        // Files without normals split their shading normals at this angle (load_mesh): the
+        // model is loaded again when the slider is let go.
+        ImGui::SliderFloat("smooth angle", &scene_.smooth_angle, 0.0f, 180.0f, "%.0f deg");
+        if (ImGui::IsItemDeactivatedAfterEdit()) open_model(model_path_);
         ImGui::TextUnformatted(mesh_facts_.c_str());
     }
 

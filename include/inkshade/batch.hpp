@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,8 +32,9 @@ struct BatchJob {
     BatchView view;
     int width = 512, height = 512;
     BatchOutputs outputs;
-    std::string stem;    // outputs without extension, relative to the output directory
-    std::string source;  // where the job comes from, for messages: "jobs.csv:7", "--models"
+    std::string stem;                   // outputs without extension, relative to the output directory
+    std::string source;                 // where the job comes from, for messages: "jobs.csv:7", "--models"
+    std::optional<float> smooth_angle;  // SceneRequest::smooth_angle; unset: the style's, else 30
 };
 
 // What a manifest line (or --models) leaves out.
@@ -43,7 +45,8 @@ struct BatchDefaults {
     BatchOutputs outputs;
     float fov_degrees = 30.0f;
     bool orthographic = false;
-    UpAxis up_axis = UpAxis::PosY;  // the models' up axis (CameraOptions::up_axis)
+    UpAxis up_axis = UpAxis::PosY;      // the models' up axis (CameraOptions::up_axis)
+    std::optional<float> smooth_angle;  // auto-smooth angle (SceneRequest::smooth_angle)
 };
 
 // A view list: items separated by ',' or ';' —

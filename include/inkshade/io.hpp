@@ -17,6 +17,9 @@ struct LoadOptions {
     // welding), keeping the first, with one warning giving the count. `inkshade info` turns this
     // off to report what the file holds. Built-in models have none.
     bool drop_duplicate_faces = true;
+    // Auto-smooth for files without normals: shading normals split at edges whose faces meet at
+    // more than this many degrees (Mesh::shading_normals); 180 = one smooth normal per vertex.
+    float smooth_angle = 30.0f;
 };
 
 // Loads a mesh by path or "builtin:NAME". Throws InputError("FILE: problem") on bad input.

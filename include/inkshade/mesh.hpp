@@ -49,8 +49,14 @@ struct BoundingBox {
 
 struct Mesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::uvec3> triangles;     // indices into positions, counter-clockwise = front
-    std::vector<glm::vec3> normals;        // per vertex; empty = compute (angle-weighted)
+    std::vector<glm::uvec3> triangles;  // indices into positions, counter-clockwise = front
+    std::vector<glm::vec3> normals;     // per vertex; empty = compute (angle-weighted)
+    // Hard edges (auto-smooth, geometry/auto_smooth.hpp): when shading_normal_ids has one entry
+    // per triangle, corner k of triangle f shades with shading_normals[shading_normal_ids[f][k]]
+    // instead of normals[triangles[f][k]]. load_mesh sets them for files without normals;
+    // `normals` stays the smooth field that curvature and the inverted hull read.
+    std::vector<glm::uvec3> shading_normal_ids;
+    std::vector<glm::vec3> shading_normals;
     std::vector<glm::vec3> colors;         // per vertex RGB in [0,1] replacing the material's diffuse
                                            // (glTF: COLOR_0 x baseColorFactor, linear); empty = material colour
     std::vector<glm::vec2> uvs;            // per vertex, v = 0 at the image bottom (OBJ); may be empty
@@ -59,6 +65,7 @@ struct Mesh {
     bool welded = false;                   // true when duplicate positions were merged
     std::vector<std::string> warnings;     // "FILE: problem" lines for the user (e.g. a texture not loaded)
 
+    bool has_hard_edges() const { return !triangles.empty() && shading_normal_ids.size() == triangles.size(); }
     size_t vertex_count() const { return positions.size(); }
     size_t triangle_count() const { return triangles.size(); }
     BoundingBox bounds() const;

@@ -10,6 +10,7 @@
 
 #include "inkshade/camera.hpp"
 #include "inkshade/image.hpp"
+#include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/renderer.hpp"
 #include "inkshade/style.hpp"
@@ -54,6 +55,9 @@ struct SceneRequest {
     std::optional<glm::vec4> background;  // default: the style's
     int samples = 4;                      // MSAA, 1..16
     bool srgb = false;                    // sRGB-encode the output
+    // Auto-smooth angle in degrees, 0..180, for files without normals (LoadOptions::smooth_angle);
+    // unset: the style's, else 30.
+    std::optional<float> smooth_angle;
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;
@@ -69,7 +73,11 @@ struct Scene {
     CameraOptions camera;
     LightType light_type = LightType::Directional;
     std::optional<glm::vec3> light_position, light_target;
+    float smooth_angle = LoadOptions{}.smooth_angle;
     OptionNames names = OptionNames::Cli;  // for the light's error
+
+    // How to load the scene's model: load_mesh(scene.model, scene.load_options()).
+    LoadOptions load_options() const;
 
     // The camera for a model with these bounds: auto-framed for the image's aspect, or another
     // (a window's).

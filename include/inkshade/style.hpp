@@ -21,6 +21,8 @@ struct Style {
     std::optional<glm::vec3> ambient;      // A; unset = the renderer's default
     glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
     std::vector<LineSettings> lines;  // drawn in this order, each type at most once
+    // Auto-smooth angle for models without normals (`smooth-angle`, degrees); unset: 30.
+    std::optional<float> smooth_angle;
 };
 
 // Sets the light colour and ambient the style asks for (others stay as they are).

@@ -9,6 +9,10 @@
 // grows like the square root of the distance to it, so (n.v)^2 is the linear one:
 // distance = (n.v)^2 / |grad (n.v)^2| = |n.v| / (2 |grad n.v|) (a Newton step).
 // n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl).
+// Where n does not vary across the pixel quad (a flat face of a mesh with hard edges) there is
+// no contour inside the face to draw near: a plane's n.v never reaches 0 on it, and a band there
+// would only be a flat face seen obliquely painted over (the contour is the face's edge, which
+// the outline or the contour line type draws).
 // Reads common/surface.glsl's v_world_pos and v_world_normal (it is included from there).
 #include "common/lighting.glsl"
 
@@ -24,6 +28,10 @@ vec3 rim_contour(vec3 shaded) {
     if (!gl_FrontFacing) n = -n;
     float ndotv = dot(n, to_viewer(v_world_pos));
     float grad = max(length(vec2(dFdx(ndotv), dFdy(ndotv))), 1e-6);
+    // Interpolating three equal normals varies them by rounding only (about 1e-7); curved
+    // surfaces turn the normal by far more per pixel (2e-5 on a sphere 100000 px across).
+    float bend = length(dFdx(n)) + length(dFdy(n));
+    if (bend < 1e-5) return shaded;
 #if INKSHADE_RIM_COMPENSATE
     float coverage = clamp(u_rim_contour_width - 0.5 * abs(ndotv) / grad + 0.5, 0.0, 1.0);
 #else

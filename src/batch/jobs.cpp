@@ -91,6 +91,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.fov_degrees = d.fov_degrees;
     g.orthographic = d.orthographic;
     g.up_axis = d.up_axis;
+    g.smooth_angle = d.smooth_angle;
     return g;
 }
 
@@ -128,6 +129,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.stem = group.output.empty() ? name + "/" + style_stem_name(style) + "/" + view.name : group.output;
             job.view = std::move(view);
             job.source = group.source;
+            job.smooth_angle = group.smooth_angle;
             out.push_back(std::move(job));
         }
     }

@@ -1,6 +1,7 @@
 // Building batch jobs from one group (a manifest line, or one model of --models): the pieces
 // that parse_manifest and expand_jobs share, so both spell values and stems the same way.
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,7 @@ struct JobGroup {
     float fov_degrees = 30.0f;
     bool orthographic = false;
     UpAxis up_axis = UpAxis::PosY;
+    std::optional<float> smooth_angle;
     std::string source;
 };
 

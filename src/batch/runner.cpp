@@ -31,6 +31,7 @@ double ms_since(Clock::time_point start) {
 struct ResolvedStyle {
     std::string toml;   // format_style: hashed and recorded, so an edited style file re-renders
     std::string error;  // the style does not load: every job of the style fails with this
+    std::optional<float> smooth_angle;
 };
 
 ResolvedStyle resolve_style(const std::string& name) {
@@ -38,7 +39,9 @@ ResolvedStyle resolve_style(const std::string& name) {
     try {
         SceneRequest request;
         request.style = name;
-        r.toml = format_style(make_scene(request).style);
+        const Scene scene = make_scene(request);
+        r.toml = format_style(scene.style);
+        r.smooth_angle = scene.style.smooth_angle;
     } catch (const std::exception& e) {
         r.error = e.what();
     }
@@ -54,11 +57,11 @@ struct LoadedModel {
     double milliseconds = 0.0;
 };
 
-LoadedModel load_model(const std::string& path, bool lines) {
+LoadedModel load_model(const std::string& path, bool lines, float smooth_angle) {
     LoadedModel m;
     const auto start = Clock::now();
     try {
-        m.mesh = std::make_unique<Mesh>(load_mesh(path));
+        m.mesh = std::make_unique<Mesh>(load_mesh(path, LoadOptions{.smooth_angle = smooth_angle}));
         if (m.mesh->triangles.empty()) throw InputError(path, "the mesh has no triangles");
         if (lines) m.extractor = std::make_unique<LineExtractor>(*m.mesh);
     } catch (const std::bad_alloc&) {
@@ -83,6 +86,7 @@ int64_t model_bytes(const std::string& path) {
 // The jobs of one model, in batch order.
 struct ModelGroup {
     std::string model;
+    float smooth_angle = LoadOptions{}.smooth_angle;  // the jobs' auto-smooth: one load per angle
     int64_t bytes = -1;
     std::vector<size_t> jobs;     // indices into the ordered job list
     std::vector<size_t> pending;  // those to render
@@ -112,7 +116,8 @@ public:
             for (size_t n = g + 1; n < groups_.size(); ++n) {
                 if (groups_[n].pending.empty()) continue;
                 next_group = n;
-                next = std::async(std::launch::async, load_model, groups_[n].model, groups_[n].svg);
+                next = std::async(std::launch::async, load_model, groups_[n].model, groups_[n].svg,
+                                  groups_[n].smooth_angle);
                 return;
             }
         };
@@ -124,7 +129,7 @@ public:
             if (next.valid() && next_group == g)
                 model = next.get();
             else
-                model = load_model(group.model, group.svg);
+                model = load_model(group.model, group.svg, group.smooth_angle);
             prefetch_after(g);
             render_model(group, model);
         }
@@ -144,14 +149,18 @@ private:
         complete_.assign(jobs_.size(), false);
         for (size_t i = 0; i < jobs_.size(); ++i) {
             const BatchJob& job = jobs_[i];
-            if (groups_.empty() || groups_.back().model != job.model) {
+            const ResolvedStyle& style = styles_.at(job.style);
+            // The angle make_scene resolves for the job (Scene::smooth_angle): a model is loaded
+            // once for each angle its jobs use (jobs are style-major, so at most once a style).
+            const float angle = job.smooth_angle.value_or(style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
+            if (groups_.empty() || groups_.back().model != job.model || groups_.back().smooth_angle != angle) {
                 groups_.emplace_back();
                 groups_.back().model = job.model;
+                groups_.back().smooth_angle = angle;
                 groups_.back().bytes = model_bytes(job.model);
             }
             ModelGroup& group = groups_.back();
             group.jobs.push_back(i);
-            const ResolvedStyle& style = styles_.at(job.style);
             if (!style.error.empty()) continue;  // reported as failed when the group comes up
             hashes_[i] = job_hash(job, style.toml, group.bytes, options_.samples);
             complete_[i] = !options_.force && batch::job_complete(options_.output_dir, job, hashes_[i]);
@@ -266,6 +275,7 @@ private:
         request.style = job.style;
         request.size = {job.width, job.height};
         request.camera = job.view.camera;
+        request.smooth_angle = job.smooth_angle;
         request.samples = options_.samples;
         request.outputs = {.image = true, .line_drawing = true};
         const Scene scene = make_scene(request);

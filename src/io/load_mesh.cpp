@@ -11,6 +11,7 @@
 #include "core/name_suggestion.hpp"
 #include "geometry/builtin_models.hpp"
 #include "geometry/duplicate_faces.hpp"
+#include "geometry/auto_smooth.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/weld.hpp"
 #include "inkshade/error.hpp"
@@ -193,9 +194,11 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
             mesh.warnings.push_back(path + ": dropped " + std::to_string(dropped) + " duplicate face" +
                                     (dropped == 1 ? "" : "s") + " (same vertices as an earlier face, either winding)");
     }
-    if (options.compute_normals)
+    if (options.compute_normals) {
+        const bool file_normals = geometry::normals_are_sane(mesh);
         geometry::ensure_vertex_normals(mesh);
-    else if (!mesh.normals.empty() && !geometry::normals_are_sane(mesh))
+        if (!file_normals) geometry::auto_smooth(mesh, options.smooth_angle);
+    } else if (!mesh.normals.empty() && !geometry::normals_are_sane(mesh))
         mesh.normals.clear();  // empty means "compute": better than passing NaNs on
     return mesh;
 }

@@ -17,7 +17,8 @@ bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices, std
     auto normal_of = [&](size_t i) { return i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1); };
     const bool per_face =
         mesh.colors.empty() && !mesh.materials.empty() && mesh.face_materials.size() == mesh.triangles.size();
-    if (!per_face) {
+    const bool hard_edges = mesh.has_hard_edges();
+    if (!per_face && !hard_edges) {
         vertices.resize(n);
         for (size_t i = 0; i < n; ++i)
             vertices[i] = {mesh.positions[i], normal_of(i), mesh.colors.size() == n ? mesh.colors[i] : glm::vec3(1.0f)};
@@ -25,7 +26,9 @@ bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices, std
         source.clear();
         return false;
     }
-    // Split vertices by (vertex, material) so each face gets its material's colour.
+    // Split vertices by (vertex, material) so each face gets its material's colour, and by
+    // shading normal at hard edges (a shading normal id belongs to one vertex, so it stands for
+    // the vertex in the key).
     vertices.clear();
     vertices.reserve(n);
     source.clear();
@@ -33,14 +36,18 @@ bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices, std
     std::unordered_map<uint64_t, uint32_t> remap;
     remap.reserve(n * 2);
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-        uint32_t mat = mesh.face_materials[f];
-        glm::vec3 color = mat < mesh.materials.size() ? mesh.materials[mat].diffuse : glm::vec3(1.0f);
+        const uint32_t mat = per_face ? mesh.face_materials[f] : 0;
+        glm::vec3 color(1.0f);
+        if (per_face) color = mat < mesh.materials.size() ? mesh.materials[mat].diffuse : glm::vec3(1.0f);
         for (int k = 0; k < 3; ++k) {
-            uint32_t v = mesh.triangles[f][k];
-            uint64_t key = (uint64_t(mat) << 32) | v;
+            const uint32_t v = mesh.triangles[f][k];
+            const uint32_t shading = hard_edges ? mesh.shading_normal_ids[f][k] : v;
+            const uint64_t key = (uint64_t(mat) << 32) | shading;
             auto [it, inserted] = remap.try_emplace(key, uint32_t(vertices.size()));
             if (inserted) {
-                vertices.push_back({mesh.positions[v], normal_of(v), color});
+                if (!per_face && mesh.colors.size() == n) color = mesh.colors[v];
+                vertices.push_back(
+                    {mesh.positions[v], hard_edges ? mesh.shading_normals[shading] : normal_of(v), color});
                 source.push_back(v);
             }
             triangles[f][k] = it->second;

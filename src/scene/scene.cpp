@@ -158,6 +158,8 @@ Scene make_scene(const SceneRequest& r) {
                                  std::pair{r.base_color, "base-color"}})
         check_color(value ? std::optional<glm::vec4>(glm::vec4(*value, 1.0f)) : std::nullopt, option, r.names);
     check_color(r.background, "background", r.names);
+    if (r.smooth_angle && !(*r.smooth_angle >= 0.0f && *r.smooth_angle <= 180.0f))
+        throw InputError(name("smooth-angle") + ": expected degrees in [0, 180]");
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
 
     Scene scene;
@@ -187,9 +189,12 @@ Scene make_scene(const SceneRequest& r) {
     scene.light_type = r.light_type;
     scene.light_position = r.light_position;
     scene.light_target = r.light_target;
+    scene.smooth_angle = r.smooth_angle.value_or(scene.style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
     scene.names = r.names;
     return scene;
 }
+
+LoadOptions Scene::load_options() const { return LoadOptions{.smooth_angle = smooth_angle}; }
 
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
 

@@ -375,12 +375,19 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         std::replace(what.begin(), what.end(), '\n', ' ');
         throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
     }
-    reject_unknown_keys(root, {"description", "background", "base-color", "light", "shading", "lines"}, source, "");
+    reject_unknown_keys(root, {"description", "background", "base-color", "smooth-angle", "light", "shading", "lines"},
+                        source, "");
     Style style;
     style.name = stem(source);
     if (auto d = root["description"].value<std::string>()) style.description = *d;
     if (auto* n = root.get("background")) style.background = color_value(*n, source, "background");
     if (auto* n = root.get("base-color")) style.shading.base_color = glm::vec3(color_value(*n, source, "base-color"));
+    if (auto* n = root.get("smooth-angle")) {
+        const std::optional<double> angle = n->value<double>();
+        if (!angle || !(*angle >= 0.0 && *angle <= 180.0))
+            throw InputError(source, "smooth-angle: expected degrees in [0, 180]");
+        style.smooth_angle = float(*angle);
+    }
 
     if (auto* light = root["light"].as_table()) {
         reject_unknown_keys(*light, {"color", "ambient"}, source, " in [light]");
@@ -495,6 +502,7 @@ std::string format_style(const Style& style) {
     out << "description = " << toml_string(style.description) << "\n";
     out << "background = " << color_text(style.background, style.background.a < 1.0f) << "\n";
     out << "base-color = " << color_text(glm::vec4(style.shading.base_color, 1.0f)) << "\n";
+    if (style.smooth_angle) out << "smooth-angle = " << format_number(*style.smooth_angle) << "\n";
     if (style.light_color || style.ambient) {
         out << "\n[light]\n";
         if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";

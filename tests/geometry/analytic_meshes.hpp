@@ -29,4 +29,32 @@ inline Mesh cylinder(float r, int around, int rows, float height) {
     return m;
 }
 
+// The cylinder above closed by two flat caps (a centre vertex and a fan each), without normals:
+// what a CAD export of a round bar is. Faces counter-clockwise seen from outside.
+inline Mesh capped_cylinder(float r, int around, float height) {
+    Mesh m = cylinder(r, around, 2, height);
+    m.normals.clear();
+    const uint32_t bottom = uint32_t(m.positions.size()), top = bottom + 1;
+    m.positions.push_back({0.0f, 0.0f, 0.0f});
+    m.positions.push_back({0.0f, 0.0f, height});
+    for (int i = 0; i < around; ++i) {
+        const uint32_t i0 = uint32_t(i), i1 = uint32_t((i + 1) % around);
+        m.triangles.emplace_back(bottom, i1, i0);
+        m.triangles.emplace_back(top, uint32_t(around) + i0, uint32_t(around) + i1);
+    }
+    return m;
+}
+
+// The axis-aligned cube [-h, h]³: 8 vertices, 12 outward triangles, no normals.
+inline Mesh cube(float h = 1.0f) {
+    Mesh m;
+    for (int i = 0; i < 8; ++i) m.positions.push_back(h * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
+    const uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        m.triangles.emplace_back(q[0], q[1], q[2]);
+        m.triangles.emplace_back(q[0], q[2], q[3]);
+    }
+    return m;
+}
+
 }  // namespace inkshade::test

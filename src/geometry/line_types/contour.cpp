@@ -1,5 +1,7 @@
 // `contour`: occluding contours, the zero set of n·v interpolated across faces
-// (extract_contours), optionally with the whole-edge polygon silhouette added.
+// (extract_contours; with the pieces of hard edges where the facing flips on a mesh with hard
+// edges, extract_hard_edge_contours), optionally with the whole-edge polygon silhouette added.
+#include "geometry/hard_edge_contours.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
 
 namespace inkshade::geometry {
@@ -7,7 +9,9 @@ namespace inkshade::geometry {
 namespace {
 
 std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
-    std::vector<LineSegment> segments = extract_contours(data.mesh(), data.normals(), camera);
+    std::vector<LineSegment> segments = data.mesh().has_hard_edges()
+                                            ? extract_hard_edge_contours(data.mesh(), camera)
+                                            : extract_contours(data.mesh(), data.normals(), camera);
     if (line_number(settings, "silhouette-edges") != 0.0f) {
         const auto& p = data.mesh().positions;
         for (const SilhouetteEdge& e : mesh_silhouette_edges(data.mesh(), camera))

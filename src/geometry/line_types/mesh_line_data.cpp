@@ -21,14 +21,16 @@ auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, 
     return result;
 }
 
-// Positions (padded for Embree), triangles and unit normals of `mesh`, nothing else.
-std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, std::vector<glm::uvec3> triangles,
-                                      std::vector<glm::vec3> normals) {
+// Positions (padded for Embree), triangles, unit normals and hard-edge shading normals of
+// `mesh`, nothing else.
+std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Mesh& mesh) {
     auto m = std::make_shared<Mesh>();
     m->positions = std::move(positions);
     reserve_embree_padding(m->positions);
-    m->triangles = std::move(triangles);
-    m->normals = std::move(normals);
+    m->triangles = mesh.triangles;
+    m->normals = mesh.normals;
+    m->shading_normal_ids = mesh.shading_normal_ids;
+    m->shading_normals = mesh.shading_normals;
     ensure_vertex_normals(*m);
     return m;
 }
@@ -42,19 +44,26 @@ std::vector<glm::vec3> padded_copy(const std::vector<glm::vec3>& positions) {
 
 }  // namespace
 
-MeshLineData::MeshLineData(const Mesh& mesh)
-    : mesh_(line_mesh(padded_copy(mesh.positions), mesh.triangles, mesh.normals)) {}
+MeshLineData::MeshLineData(const Mesh& mesh) : mesh_(line_mesh(padded_copy(mesh.positions), mesh)) {}
 
-MeshLineData::MeshLineData(Mesh&& mesh)
-    : mesh_(line_mesh(std::move(mesh.positions), std::move(mesh.triangles), std::move(mesh.normals))) {
+MeshLineData::MeshLineData(Mesh&& mesh) {
+    Mesh lines;  // positions, triangles and normals moved, not copied
+    lines.positions = std::move(mesh.positions);
+    lines.triangles = std::move(mesh.triangles);
+    lines.normals = std::move(mesh.normals);
+    lines.shading_normal_ids = std::move(mesh.shading_normal_ids);
+    lines.shading_normals = std::move(mesh.shading_normals);
     mesh = Mesh();  // colours, uvs and materials are not needed here
+    reserve_embree_padding(lines.positions);
+    ensure_vertex_normals(lines);
+    mesh_ = std::make_shared<const Mesh>(std::move(lines));
 }
 
 MeshLineData::MeshLineData(std::shared_ptr<const Mesh> mesh) {
     if (normals_are_sane(*mesh))
         mesh_ = std::move(mesh);
     else
-        mesh_ = line_mesh(padded_copy(mesh->positions), mesh->triangles, mesh->normals);
+        mesh_ = line_mesh(padded_copy(mesh->positions), *mesh);
 }
 
 void MeshLineData::release_derived() {

@@ -1,0 +1,94 @@
+#include "geometry/auto_smooth.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "analytic_meshes.hpp"
+#include "geometry/normals.hpp"
+
+namespace inkshade::geometry {
+namespace {
+
+glm::vec3 shading_normal(const Mesh& m, size_t f, int k) { return m.shading_normals[m.shading_normal_ids[f][k]]; }
+
+TEST(AutoSmooth, CubeCornersTakeTheirFaceNormal) {
+    Mesh cube = test::cube();
+    ensure_vertex_normals(cube);
+    const std::vector<glm::vec3> smooth = cube.normals;
+    auto_smooth(cube, 30.0f);
+    ASSERT_TRUE(cube.has_hard_edges());
+    EXPECT_EQ(cube.shading_normals.size(), 24u);  // three faces (fans) at each of 8 corners
+    const std::vector<glm::vec3> fn = face_normals(cube);
+    for (size_t f = 0; f < cube.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) EXPECT_LT(glm::length(shading_normal(cube, f, k) - fn[f]), 1e-6f) << f << " " << k;
+    EXPECT_EQ(cube.normals, smooth);  // the smooth field is left for curvature and the hull
+}
+
+TEST(AutoSmooth, AngleOf180OrNoHardEdgeLeavesNothing) {
+    Mesh cube = test::cube();
+    ensure_vertex_normals(cube);
+    auto_smooth(cube, 180.0f);
+    EXPECT_FALSE(cube.has_hard_edges());
+    EXPECT_TRUE(cube.shading_normals.empty());
+    auto_smooth(cube, 91.0f);  // the cube's edges are 90°: all smooth
+    EXPECT_FALSE(cube.has_hard_edges());
+    auto_smooth(cube, 89.0f);
+    EXPECT_TRUE(cube.has_hard_edges());
+}
+
+TEST(AutoSmooth, CylinderSideStaysSmoothAndCapsFlat) {
+    // 32 segments: 11.25° between side faces (smooth at 30°), 90° to the caps (hard).
+    Mesh m = test::capped_cylinder(1.0f, 32, 2.0f);
+    ensure_vertex_normals(m);
+    auto_smooth(m, 30.0f);
+    ASSERT_TRUE(m.has_hard_edges());
+    const std::vector<glm::vec3> fn = face_normals(m);
+    for (size_t f = 0; f < m.triangles.size(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 p = m.positions[m.triangles[f][k]], n = shading_normal(m, f, k);
+            if (std::abs(fn[f].z) > 0.99f) {
+                EXPECT_LT(glm::length(n - fn[f]), 1e-6f);  // cap: flat
+            } else {
+                // Side: the radial direction (the mean of the two faces at the vertex).
+                EXPECT_LT(glm::length(n - glm::normalize(glm::vec3(p.x, p.y, 0.0f))), 1e-5f);
+            }
+        }
+    }
+    // Rim vertices have two fans (side, cap), cap centres and nothing else one.
+    EXPECT_EQ(m.shading_normals.size(), 2u * 64u + 2u);
+}
+
+TEST(AutoSmooth, NonManifoldEdgesAreHardAndDegenerateFacesTakeTheSmoothNormal) {
+    Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0.5f, 0, 0}};
+    // Three nearly coplanar faces on the edge (0, 1), and a zero-area face (0, 5, 1).
+    m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {0, 5, 1}, {0, 2, 2}};
+    ensure_vertex_normals(m);
+    auto_smooth(m, 179.0f);
+    ASSERT_TRUE(m.has_hard_edges());
+    std::set<uint32_t> at_vertex0;
+    for (size_t f = 0; f < 3; ++f)
+        for (int k = 0; k < 3; ++k)
+            if (m.triangles[f][k] == 0) at_vertex0.insert(m.shading_normal_ids[f][k]);
+    EXPECT_EQ(at_vertex0.size(), 3u);  // no face joins another across the three-face edge
+    for (size_t f = 3; f < 5; ++f)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = m.triangles[f][k];
+            EXPECT_EQ(shading_normal(m, f, k), m.normals[v]) << f;
+        }
+}
+
+TEST(AutoSmooth, IsDeterministic) {
+    Mesh a = test::capped_cylinder(1.0f, 200, 1.0f), b = a;
+    ensure_vertex_normals(a);
+    ensure_vertex_normals(b);
+    auto_smooth(a, 30.0f);
+    auto_smooth(b, 30.0f);
+    EXPECT_EQ(a.shading_normal_ids, b.shading_normal_ids);
+    EXPECT_EQ(a.shading_normals, b.shading_normals);
+}
+
+}  // namespace
+}  // namespace inkshade::geometry
