@@ -18,8 +18,23 @@ void Frame::set_vertex_scalar(std::vector<float> per_mesh_vertex) {
 
 std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines) {
     std::vector<LineSettings> out;
-    for (const LineSettings& l : lines)
+    const LineSettings* hull = nullptr;
+    bool border = false;
+    for (const LineSettings& l : lines) {
         if (line_type(l.type).space == LineSpace::Object) out.push_back(l);
+        if (l.type == "hull") hull = &l;
+        border |= l.type == "border";
+    }
+    // An open border has no back face behind it for the hull to outline: the hull's `borders`
+    // draws it as the object-space `border` type in the hull's stroke, with hidden parts removed.
+    if (hull && !border && line_param(*hull, "borders").at(0) != 0.0f) {
+        const Stroke stroke = stroke_of(*hull);
+        LineSettings b{.type = "border", .params = {}};
+        b.params["color"] = {stroke.color.r, stroke.color.g, stroke.color.b};
+        b.params["opacity"] = {stroke.opacity};
+        b.params["width"] = {stroke.width};
+        out.push_back(std::move(b));
+    }
     return out;
 }
 

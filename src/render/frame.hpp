@@ -46,7 +46,9 @@ struct Frame {
     float aspect() const { return float(options.width) / float(options.height); }
 };
 
-// The object-space lines of `lines`, in order. Throws InputError for an unknown line type.
+// The object-space lines of `lines`, in order, then `border` in the hull's stroke when `lines`
+// has a hull with `borders` on and no border of its own. Throws InputError for an unknown line
+// type.
 std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines);
 
 // Back faces may be culled only when none can be seen: a closed outward surface with the

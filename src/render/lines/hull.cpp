@@ -16,6 +16,9 @@ std::vector<ParamSpec> hull_params() {
                              "world-width units along the normal (the vertex offset of Qu, Chen & Zwicker 2022)"));
     p.push_back(float_param("world-width", 0.25f, 0.0f, 1000.0f,
                             "world mode: offset along the normal in world units (Qu et al. 2022 use 0.25)"));
+    p.push_back(bool_param("borders", true,
+                           "also outline open borders (a hole's rim, a sheet's edge), which have no back face to "
+                           "push out: drawn as the object-space `border` type in this stroke (width in pixels)"));
     return p;
 }
 
