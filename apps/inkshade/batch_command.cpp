@@ -32,7 +32,7 @@ struct BatchArgs {
     std::string format = "png";
     float fov = 30.0f;
     bool ortho = false;
-    std::string up_axis = "y";
+    std::string up_axis;
     std::optional<float> smooth_angle;
     int samples = 4;
     std::string shard;
@@ -98,14 +98,14 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     shared.samples = a.samples;
     shared.camera.fov_degrees = a.fov;
     shared.camera.orthographic = a.ortho;
-    shared.camera.up_axis = parse_up_axis("--up-axis", a.up_axis);
+    if (!a.up_axis.empty()) shared.camera.up_axis = parse_up_axis("--up-axis", a.up_axis);
     shared.smooth_angle = a.smooth_angle;
     make_scene(shared);
     d.width = shared.size.x, d.height = shared.size.y;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
     d.fov_degrees = a.fov;
     d.orthographic = a.ortho;
-    d.up_axis = shared.camera.up_axis;
+    d.up_axis = shared.camera.up_axis;  // unset: each style's up-axis, else y
     d.smooth_angle = a.smooth_angle;
     return d;
 }
@@ -211,8 +211,8 @@ Command add_batch_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--ortho", args->ortho, "orthographic projection where the manifest gives none");
     cmd->add_option("--up-axis", args->up_axis,
-                    "the models' up axis where the manifest gives none (x, y, z, -x, -y, -z)")
-        ->capture_default_str();
+                    "the models' up axis where the manifest gives none (x, y, z, -x, -y, -z; default: the "
+                    "style's up-axis, else y)");
     cmd->add_option("--smooth-angle", args->smooth_angle,
                     "auto-smooth angle in degrees for models without normals where the manifest gives none "
                     "(default: the style's, else 30)");

@@ -26,8 +26,7 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--up", up, "camera up vector x,y,z")->capture_default_str();
     cmd.add_option("--up-axis", up_axis,
                    "the model's up axis: y (glTF, three.js, most OBJ), z (many CAD and Blender exports), x, -x, "
-                   "-y or -z; azimuth turns about it")
-        ->capture_default_str();
+                   "-y or -z; azimuth turns about it (default: the style's up-axis, else y)");
     cmd.add_option("--smooth-angle", r.smooth_angle,
                    "auto-smooth for files without normals: shading normals split at edges sharper than this "
                    "many degrees (default: the style's, else 30; 180 = all smooth)");
@@ -64,7 +63,7 @@ SceneRequest SceneOptions::to_request(const CLI::App& cmd, const std::string& sc
     if (!eye.empty()) r.camera.eye = parse_vec3("--eye", eye);
     if (!target.empty()) r.camera.target = parse_vec3("--target", target);
     if (!up.empty()) r.camera.up = parse_vec3("--up", up);
-    r.camera.up_axis = parse_up_axis("--up-axis", up_axis);
+    if (!up_axis.empty()) r.camera.up_axis = parse_up_axis("--up-axis", up_axis);
     r.light_type = parse_light_type("--light-type", light_type);
     if (!light_pos.empty()) r.light_position = parse_vec3("--light-pos", light_pos);
     if (!light_target.empty()) r.light_target = parse_vec3("--light-target", light_target);

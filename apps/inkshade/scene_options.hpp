@@ -16,7 +16,7 @@ struct SceneOptions {
     SceneRequest request;  // the options with typed values are bound to it directly
     // Options given as text, parsed by to_request().
     std::string size = "1024x1024";
-    std::string eye, target, up, up_axis = "y";
+    std::string eye, target, up, up_axis;
     std::string light_pos, light_target, light_type = "directional", light_color, ambient, base_color, background;
 
     // MODEL is a required positional unless model_required is false (`view` opens a default).

@@ -132,7 +132,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), scene_(options
         const double dx = x - v.last_x_, dy = y - v.last_y_;
         v.last_x_ = x, v.last_y_ = y;
         if (v.drag_button_ == GLFW_MOUSE_BUTTON_LEFT) {
-            orbit(v.camera_, float(-0.4 * dx), float(0.4 * dy), v.scene_.camera.up_axis);
+            orbit(v.camera_, float(-0.4 * dx), float(0.4 * dy), v.scene_.camera.up_axis.value_or(UpAxis::PosY));
         } else {
             int ww = 1, wh = 1;
             glfwGetWindowSize(w, &ww, &wh);
@@ -459,8 +459,8 @@ void Viewer::run_script_command(const ScriptCommand& c) {
             break;
         case ScriptCommand::LightPos: scene_.light_position = c.vector, dirty_ = true; break;
         case ScriptCommand::Orbit:
-            orbit(camera_, c.vector.x, c.vector.y, scene_.camera.up_axis), fit_clip_planes(camera_, box_),
-                dirty_ = true;
+            orbit(camera_, c.vector.x, c.vector.y, scene_.camera.up_axis.value_or(UpAxis::PosY)),
+                fit_clip_planes(camera_, box_), dirty_ = true;
             break;
         case ScriptCommand::Zoom: zoom(camera_, c.vector.x, box_), dirty_ = true; break;
         case ScriptCommand::Open: open_model(a); break;

@@ -45,7 +45,7 @@ struct BatchDefaults {
     BatchOutputs outputs;
     float fov_degrees = 30.0f;
     bool orthographic = false;
-    UpAxis up_axis = UpAxis::PosY;      // the models' up axis (CameraOptions::up_axis)
+    std::optional<UpAxis> up_axis;      // the models' up axis (CameraOptions::up_axis); unset: the style's
     std::optional<float> smooth_angle;  // auto-smooth angle (SceneRequest::smooth_angle)
 };
 

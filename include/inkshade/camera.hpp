@@ -1,6 +1,7 @@
 // Camera and light: plain data plus auto-framing, no GL.
 #pragma once
 #include <optional>
+#include <string_view>
 
 #include <glm/glm.hpp>
 
@@ -31,6 +32,10 @@ enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ };
 // files calls front (for +z up: -y, as in Blender's front view). A signed permutation.
 glm::mat3 up_axis_rotation(UpAxis axis);
 
+// The axis named x, y, z, -x, -y or -z (a leading + is allowed), or nothing; and its name.
+std::optional<UpAxis> up_axis_named(std::string_view name);
+const char* up_axis_name(UpAxis axis);
+
 // How the user places the camera; anything unset is chosen by auto-framing.
 struct CameraOptions {
     std::optional<float> azimuth_degrees;    // about +y; 0 looks from +z towards -z, 90 from +x
@@ -44,7 +49,8 @@ struct CameraOptions {
     std::optional<float> ortho_height;
     // Azimuth turns about this axis and elevation rises towards it; the default up vector is it.
     // Eye, target and up, when given, are in the model's coordinates whatever the axis.
-    UpAxis up_axis = UpAxis::PosY;
+    // Unset: the style's up-axis (make_scene), else +y.
+    std::optional<UpAxis> up_axis;
 };
 
 // Default view angles of auto-framing: a three-quarter view from slightly above.

@@ -23,6 +23,8 @@ struct Style {
     std::vector<LineSettings> lines;  // drawn in this order, each type at most once
     // Auto-smooth angle for models without normals (`smooth-angle`, degrees); unset: 30.
     std::optional<float> smooth_angle;
+    // The models' up axis (`up-axis`, CameraOptions::up_axis) when the request gives none.
+    std::optional<UpAxis> up_axis;
 };
 
 // Sets the light colour and ambient the style asks for (others stay as they are).

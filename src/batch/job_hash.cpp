@@ -45,7 +45,7 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
             " eye=" + optional_vec3(c.eye) + " target=" + optional_vec3(c.target) + " up=" + optional_vec3(c.up) +
             " fov=" + number(c.fov_degrees) + " ortho=" + (c.orthographic ? "1" : "0");
     // Only a model that is not y-up adds to the text, so earlier jobs keep their hashes.
-    if (c.up_axis != UpAxis::PosY) text += " up-axis=" + std::to_string(int(c.up_axis));
+    if (c.up_axis && *c.up_axis != UpAxis::PosY) text += " up-axis=" + std::to_string(int(*c.up_axis));
     if (job.smooth_angle) text += " smooth-angle=" + number(*job.smooth_angle);
     text += "\n";
     text += "size=" + std::to_string(job.width) + "x" + std::to_string(job.height) +

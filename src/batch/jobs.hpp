@@ -21,7 +21,7 @@ struct JobGroup {
     BatchOutputs outputs;
     float fov_degrees = 30.0f;
     bool orthographic = false;
-    UpAxis up_axis = UpAxis::PosY;
+    std::optional<UpAxis> up_axis;
     std::optional<float> smooth_angle;
     std::string source;
 };

@@ -32,6 +32,24 @@ glm::vec3 safe_up(const glm::vec3& forward, const glm::vec3& up) {
 
 }  // namespace
 
+namespace {
+constexpr std::pair<const char*, UpAxis> kAxisNames[] = {
+    {"x", UpAxis::PosX},  {"-x", UpAxis::NegX}, {"y", UpAxis::PosY},  {"-y", UpAxis::NegY}, {"z", UpAxis::PosZ},
+    {"-z", UpAxis::NegZ}, {"+x", UpAxis::PosX}, {"+y", UpAxis::PosY}, {"+z", UpAxis::PosZ}};
+}  // namespace
+
+std::optional<UpAxis> up_axis_named(std::string_view name) {
+    for (const auto& [text, axis] : kAxisNames)
+        if (name == text) return axis;
+    return std::nullopt;
+}
+
+const char* up_axis_name(UpAxis axis) {
+    for (const auto& [text, a] : kAxisNames)
+        if (a == axis) return text;
+    return "y";
+}
+
 glm::mat3 up_axis_rotation(UpAxis axis) {
     const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
     // Columns: where +x, +y and +z of the camera frame go; each a right-handed rotation.
@@ -99,10 +117,11 @@ Camera frame_y_up(const BoundingBox& box, const CameraOptions& o, float aspect) 
 }  // namespace
 
 Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect) {
-    if (o.up_axis == UpAxis::PosY) return frame_y_up(box, o, aspect);
+    const UpAxis axis = o.up_axis.value_or(UpAxis::PosY);
+    if (axis == UpAxis::PosY) return frame_y_up(box, o, aspect);
     // Frame the model in the camera math's frame (a signed permutation keeps the box
     // axis-aligned), then turn the camera back into the model's coordinates.
-    const glm::mat3 to_model = up_axis_rotation(o.up_axis), to_frame = glm::transpose(to_model);
+    const glm::mat3 to_model = up_axis_rotation(axis), to_frame = glm::transpose(to_model);
     const glm::vec3 a = to_frame * box.min, b = to_frame * box.max;
     const BoundingBox local{glm::min(a, b), glm::max(a, b)};
     CameraOptions lo = o;

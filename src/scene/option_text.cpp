@@ -45,11 +45,7 @@ glm::vec4 parse_color(const std::string& option, const std::string& text) {
 }
 
 UpAxis parse_up_axis(const std::string& option, const std::string& text) {
-    static const std::pair<const char*, UpAxis> axes[] = {
-        {"x", UpAxis::PosX},  {"-x", UpAxis::NegX}, {"y", UpAxis::PosY},  {"-y", UpAxis::NegY}, {"z", UpAxis::PosZ},
-        {"-z", UpAxis::NegZ}, {"+x", UpAxis::PosX}, {"+y", UpAxis::PosY}, {"+z", UpAxis::PosZ}};
-    for (const auto& [name, axis] : axes)
-        if (text == name) return axis;
+    if (const std::optional<UpAxis> axis = up_axis_named(text)) return *axis;
     throw InputError(option + ": expected x, y, z, -x, -y or -z, got " + io::quote_token(text));
 }
 

@@ -190,6 +190,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.light_position = r.light_position;
     scene.light_target = r.light_target;
     scene.smooth_angle = r.smooth_angle.value_or(scene.style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
+    scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
     scene.names = r.names;
     return scene;
 }

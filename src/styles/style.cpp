@@ -375,8 +375,9 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         std::replace(what.begin(), what.end(), '\n', ' ');
         throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
     }
-    reject_unknown_keys(root, {"description", "background", "base-color", "smooth-angle", "light", "shading", "lines"},
-                        source, "");
+    reject_unknown_keys(
+        root, {"description", "background", "base-color", "smooth-angle", "up-axis", "light", "shading", "lines"},
+        source, "");
     Style style;
     style.name = stem(source);
     if (auto d = root["description"].value<std::string>()) style.description = *d;
@@ -387,6 +388,11 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         if (!angle || !(*angle >= 0.0 && *angle <= 180.0))
             throw InputError(source, "smooth-angle: expected degrees in [0, 180]");
         style.smooth_angle = float(*angle);
+    }
+    if (auto* n = root.get("up-axis")) {
+        const std::optional<std::string> name = n->value<std::string>();
+        style.up_axis = name ? up_axis_named(*name) : std::nullopt;
+        if (!style.up_axis) throw InputError(source, "up-axis: expected \"x\", \"y\", \"z\", \"-x\", \"-y\" or \"-z\"");
     }
 
     if (auto* light = root["light"].as_table()) {
@@ -503,6 +509,7 @@ std::string format_style(const Style& style) {
     out << "background = " << color_text(style.background, style.background.a < 1.0f) << "\n";
     out << "base-color = " << color_text(glm::vec4(style.shading.base_color, 1.0f)) << "\n";
     if (style.smooth_angle) out << "smooth-angle = " << format_number(*style.smooth_angle) << "\n";
+    if (style.up_axis) out << "up-axis = " << toml_string(up_axis_name(*style.up_axis)) << "\n";
     if (style.light_color || style.ambient) {
         out << "\n[light]\n";
         if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";

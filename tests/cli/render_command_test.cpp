@@ -301,6 +301,14 @@ TEST(RenderCommand, UpAxisZStandsAZUpModelUpright) {
     EXPECT_GT(h_up, 2 * w_up);  // standing
     const auto [w_flat, h_flat] = extent("");
     EXPECT_GT(w_flat, h_flat);  // lying along the view's horizontal
+    // A style may say the up axis; the option wins over it.
+    const std::string style = dir.write("z.toml", "up-axis = \"z\"\n[shading]\nmodel = \"lambert\"\n");
+    EXPECT_EQ(extent("--style " + style), std::make_pair(w_up, h_up));
+    EXPECT_EQ(extent("--style " + style + " --up-axis y"), std::make_pair(w_flat, h_flat));
+    const std::string bad_style = dir.write("w.toml", "up-axis = \"w\"\n[shading]\nmodel = \"lambert\"\n");
+    const auto bad_file = run_cli("render " + model + " --style " + bad_style + " -o " + dir.file("b.png"));
+    EXPECT_EQ(bad_file.status, 2);
+    EXPECT_NE(bad_file.err.find("up-axis: expected"), std::string::npos) << bad_file.err;
     const auto bad = run_cli("render " + model + " --up-axis w -o " + dir.file("b.png"));
     EXPECT_EQ(bad.status, 2);
     EXPECT_NE(bad.err.find("--up-axis: expected x, y, z, -x, -y or -z, got 'w'"), std::string::npos) << bad.err;
