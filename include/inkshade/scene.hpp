@@ -53,7 +53,7 @@ struct SceneRequest {
     std::optional<glm::vec3> light_color, ambient, base_color;
     std::optional<glm::vec4> background;  // default: the style's
     int samples = 4;                      // MSAA, 1..16
-    bool srgb = false;                    // sRGB-encode the output
+    bool srgb = false;                    // decode textures, sRGB-encode the output
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;

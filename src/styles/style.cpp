@@ -227,6 +227,7 @@ Style model_default_style(const ShadingModel& model) {
     s.name = model.name;
     s.description = model.summary;
     s.shading.model = model.name;
+    s.shading.base_color_use = BaseColorUse::Fallback;  // as every style's base colour (white here)
     return s;
 }
 
@@ -375,12 +376,21 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         std::replace(what.begin(), what.end(), '\n', ' ');
         throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
     }
-    reject_unknown_keys(root, {"description", "background", "base-color", "light", "shading", "lines"}, source, "");
+    reject_unknown_keys(root, {"description", "background", "base-color", "mesh-colors", "light", "shading", "lines"},
+                        source, "");
     Style style;
     style.name = stem(source);
     if (auto d = root["description"].value<std::string>()) style.description = *d;
     if (auto* n = root.get("background")) style.background = color_value(*n, source, "background");
+    // A style's base colour tints only meshes without colours of their own (a preset's skin
+    // tone must not darken a textured model); mesh-colors = false fills with it alone (ink).
+    style.shading.base_color_use = BaseColorUse::Fallback;
     if (auto* n = root.get("base-color")) style.shading.base_color = glm::vec3(color_value(*n, source, "base-color"));
+    if (auto* n = root.get("mesh-colors")) {
+        const std::optional<bool> use = n->value_exact<bool>();
+        if (!use) throw InputError(source, "mesh-colors: expected true or false");
+        if (!*use) style.shading.base_color_use = BaseColorUse::Only;
+    }
 
     if (auto* light = root["light"].as_table()) {
         reject_unknown_keys(*light, {"color", "ambient"}, source, " in [light]");
@@ -495,6 +505,7 @@ std::string format_style(const Style& style) {
     out << "description = " << toml_string(style.description) << "\n";
     out << "background = " << color_text(style.background, style.background.a < 1.0f) << "\n";
     out << "base-color = " << color_text(glm::vec4(style.shading.base_color, 1.0f)) << "\n";
+    if (style.shading.base_color_use == BaseColorUse::Only) out << "mesh-colors = false\n";
     if (style.light_color || style.ambient) {
         out << "\n[light]\n";
         if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";
