@@ -1,7 +1,8 @@
 #version 450 core
 // Shared vertex stage of every shading model: world-space position, normal and colour, and
 // the uvs of a textured mesh (INKSHADE_BASE_TEXTURE: a program variant, so untextured meshes
-// pay nothing; common/surface.glsl samples the texture).
+// pay nothing; common/surface.glsl samples the texture). INKSHADE_BASE_COLOR_ONLY: the
+// vertex/material colours are left out, C is the base colour alone (BaseColorUse::Only).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
@@ -27,7 +28,11 @@ void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_world_pos = world.xyz;
     v_world_normal = u_normal_matrix * a_normal;
+#ifdef INKSHADE_BASE_COLOR_ONLY
+    v_color = vec3(1.0);
+#else
     v_color = a_color;
+#endif
     v_object_pos = a_position;
 #ifdef INKSHADE_BASE_TEXTURE
     v_uv = a_uv;

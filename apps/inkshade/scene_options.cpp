@@ -46,7 +46,7 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--base-color", base_color, "base colour C, multiplies mesh colours (default white)");
     cmd.add_option("--background", background, "background colour or 'transparent' (default: the style's, white)");
     cmd.add_option("--samples", r.samples, "MSAA samples (1 = off)")->capture_default_str();
-    cmd.add_flag("--srgb", r.srgb, "sRGB-encode the output (default: formula values as they are)");
+    cmd.add_flag("--srgb", r.srgb, "decode textures from sRGB, sRGB-encode the output (default: as they are)");
 }
 
 std::optional<std::vector<std::string>> split_names(const std::string& text) {

@@ -12,8 +12,9 @@ namespace inkshade {
 
 // A decoded base-colour texture (glTF baseColorTexture, MTL map_Kd, PLY `comment TextureFile`).
 // Colour space: the RGB bytes are sRGB-encoded, as glTF 2.0 section 3.9.2 requires of base
-// colour textures and as every image editor writes them; decode to linear (GL_SRGB8_ALPHA8 or
-// the sRGB EOTF) before multiplying by a linear base colour. Alpha is linear.
+// colour textures and as every image editor writes them. The renderer reads them in the
+// output's colour convention: as stored when the output is written unencoded (the default),
+// decoded to linear light when it is sRGB-encoded (docs/shading.md). Alpha is linear.
 // Orientation: rows are stored top row of the image first (as in the file and inkshade::Image),
 // while Mesh::uvs follow the OBJ/OpenGL convention (v = 0 at the BOTTOM of the image), so
 // texel row = (1 - v) * height. Uploaded as is with glTexImage2D (row 0 at t = 0), sample at

@@ -18,7 +18,9 @@ struct RenderOptions {
     int height = 1024;
     int samples = 4;                               // MSAA samples, resolved before readback
     glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};  // alpha 0 = transparent PNG
-    bool srgb_output = false;                      // default: formula values written as they are
+    // The linear colour convention: textures decoded from sRGB, the output sRGB-encoded. Default:
+    // the display convention, texels and formula values as they are (docs/shading.md).
+    bool srgb_output = false;
 };
 
 struct PassTiming {

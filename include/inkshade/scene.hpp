@@ -54,7 +54,7 @@ struct SceneRequest {
     std::optional<glm::vec3> light_color, ambient, base_color;
     std::optional<glm::vec4> background;  // default: the style's
     int samples = 4;                      // MSAA, 1..16
-    bool srgb = false;                    // sRGB-encode the output
+    bool srgb = false;                    // decode textures, sRGB-encode the output
     // Auto-smooth angle in degrees, 0..180, for files without normals (LoadOptions::smooth_angle);
     // unset: the style's, else 30.
     std::optional<float> smooth_angle;

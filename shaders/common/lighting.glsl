@@ -1,7 +1,8 @@
 // Conventions (docs/shading.md): n surface normal, l towards the light, v towards the
 // viewer, r = reflect(-l, n), h = normalize(l + v). Values are written straight to the
 // framebuffer, as hand-written GLSL shaders without a gamma step do (pixel =
-// round(255 * clamp(formula))), unless u_srgb_output asks for the sRGB encode.
+// round(255 * clamp(formula))), unless u_srgb_output asks for the sRGB encode (the linear
+// colour convention: --srgb, or mtoon's convention = threejs; render/color_convention.hpp).
 uniform vec3 u_eye;            // camera position (world)
 uniform vec3 u_view_dir;       // camera forward (world); used for orthographic views
 uniform int u_orthographic;    // 1: v is -u_view_dir everywhere

@@ -25,7 +25,12 @@ void main() {
     vec3 l = to_light(world.xyz);
     v_world_pos = world.xyz;
     v_world_normal = n;
-    v_color = u_base_color * a_color * (u_light_color * lambert(n, l) + u_ambient);
+#ifdef INKSHADE_BASE_COLOR_ONLY
+    vec3 mesh_color = vec3(1.0);  // the base colour alone (mesh.vert)
+#else
+    vec3 mesh_color = a_color;
+#endif
+    v_color = u_base_color * mesh_color * (u_light_color * lambert(n, l) + u_ambient);
     v_object_pos = a_position;
 #ifdef INKSHADE_BASE_TEXTURE
     v_uv = a_uv;

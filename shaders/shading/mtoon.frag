@@ -6,9 +6,10 @@
 //   gi     = A * k * C
 //   rim    = rim-color * saturate(1 - n.v + lift)^power * mix(1, (E + A) * k, rim-lighting-mix)
 //   out    = clamp(direct + gi + rim)
-// convention "threejs": k = 1/pi and the output is sRGB-encoded (three-vrm on three.js);
-// convention "seeds" (Inkshade's default): k = 1 and the value is written as it is, no sRGB
-// encode, like the other shading models.
+// convention "threejs": k = 1/pi, the texture decoded from sRGB and the output sRGB-encoded
+// (three-vrm on three.js: the renderer's linear colour convention sets u_srgb_output);
+// convention "seeds" (Inkshade's default): k = 1, the texture and the value as they are, like
+// the other shading models (unless --srgb).
 // shadow = 1 (lit) .. 0 from the PCF-filtered shadow map when `shadows` is on; it scales t as
 // the shading term of three-vrm does, so shadowed parts take the shade colour.
 #include "common/surface.glsl"
@@ -39,5 +40,5 @@ void shade() {
     float fresnel = pow(max(clamp(1.0 - dot(s.n, s.v) + u_rim_lift, 0.0, 1.0), 1e-6), u_rim_fresnel_power);
     vec3 rim = u_rim_color * fresnel * mix(vec3(1.0), E + A, u_rim_lighting_mix);
     vec3 c = clamp(direct + gi + rim, 0.0, 1.0);
-    o_color = (u_convention == 1) ? vec4(srgb_encode(c), 1.0) : encode_output(c);
+    o_color = encode_output(c);
 }

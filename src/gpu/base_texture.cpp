@@ -42,19 +42,24 @@ BaseTexture BaseTexture::white() {
     return BaseTexture(1, 1, texel);
 }
 
-BaseTexture::BaseTexture(int width, int height, const uint8_t* rgba) : texture_(GlTexture::create(GL_TEXTURE_2D)) {
+BaseTexture::BaseTexture(int width, int height, const uint8_t* rgba) : srgb_(GlTexture::create(GL_TEXTURE_2D)) {
     const GLsizei levels = GLsizei(std::bit_width(unsigned(std::max(width, height))));
-    const GLuint id = texture_.id();
-    glTextureStorage2D(id, levels, GL_SRGB8_ALPHA8, width, height);
+    glTextureStorage2D(srgb_.id(), levels, GL_SRGB8_ALPHA8, width, height);
     // RGBA8 rows are 4-byte aligned, as the default unpack alignment expects.
-    glTextureSubImage2D(id, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    glGenerateTextureMipmap(id);
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    if (const float anisotropy = max_anisotropy(); anisotropy > 1.0f)
-        glTextureParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
+    glTextureSubImage2D(srgb_.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    // Built through the sRGB format, so each level averages in linear light: a minified
+    // black/white checker is 0.5 of the light (byte 188), read either way, as a screen shows it.
+    glGenerateTextureMipmap(srgb_.id());
+    stored_ = GlTextureView::create(srgb_.id(), GLenum(GL_RGBA8), GLuint(levels));
+    // A view has its own sampling state: both get the same.
+    const float anisotropy = max_anisotropy();
+    for (const GLuint id : {srgb_.id(), stored_.id()}) {
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        if (anisotropy > 1.0f) glTextureParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
+    }
 }
 
 }  // namespace inkshade::gpu

@@ -1,5 +1,7 @@
-// A base-colour texture on the GPU: GL_SRGB8_ALPHA8 (sampling decodes sRGB to linear, the
-// convention of inkshade::Texture and docs/shading.md), full mip chain, trilinear filtering
+// A base-colour texture on the GPU, readable two ways (inkshade::Texture's bytes are sRGB): as
+// stored (a GL_RGBA8 view, byte / 255) or decoded to linear light (the GL_SRGB8_ALPHA8 storage),
+// chosen per draw by the frame's colour convention (render/color_convention.hpp,
+// docs/shading.md). Both share one full mip chain, built in linear light; trilinear filtering
 // plus anisotropy up to 16 where the driver has it (not on llvmpipe: base_texture.cpp), repeat
 // wrap (glTF's default and OBJ's).
 #pragma once
@@ -10,20 +12,28 @@
 
 namespace inkshade::gpu {
 
+// How a sample reads the texel bytes.
+enum class Texels {
+    AsStored,         // byte / 255: the display convention
+    DecodedFromSrgb,  // the sRGB EOTF of byte / 255, linear light: the linear convention
+};
+
 class BaseTexture {
 public:
     // Rows are uploaded as stored (top row first at t = 0): sample at vec2(u, 1 - v).
     explicit BaseTexture(const Texture& texture);
-    // A 1x1 white texel: sRGB 255 decodes to exactly 1.0, so untextured materials of a textured
-    // mesh keep their colour bit for bit.
+    // A 1x1 white texel: 255 is exactly 1.0 read either way, so untextured materials of a
+    // textured mesh keep their colour bit for bit.
     static BaseTexture white();
 
-    GLuint id() const { return texture_.id(); }
-    void bind(GLuint unit) const { glBindTextureUnit(unit, texture_.id()); }
+    void bind(GLuint unit, Texels texels) const {
+        glBindTextureUnit(unit, texels == Texels::AsStored ? stored_.id() : srgb_.id());
+    }
 
 private:
     BaseTexture(int width, int height, const uint8_t* rgba);
-    GlTexture texture_;
+    GlTexture srgb_;        // the storage, GL_SRGB8_ALPHA8: sampling decodes
+    GlTextureView stored_;  // the same texels as GL_RGBA8: sampling reads the bytes
 };
 
 }  // namespace inkshade::gpu

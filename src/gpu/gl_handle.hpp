@@ -73,6 +73,19 @@ struct TextureKind {
     static void destroy(GLuint id) { glDeleteTextures(1, &id); }
 };
 
+// A view of all levels of a 2D texture's immutable storage in another format of its class
+// (GL_SRGB8_ALPHA8 seen as GL_RGBA8): glTextureView wants a name from glGenTextures that was
+// never bound, not one glCreateTextures already made.
+struct TextureViewKind {
+    static GLuint create(GLuint original, GLenum internal_format, GLuint levels) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        glTextureView(id, GL_TEXTURE_2D, original, internal_format, 0, levels, 0, 1);
+        return id;
+    }
+    static void destroy(GLuint id) { glDeleteTextures(1, &id); }
+};
+
 struct RenderbufferKind {
     static GLuint create() {
         GLuint id = 0;
@@ -112,7 +125,8 @@ struct ProgramKind {
 
 using GlBuffer = GlHandle<BufferKind>;
 using GlVertexArray = GlHandle<VertexArrayKind>;
-using GlTexture = GlHandle<TextureKind>;  // create(GL_TEXTURE_2D, ...)
+using GlTexture = GlHandle<TextureKind>;          // create(GL_TEXTURE_2D, ...)
+using GlTextureView = GlHandle<TextureViewKind>;  // create(original, GL_RGBA8, levels)
 using GlRenderbuffer = GlHandle<RenderbufferKind>;
 using GlFramebuffer = GlHandle<FramebufferKind>;
 using GlQuery = GlHandle<QueryKind>;    // create(GL_TIMESTAMP, ...)

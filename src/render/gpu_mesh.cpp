@@ -82,6 +82,8 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     auto source_of = [&](size_t i) { return split ? source[i] : uint32_t(i); };
     index_count_ = GLsizei(faces.size() * 3);
     const size_t stream_size = vertices.size();
+    has_own_colors_ = textured() || std::any_of(vertices.begin(), vertices.end(),
+                                                [](const GpuVertex& v) { return v.color != glm::vec3(1.0f); });
     vbo_ = upload_buffer(GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data());
     std::vector<GpuVertex>().swap(vertices);
 
@@ -243,11 +245,13 @@ void GpuMesh::draw() const {
     draw_indices(0, index_count_);
 }
 
-void GpuMesh::draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const {
+void GpuMesh::draw_by_material(GLuint texture_unit, gpu::Texels texels,
+                               const std::function<void(const Material*)>& before) const {
     glBindVertexArray(vao_.id());
     for (const Range& r : ranges_) {
         const bool known = r.material < materials_.size();
-        if (textured()) textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit);
+        if (textured())
+            textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit, texels);
         if (before) before(known ? &materials_[r.material] : nullptr);
         draw_indices(r.first, r.count);
     }

@@ -41,11 +41,15 @@ public:
     bool textured() const { return !textures_.empty(); }
     // Some material carries VRM MToon values (Material::mtoon).
     bool has_material_params() const { return has_material_params_; }
+    // Colours of its own: a vertex or material colour other than white, or a texture (what a
+    // style's base colour does not tint: BaseColorUse::Fallback).
+    bool has_own_colors() const { return has_own_colors_; }
     // The faces material by material (sorted by material when the mesh is textured or has
     // material parameters, else one range in file order, exactly as draw()). Before each range
-    // its texture is bound to `texture_unit` (a white texel for materials without one) when the
-    // mesh is textured, and `before` gets the range's material (null: none).
-    void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
+    // its texture is bound to `texture_unit` (a white texel for materials without one), read as
+    // `texels` says, when the mesh is textured, and `before` gets the range's material (null: none).
+    void draw_by_material(GLuint texture_unit, gpu::Texels texels,
+                          const std::function<void(const Material*)>& before) const;
 
     // Uploads one float per mesh vertex as attribute 6 (the `kr` debug view's per-view radial
     // curvature); stream vertices duplicated per material take their source vertex's value.
@@ -71,6 +75,7 @@ private:
     std::vector<gpu::BaseTexture> textures_;  // each distinct image once, then the white texel
     std::vector<size_t> material_texture_;    // per material: index into textures_
     bool has_material_params_ = false;
+    bool has_own_colors_ = false;
 };
 
 }  // namespace inkshade::render

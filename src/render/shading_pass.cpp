@@ -1,6 +1,7 @@
 // `shading`: the shading model (inkshade/shading.hpp) into the cleared colour target, with the
 // surface line types it tests per fragment (render/surface_lines.hpp), the shadow map and the
-// base-colour textures.
+// base-colour textures, read and written in the frame's colour convention
+// (render/color_convention.hpp), and C made as the selection's BaseColorUse says.
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -8,6 +9,7 @@
 #include "gpu/gl_state.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/color.hpp"
+#include "render/color_convention.hpp"
 #include "render/frame.hpp"
 #include "render/surface_lines.hpp"
 
@@ -76,8 +78,25 @@ bool casts_shadows(const Frame& frame) {
     return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
 }
 
+// What C is made of (BaseColorUse, docs/shading.md "Base colour"): the base colour, and
+// whether the mesh's vertex/material colours and textures multiply it.
+struct Albedo {
+    glm::vec3 base{1.0f};
+    bool mesh_colors = true;
+};
+
+Albedo albedo(const ShadingSelection& shading, const GpuMesh& mesh) {
+    switch (shading.base_color_use) {
+        case BaseColorUse::Multiply: break;
+        case BaseColorUse::Fallback: return {mesh.has_own_colors() ? glm::vec3(1.0f) : shading.base_color, true};
+        case BaseColorUse::Only: return {shading.base_color, false};
+    }
+    return {shading.base_color, true};
+}
+
 // The uniforms every shading model reads (common/lighting.glsl, common/surface.glsl).
-void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame) {
+void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame, const Albedo& albedo,
+                        ColorConvention convention) {
     const Camera& camera = frame.camera;
     const Light& light = frame.light;
     const glm::mat4 model_matrix(1.0f);
@@ -93,8 +112,8 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame) {
     program.set("u_light_target", light.target);
     program.set("u_light_color", light.color);
     program.set("u_ambient", light.ambient);
-    program.set("u_base_color", frame.shading.base_color);
-    program.set("u_srgb_output", frame.options.srgb_output ? 1 : 0);
+    program.set("u_base_color", albedo.base);
+    program.set("u_srgb_output", convention == ColorConvention::Linear ? 1 : 0);
     program.set("u_bbox_min", frame.bounds.min);
     program.set("u_bbox_max", frame.bounds.max);
     program.set("u_viewport_size", glm::vec2(frame.options.width, frame.options.height));
@@ -106,13 +125,17 @@ public:
         const ShadingModel& model = frame.model;
         const ShadingSelection& shading = frame.shading;
         GpuMesh& mesh = *frame.mesh;
+        const ColorConvention convention = color_convention(model, shading.params, frame.options);
+        const Albedo c = albedo(shading, mesh);
         // Every shading model samples the base-colour texture (common/surface.glsl; gouraud in
         // its own fragment stage); debug views show geometry only.
-        const bool textured = mesh.textured() && !model.debug_view;
+        const bool textured = mesh.textured() && !model.debug_view && c.mesh_colors;
         const bool material_params =
             mesh.has_material_params() && param_on(model, shading.params, "use-material-params");
         const SurfaceLines surface_lines{frame.line("rim-contour")};
-        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured);
+        // A mesh whose colours are all white needs no variant to leave them out.
+        const bool base_color_only = !c.mesh_colors && mesh.has_own_colors();
+        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, base_color_only);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -127,7 +150,7 @@ public:
         if (frame.options.samples > 1) multisample.emplace(GL_MULTISAMPLE, true);
 
         program.use();
-        set_frame_uniforms(program, frame);
+        set_frame_uniforms(program, frame, c, convention);
         if (casts_shadows(frame)) {
             const ShadowMap& map = *frame.targets.shadow_map;
             map.bind(kShadowUnit);
@@ -139,7 +162,7 @@ public:
         surface_lines.upload(program);
         if (textured || material_params) {
             program.set("u_base_texture", int(kBaseTextureUnit));
-            mesh.draw_by_material(kBaseTextureUnit, [&](const Material* material) {
+            mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
                 if (material_params)
                     upload_params(program, model, with_material_params(model, shading.params, material));
             });
@@ -152,10 +175,12 @@ private:
     // One compiled variant per model and compile-time parameter values (#defines, not uniform
     // branches: llvmpipe executes switched-off branches too). A shadow-casting model's
     // `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl). `textured`:
-    // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE).
+    // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE);
+    // `base_color_only`: the one that leaves out the vertex/material colours (BaseColorUse::Only).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured) {
+                                    bool textured, bool base_color_only) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
+        if (base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;

@@ -77,7 +77,12 @@ void apply_overrides(const SceneRequest& r, Style& s) {
             throw InputError(option_name(r.names, "set") + " " + set + ": " + e.what());
         }
     }
-    if (r.base_color) s.shading.base_color = *r.base_color;
+    if (r.base_color) {
+        // An explicit colour multiplies the mesh's own colours; a style's `mesh-colors = false`
+        // (ink's fill) still leaves them out.
+        s.shading.base_color = *r.base_color;
+        if (s.shading.base_color_use == BaseColorUse::Fallback) s.shading.base_color_use = BaseColorUse::Multiply;
+    }
     if (r.background) s.background = *r.background;
     if (r.light_color) s.light_color = *r.light_color;
     if (r.ambient) s.ambient = *r.ambient;

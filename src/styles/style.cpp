@@ -227,6 +227,7 @@ Style model_default_style(const ShadingModel& model) {
     s.name = model.name;
     s.description = model.summary;
     s.shading.model = model.name;
+    s.shading.base_color_use = BaseColorUse::Fallback;  // as every style's base colour (white here)
     return s;
 }
 
@@ -375,13 +376,17 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         std::replace(what.begin(), what.end(), '\n', ' ');
         throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
     }
-    reject_unknown_keys(
-        root, {"description", "background", "base-color", "smooth-angle", "up-axis", "light", "shading", "lines"},
-        source, "");
+    reject_unknown_keys(root,
+                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "light",
+                         "shading", "lines"},
+                        source, "");
     Style style;
     style.name = stem(source);
     if (auto d = root["description"].value<std::string>()) style.description = *d;
     if (auto* n = root.get("background")) style.background = color_value(*n, source, "background");
+    // A style's base colour tints only meshes without colours of their own (a preset's skin
+    // tone must not darken a textured model); mesh-colors = false fills with it alone (ink).
+    style.shading.base_color_use = BaseColorUse::Fallback;
     if (auto* n = root.get("base-color")) style.shading.base_color = glm::vec3(color_value(*n, source, "base-color"));
     if (auto* n = root.get("smooth-angle")) {
         const std::optional<double> angle = n->value<double>();
@@ -393,6 +398,11 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         const std::optional<std::string> name = n->value<std::string>();
         style.up_axis = name ? up_axis_named(*name) : std::nullopt;
         if (!style.up_axis) throw InputError(source, "up-axis: expected \"x\", \"y\", \"z\", \"-x\", \"-y\" or \"-z\"");
+    }
+    if (auto* n = root.get("mesh-colors")) {
+        const std::optional<bool> use = n->value_exact<bool>();
+        if (!use) throw InputError(source, "mesh-colors: expected true or false");
+        if (!*use) style.shading.base_color_use = BaseColorUse::Only;
     }
 
     if (auto* light = root["light"].as_table()) {
@@ -510,6 +520,7 @@ std::string format_style(const Style& style) {
     out << "base-color = " << color_text(glm::vec4(style.shading.base_color, 1.0f)) << "\n";
     if (style.smooth_angle) out << "smooth-angle = " << format_number(*style.smooth_angle) << "\n";
     if (style.up_axis) out << "up-axis = " << toml_string(up_axis_name(*style.up_axis)) << "\n";
+    if (style.shading.base_color_use == BaseColorUse::Only) out << "mesh-colors = false\n";
     if (style.light_color || style.ambient) {
         out << "\n[light]\n";
         if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";

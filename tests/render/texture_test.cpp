@@ -1,6 +1,8 @@
-// Base-colour textures reach C in every model built on common/surface.glsl: decoded from sRGB,
-// placed by the uvs (v = 0 at the image bottom), multiplied by the material and base colours,
-// and mtoon's per-material VRM parameters.
+// Base-colour textures reach C in every model built on common/surface.glsl: read in the frame's
+// colour convention (the bytes as stored by default; decoded from sRGB, the output encoded, with
+// --srgb and in the three.js and mtoon-threejs conventions), placed by the uvs (v = 0 at the
+// image bottom), multiplied by the material and base colours, and mtoon's per-material VRM
+// parameters.
 #include <cmath>
 
 #include "inkshade/io.hpp"
@@ -18,13 +20,17 @@ float srgb_decode(uint8_t byte) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+// The sRGB OETF, the output encode of the linear convention.
+float srgb_encode(float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+
 // Lit only by ambient A = 1 (E = 0): lambert, flat and mtoon all output exactly C.
 Light ambient_only() { return directional_light({0, 0, 1}, glm::vec3(0), glm::vec3(1)); }
 
-RenderOptions single_sample(int size = kSize) {
+RenderOptions single_sample(int size = kSize, bool srgb_output = false) {
     RenderOptions o;
     o.width = o.height = size;
     o.samples = 1;
+    o.srgb_output = srgb_output;
     return o;
 }
 
@@ -75,27 +81,71 @@ glm::ivec2 cell_pixel(int col, int row) {
     return glm::ivec2(glm::floor(p));
 }
 
-// Every cell's centre pixel is its decoded colour times `tint`, within 2/255.
-void expect_cells(const Image& img, glm::vec3 tint, const std::string& what) {
+enum class Convention { Display, Linear };
+
+// Every cell's centre pixel is its texel times `tint` in the convention, within `tolerance`/255:
+// byte * tint as stored (display), or encode(decode(byte) * tint) (linear).
+void expect_cells(const Image& img, glm::vec3 tint, const std::string& what,
+                  Convention convention = Convention::Display, int tolerance = 1) {
     for (int row = 0; row < kCells; ++row)
         for (int col = 0; col < kCells; ++col) {
             glm::ivec2 p = cell_pixel(col, row);
             glm::u8vec3 c = cell_color(col, row);
             const uint8_t* got = img.pixel(p.x, p.y);
-            for (int k = 0; k < 3; ++k)
-                EXPECT_NEAR(int(got[k]), to_byte(srgb_decode(c[k]) * tint[k]), 2)
+            for (int k = 0; k < 3; ++k) {
+                const float want = convention == Convention::Display ? float(c[k]) / 255.0f * tint[k]
+                                                                     : srgb_encode(srgb_decode(c[k]) * tint[k]);
+                EXPECT_NEAR(int(got[k]), to_byte(want), tolerance)
                     << what << ": cell (" << col << "," << row << ") at pixel (" << p.x << "," << p.y << ") channel "
                     << k;
+            }
         }
 }
 
-TEST(Texture, EachTexelAppearsWhereItsUvsPutItDecodedFromSrgb) {
+TEST(Texture, EachTexelAppearsWhereItsUvsPutItAsStored) {
     for (const char* model : {"lambert", "flat", "gouraud"}) {
         ShadingSelection sel;
         sel.model = model;
         Image img = render_ortho(quad({textured()}), ambient_only(), sel, single_sample());
-        // Row 0 of the image (the top) lands at v = 1, the top of the quad: not flipped.
+        // Row 0 of the image (the top) lands at v = 1, the top of the quad: not flipped. Display
+        // convention: the bytes reach the pixels unchanged (decoding them and writing the
+        // linear value unencoded darkened (108,173,223) to (38,106,188)).
         expect_cells(img, glm::vec3(1.0f), model);
+    }
+}
+
+// The acceptance of the colour conventions: an unlit textured quad comes back texel for texel
+// (within 1/255) in each. Unlit: lambert, flat and gouraud under ambient 1 alone; threejs-basic
+// (light-independent, linear: decoded, then encoded); mtoon's threejs convention under ambient pi
+// (gi = A/pi * C = C).
+TEST(Texture, UnlitQuadReproducesItsTexelsInEveryConvention) {
+    struct Case {
+        const char* model;
+        bool srgb_output;
+        Convention convention;
+        glm::vec3 ambient{1.0f};
+        const char* convention_param = nullptr;
+    };
+    const float pi = 3.14159265f;
+    for (const Case& c : {Case{"lambert", false, Convention::Display}, Case{"flat", false, Convention::Display},
+                          Case{"gouraud", false, Convention::Display}, Case{"lambert", true, Convention::Linear},
+                          Case{"gouraud", true, Convention::Linear}, Case{"threejs-basic", false, Convention::Linear},
+                          Case{"threejs-basic", true, Convention::Linear},
+                          Case{"mtoon", false, Convention::Linear, glm::vec3(pi), "threejs"},
+                          Case{"mtoon", false, Convention::Display, glm::vec3(1.0f), "seeds"}}) {
+        ShadingSelection sel;
+        sel.model = c.model;
+        if (c.convention_param) {
+            sel.params["convention"] = {std::string(c.convention_param) == "threejs" ? 1.0f : 0.0f};
+            sel.params["shadows"] = {0.0f};
+        }
+        const Light light = directional_light({0, 0, 1}, glm::vec3(0), c.ambient);
+        Image img = render_ortho(quad({textured()}), light, sel, single_sample(kSize, c.srgb_output));
+        const std::string what = std::string(c.model) + (c.srgb_output ? " --srgb" : "") +
+                                 (c.convention_param ? std::string(" convention=") + c.convention_param : "");
+        expect_cells(img, glm::vec3(1.0f), what, c.convention);
+        // Both conventions give the texel back, so the two expectations agree within 1.
+        expect_cells(img, glm::vec3(1.0f), what + " (as stored)", Convention::Display, 1);
     }
 }
 
@@ -105,6 +155,9 @@ TEST(Texture, MultipliesMaterialAndBaseColour) {
     const glm::vec3 diffuse(0.5f, 1.0f, 0.25f);
     Image img = render_ortho(quad({textured(diffuse)}), ambient_only(), sel, single_sample());
     expect_cells(img, diffuse * sel.base_color, "lambert");
+    // Linear convention: the decoded texel times the (linear) colours, encoded.
+    Image linear = render_ortho(quad({textured(diffuse)}), ambient_only(), sel, single_sample(kSize, true));
+    expect_cells(linear, diffuse * sel.base_color, "lambert --srgb", Convention::Linear);
 }
 
 TEST(Texture, MtoonUsesTheTexture) {
@@ -128,7 +181,7 @@ TEST(Texture, MaterialWithoutTextureKeepsItsColourExactly) {
         EXPECT_NEAR(int(img.pixel(x, y)[k]), to_byte(plain.diffuse[k]), 1) << "channel " << k;
     }
     glm::ivec2 p = cell_pixel(0, 0);
-    EXPECT_NEAR(int(img.pixel(p.x, p.y)[0]), to_byte(srgb_decode(cell_color(0, 0).r)), 2);
+    EXPECT_NEAR(int(img.pixel(p.x, p.y)[0]), int(cell_color(0, 0).r), 1);
 }
 
 TEST(Texture, UvsWithoutTextureRenderLikeNoUvs) {
@@ -151,9 +204,10 @@ TEST(Texture, UvsWithoutTextureRenderLikeNoUvs) {
 }
 
 TEST(Texture, MinifiedCheckerAveragesInLinearLight) {
-    // A 1-texel black/white checker seen at ~2.5 texels per pixel: mipmaps built and filtered in
-    // linear light average to 0.5 (byte 128); averaging the sRGB bytes would give 0.21 (55),
-    // and no mipmaps would alias into black and white pixels.
+    // A 1-texel black/white checker seen at ~2.5 texels per pixel: mip levels built in linear
+    // light hold half the light, the byte 188 a screen shows for it, read as stored (display) or
+    // decoded to 0.5 and encoded again (linear); averaging the bytes would give 128 (0.21 of the
+    // light, too dark), and no mipmaps would alias into black and white pixels.
     auto checker = std::make_shared<Texture>();
     checker->width = checker->height = 64;
     for (int y = 0; y < 64; ++y)
@@ -165,11 +219,14 @@ TEST(Texture, MinifiedCheckerAveragesInLinearLight) {
     m.diffuse = glm::vec3(1.0f);
     m.texture = checker;
     ShadingSelection sel;
-    Image img = render_ortho(quad({m}), ambient_only(), sel, single_sample(32));
-    int compared = 0;
-    for (int y = 10; y < 22; ++y)
-        for (int x = 10; x < 22; ++x, ++compared) EXPECT_NEAR(int(img.pixel(x, y)[0]), 128, 3) << x << "," << y;
-    EXPECT_EQ(compared, 144);
+    for (const bool srgb_output : {false, true}) {
+        Image img = render_ortho(quad({m}), ambient_only(), sel, single_sample(32, srgb_output));
+        int compared = 0;
+        for (int y = 10; y < 22; ++y)
+            for (int x = 10; x < 22; ++x, ++compared)
+                EXPECT_NEAR(int(img.pixel(x, y)[0]), 188, 3) << x << "," << y << (srgb_output ? " --srgb" : "");
+        EXPECT_EQ(compared, 144);
+    }
 }
 
 TEST(Texture, GlbQuadShowsItsTextureUpright) {

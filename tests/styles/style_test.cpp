@@ -170,6 +170,23 @@ TEST(Style, Cel000PresetHoldsFiveBandNumbers) {
     EXPECT_EQ(p.at("levels"), (ParamValue{1.0f, 0.75f, 0.5f, 0.25f, 0.0f}));
 }
 
+// A style's base colour tints only meshes without colours of their own; mesh-colors = false
+// makes it the whole fill (ink).
+TEST(Style, BaseColourIsATintUnlessMeshColoursAreOff) {
+    const std::string model = "[shading]\nmodel = 'lambert'\n";
+    EXPECT_EQ(parse_style(model, "a.toml").shading.base_color_use, BaseColorUse::Fallback);
+    EXPECT_EQ(parse_style("mesh-colors = true\n" + model, "a.toml").shading.base_color_use, BaseColorUse::Fallback);
+    EXPECT_EQ(parse_style("mesh-colors = false\n" + model, "a.toml").shading.base_color_use, BaseColorUse::Only);
+    EXPECT_EQ(error_of("mesh-colors = 'no'\n" + model), "my.toml: mesh-colors: expected true or false");
+    EXPECT_EQ(error_of("mesh-colors = 0\n" + model), "my.toml: mesh-colors: expected true or false");
+    for (const char* name : {"ink", "ink-vector"})
+        EXPECT_EQ(load_style(name).shading.base_color_use, BaseColorUse::Only);
+    for (const char* name : {"anime", "toon", "lambert"})
+        EXPECT_EQ(load_style(name).shading.base_color_use, BaseColorUse::Fallback) << name;
+    EXPECT_NE(format_style(load_style("ink")).find("\nmesh-colors = false\n"), std::string::npos);
+    EXPECT_EQ(format_style(load_style("anime")).find("mesh-colors"), std::string::npos);
+}
+
 TEST(Style, EveryBuiltinRoundTripsThroughItsFile) {
     test::TempDir dir;
     for (const std::string& name : builtin_style_names()) {
@@ -180,6 +197,7 @@ TEST(Style, EveryBuiltinRoundTripsThroughItsFile) {
         EXPECT_EQ(a.shading.model, b.shading.model) << name;
         EXPECT_EQ(full_params(a), full_params(b)) << name;
         EXPECT_EQ(a.shading.base_color, b.shading.base_color) << name;
+        EXPECT_EQ(a.shading.base_color_use, b.shading.base_color_use) << name;
         EXPECT_EQ(a.background, b.background) << name;
         EXPECT_EQ(a.light_color, b.light_color) << name;
         EXPECT_EQ(a.ambient, b.ambient) << name;
