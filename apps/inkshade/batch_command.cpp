@@ -33,6 +33,7 @@ struct BatchArgs {
     float fov = 30.0f;
     bool ortho = false;
     std::string up_axis = "y";
+    std::string lights = "style";
     int samples = 4;
     std::string shard;
     bool force = false, dry_run = false, quiet = false;
@@ -104,6 +105,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.fov_degrees = a.fov;
     d.orthographic = a.ortho;
     d.up_axis = shared.camera.up_axis;
+    d.lights = parse_light_source("--lights", a.lights);
     return d;
 }
 
@@ -196,8 +198,8 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--models", args->models, "instead of a manifest: every model file under DIR (recursively)");
     cmd->add_option("-o,--out,--output", args->output, "output directory (created when missing)");
     cmd->add_option("--views", args->views,
-                    "views where the manifest gives none: orbitAxE, turntable:N[:EL], AZ:EL[:DIST], "
-                    "'eye=X,Y,Z target=X,Y,Z' (explicit cameras separated by ';')")
+                    "views where the manifest gives none: orbitAxE, turntable:N[:EL], AZ:EL[:DIST], camera=NAME "
+                    "(the model file's camera), 'eye=X,Y,Z target=X,Y,Z' (explicit cameras separated by ';')")
         ->capture_default_str();
     cmd->add_option("--styles", args->styles, "styles where the manifest gives none, comma-separated")
         ->capture_default_str();
@@ -209,6 +211,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_flag("--ortho", args->ortho, "orthographic projection where the manifest gives none");
     cmd->add_option("--up-axis", args->up_axis,
                     "the models' up axis where the manifest gives none (x, y, z, -x, -y, -z)")
+        ->capture_default_str();
+    cmd->add_option("--lights", args->lights,
+                    "style or file (the model file's glTF light) where the manifest gives none")
         ->capture_default_str();
     cmd->add_option("--samples", args->samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");

@@ -26,6 +26,9 @@ void main() {
     v_world_pos = world.xyz;
     v_world_normal = n;
     v_color = u_base_color * a_color * (u_light_color * lambert(n, l) + u_ambient);
+#ifdef INKSHADE_UNLIT
+    if (u_unlit == 1) v_color = a_color;  // as it is: common/shading_main.glsl multiplies the base
+#endif
     v_object_pos = a_position;
 #ifdef INKSHADE_BASE_TEXTURE
     v_uv = a_uv;

@@ -21,6 +21,7 @@ struct JobGroup {
     float fov_degrees = 30.0f;
     bool orthographic = false;
     UpAxis up_axis = UpAxis::PosY;
+    LightSource lights = LightSource::Style;
     std::string source;
 };
 

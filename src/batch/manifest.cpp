@@ -23,9 +23,9 @@ namespace {
 using batch::default_group;
 using batch::JobGroup;
 
-const std::set<std::string> kColumns = {"model", "name",   "views", "view",  "styles",  "style",
-                                        "size",  "format", "fov",   "ortho", "up-axis", "output"};
-const char* kColumnList = "model, name, views, styles, size, format, fov, ortho, up-axis, output";
+const std::set<std::string> kColumns = {"model",  "name", "views", "view",    "styles", "style", "size",
+                                        "format", "fov",  "ortho", "up-axis", "lights", "output"};
+const char* kColumnList = "model, name, views, styles, size, format, fov, ortho, up-axis, lights, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -76,6 +76,8 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.fov_degrees = camera.fov_degrees;
     } else if (key == "up-axis") {
         g.up_axis = parse_up_axis("up-axis", value);
+    } else if (key == "lights") {
+        g.lights = parse_light_source("lights", value);
     } else if (key == "ortho") {
         if (value == "true" || value == "1" || value == "yes")
             g.orthographic = true;

@@ -41,8 +41,10 @@ public:
     bool textured() const { return !textures_.empty(); }
     // Some material carries VRM MToon values (Material::mtoon).
     bool has_material_params() const { return has_material_params_; }
-    // The faces material by material (sorted by material when the mesh is textured or has
-    // material parameters, else one range in file order, exactly as draw()). Before each range
+    // Some material is drawn without lighting (Material::unlit).
+    bool has_unlit_materials() const { return has_unlit_materials_; }
+    // The faces material by material (sorted by material when the mesh is textured, has
+    // material parameters or unlit materials, else one range in file order, exactly as draw()). Before each range
     // its texture is bound to `texture_unit` (a white texel for materials without one) when the
     // mesh is textured, and `before` gets the range's material (null: none).
     void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
@@ -71,6 +73,7 @@ private:
     std::vector<gpu::BaseTexture> textures_;  // each distinct image once, then the white texel
     std::vector<size_t> material_texture_;    // per material: index into textures_
     bool has_material_params_ = false;
+    bool has_unlit_materials_ = false;
 };
 
 }  // namespace inkshade::render

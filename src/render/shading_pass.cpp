@@ -76,6 +76,17 @@ bool casts_shadows(const Frame& frame) {
     return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
 }
 
+// Whether the model writes sRGB whatever --srgb: the threejs-* models, and a model whose
+// `convention` parameter is threejs (mtoon). An unlit material is written as they write.
+bool writes_srgb(const ShadingModel& model, const ParamValues& values) {
+    if (model.name.starts_with("threejs-")) return true;
+    const ParamSpec* convention = model.param("convention");
+    if (!convention || convention->type != ParamType::Choice) return false;
+    const auto it = std::find(convention->choices.begin(), convention->choices.end(), "threejs");
+    return it != convention->choices.end() &&
+           int(value_or_default(*convention, values).at(0)) == int(it - convention->choices.begin());
+}
+
 // The uniforms every shading model reads (common/lighting.glsl, common/surface.glsl).
 void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame) {
     const Camera& camera = frame.camera;
@@ -88,10 +99,13 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame) {
     program.set("u_eye", camera.eye);
     program.set("u_view_dir", glm::normalize(camera.target - camera.eye));
     program.set("u_orthographic", camera.orthographic ? 1 : 0);
-    program.set("u_light_type", light.type == LightType::Point ? 1 : 0);
+    program.set("u_light_type", light.type == LightType::Directional ? 0 : light.type == LightType::Point ? 1 : 2);
     program.set("u_light_pos", light.position);
     program.set("u_light_target", light.target);
     program.set("u_light_color", light.color);
+    program.set("u_light_cone", glm::vec2(light.cos_outer, light.cos_inner));
+    program.set("u_light_range", light.range);
+    program.set("u_unlit_srgb", writes_srgb(frame.model, frame.shading.params) ? 1 : 0);
     program.set("u_ambient", light.ambient);
     program.set("u_base_color", frame.shading.base_color);
     program.set("u_srgb_output", frame.options.srgb_output ? 1 : 0);
@@ -111,8 +125,9 @@ public:
         const bool textured = mesh.textured() && !model.debug_view;
         const bool material_params =
             mesh.has_material_params() && param_on(model, shading.params, "use-material-params");
+        const bool unlit = mesh.has_unlit_materials() && !model.debug_view;
         const SurfaceLines surface_lines{frame.line("rim-contour")};
-        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured);
+        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, unlit, frame.light);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -137,11 +152,12 @@ public:
         }
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
-        if (textured || material_params) {
+        if (textured || material_params || unlit) {
             program.set("u_base_texture", int(kBaseTextureUnit));
             mesh.draw_by_material(kBaseTextureUnit, [&](const Material* material) {
                 if (material_params)
                     upload_params(program, model, with_material_params(model, shading.params, material));
+                if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
             });
         } else {
             mesh.draw();
@@ -152,11 +168,17 @@ private:
     // One compiled variant per model and compile-time parameter values (#defines, not uniform
     // branches: llvmpipe executes switched-off branches too). A shadow-casting model's
     // `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl). `textured`:
-    // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE).
+    // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE). `unlit`: the
+    // one that draws unlit materials as they are (INKSHADE_UNLIT). A model file's spot light and
+    // physical falloff (common/lighting.glsl) are variants too.
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured) {
+                                    bool textured, bool unlit, const Light& light) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
+        if (unlit) defines += "#define INKSHADE_UNLIT 1\n";
+        if (light.type == LightType::Spot) defines += "#define INKSHADE_SPOT_LIGHT 1\n";
+        if (light.inverse_square && light.type != LightType::Directional)
+            defines += "#define INKSHADE_INVERSE_SQUARE 1\n";
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
             const ParamValue& v = value_or_default(spec, values);
