@@ -28,7 +28,11 @@ std::string printable(const std::string& s) {
     return out;
 }
 
-bool finite(double x) { return std::isfinite(x); }
+// Finite in single precision, where the camera math runs (1e300 is a finite double).
+bool finite(double x) { return std::isfinite(float(x)); }
+
+// Positive in single precision, not a denormal that a projection would divide by.
+bool positive(double x) { return finite(x) && float(x) >= 1e-30f; }
 
 // A number from the file as a message shows it: 0.5, 9, 1e+30.
 std::string num(double v) {
@@ -52,6 +56,13 @@ NodePlacement placement(const glm::dmat4& m) {
     const glm::dvec3 f(p.forward), u = glm::dvec3(m[1]);
     p.up = unit(u - glm::dot(u, f) * f, {0.0, 1.0, 0.0});
     return p;
+}
+
+// A position the camera math can use: finite and within the bounds load_mesh puts on vertices.
+bool usable(const NodePlacement& p) {
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(p.position[i]) <= 1e15f)) return false;
+    return true;
 }
 
 std::string label(const std::string& own, const std::string& node_name, const char* kind, size_t index) {
@@ -80,6 +91,10 @@ void add_gltf_cameras(const tinygltf::Model& model, const std::vector<PlacedNode
         const auto skip = [&](const std::string& problem) {
             mesh.warnings.push_back(path + ": camera '" + c.name + "' " + problem + "; ignored");
         };
+        if (!usable(c.placement)) {
+            skip("is placed out of range (beyond 1e15)");
+            continue;
+        }
         if (g.type == "perspective") {
             const tinygltf::PerspectiveCamera& p = g.perspective;
             // Section 3.10.2: yfov > 0 (below pi for a projection), znear > 0, zfar > znear when
@@ -88,27 +103,27 @@ void add_gltf_cameras(const tinygltf::Model& model, const std::vector<PlacedNode
                 skip("has yfov " + num(p.yfov) + " (radians in (0, pi))");
                 continue;
             }
-            if (!(finite(p.znear) && p.znear > 0.0)) {
+            if (!positive(p.znear)) {
                 skip("has znear " + num(p.znear) + " (must be positive)");
                 continue;
             }
-            if (p.zfar != 0.0 && !(finite(p.zfar) && p.zfar > p.znear)) {
+            if (p.zfar != 0.0 && !(finite(p.zfar) && float(p.zfar) > float(p.znear))) {
                 skip("has zfar " + num(p.zfar) + " (must be greater than znear)");
                 continue;
             }
             c.yfov_degrees = float(p.yfov * 180.0 / kPi);
             c.znear = float(p.znear);
             if (p.zfar != 0.0) c.zfar = float(p.zfar);
-            if (finite(p.aspectRatio) && p.aspectRatio > 0.0) c.aspect_ratio = float(p.aspectRatio);
+            if (positive(p.aspectRatio)) c.aspect_ratio = float(p.aspectRatio);
         } else if (g.type == "orthographic") {
             const tinygltf::OrthographicCamera& o = g.orthographic;
             // Section 3.10.3: xmag and ymag not zero (negative ones are read as their size),
             // zfar > znear >= 0.
-            if (!(finite(o.xmag) && finite(o.ymag) && o.xmag != 0.0 && o.ymag != 0.0)) {
+            if (!(positive(std::abs(o.xmag)) && positive(std::abs(o.ymag)))) {
                 skip("has xmag " + num(o.xmag) + ", ymag " + num(o.ymag) + " (must not be zero)");
                 continue;
             }
-            if (!(finite(o.znear) && finite(o.zfar) && o.znear >= 0.0 && o.zfar > o.znear)) {
+            if (!(finite(o.znear) && finite(o.zfar) && o.znear >= 0.0 && float(o.zfar) > float(o.znear))) {
                 skip("has znear " + num(o.znear) + ", zfar " + num(o.zfar) + " (need 0 <= znear < zfar)");
                 continue;
             }
@@ -147,6 +162,10 @@ void add_gltf_lights(const tinygltf::Model& model, const std::vector<PlacedNode>
         const auto skip = [&](const std::string& problem) {
             mesh.warnings.push_back(path + ": light '" + l.name + "' " + problem + "; ignored");
         };
+        if (!usable(l.placement)) {
+            skip("is placed out of range (beyond 1e15)");
+            continue;
+        }
         if (g.type == "directional") {
             l.type = FileLightType::Directional;
         } else if (g.type == "point") {
@@ -172,7 +191,7 @@ void add_gltf_lights(const tinygltf::Model& model, const std::vector<PlacedNode>
         }
         l.intensity = float(g.intensity);
         if (l.type != FileLightType::Directional && g.range != 0.0) {  // tinygltf: 0 = not given
-            if (!(finite(g.range) && g.range > 0.0)) {
+            if (!positive(g.range)) {
                 skip("has range " + num(g.range) + " (must be positive)");
                 continue;
             }

@@ -201,6 +201,28 @@ TEST(GltfSceneCli, FileLightReplacesTheKeyLightAndOthersAreNamedOnce) {
     EXPECT_NE(slurp(dir.file("style.png")), slurp(dir.file("file.png")));
 }
 
+TEST(GltfSceneCli, ViewerStartsAtTheFileCameraWithTheFileLight) {
+    TempDir dir;
+    const std::string model = dir.write("scene.glb", scene_glb());
+    const std::string options = " --camera Side --lights file --shading threejs-lambert --size 160x120";
+    auto view =
+        run_cli("view '" + model + "'" + options + " --hide-gui --frames 3 --screenshot '" + dir.file("shot.png") + "'",
+                "xvfb-run -a -s '-screen 0 640x480x24'");
+    ASSERT_EQ(view.status, 0) << view.err;
+    EXPECT_NE(view.err.find("2 lights; Inkshade shades with one, the first: 'Key' (spot)"), std::string::npos)
+        << view.err;
+    ASSERT_EQ(run_cli("render '" + model + "'" + options + " -o '" + dir.file("render.png") + "'").status, 0);
+    const Image shot = read_png(dir.file("shot.png")), render = read_png(dir.file("render.png"));
+    ASSERT_EQ(shot.width, render.width);
+    ASSERT_EQ(shot.height, render.height);
+    size_t same = 0;
+    for (size_t i = 0; i < shot.rgba.size(); i += 4)
+        same += std::abs(int(shot.rgba[i]) - int(render.rgba[i])) <= 2 &&
+                std::abs(int(shot.rgba[i + 1]) - int(render.rgba[i + 1])) <= 2 &&
+                std::abs(int(shot.rgba[i + 2]) - int(render.rgba[i + 2])) <= 2;
+    EXPECT_GE(double(same) / double(shot.rgba.size() / 4), 0.99);
+}
+
 TEST(GltfSceneCli, InfoListsCamerasAndLights) {
     TempDir dir;
     const std::string model = dir.write("scene.glb", scene_glb());

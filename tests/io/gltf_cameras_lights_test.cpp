@@ -99,12 +99,17 @@ TEST(GltfCameras, BadCameraIsAWarningAndLeftOut) {
         {{"type", "perspective"}, {"name", "Bad"}, {"perspective", {{"yfov", 0.5}, {"znear", 2}, {"zfar", 1}}}}};
     g.node({{"camera", 0}});
     g.node({{"camera", 4}});
-    g.scene({0, 1, 2});
+    g.doc["cameras"].push_back({{"type", "orthographic"},
+                                {"name", "Far"},
+                                {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0}, {"zfar", 1}}}});
+    g.node({{"camera", 1}, {"translation", {1e30, 0, 0}}});
+    g.scene({0, 1, 2, 3});
     const Mesh m = io::read_gltf(dir.write("bad.glb", g.glb()));
     EXPECT_TRUE(m.cameras.empty());
     EXPECT_EQ(m.triangle_count(), 1u);
     EXPECT_TRUE(has_warning(m, "camera 'Bad' has zfar 1 (must be greater than znear); ignored"));
-    EXPECT_TRUE(has_warning(m, "node 2 refers to camera 4 but the file has 1; ignored"));
+    EXPECT_TRUE(has_warning(m, "node 2 refers to camera 4 but the file has 2; ignored"));
+    EXPECT_TRUE(has_warning(m, "camera 'Far' is placed out of range (beyond 1e15); ignored"));
 }
 
 TEST(GltfLights, PunctualLightsAreReadWithTheirNodes) {
