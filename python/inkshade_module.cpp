@@ -23,9 +23,9 @@ namespace {
 // The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
 // with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
 const std::vector<std::string> kSceneKeywords = {
-    "size",         "azimuth",    "elevation",   "distance",     "eye",        "target", "up",
-    "up_axis",      "fov",        "ortho",       "ortho_height", "near",       "far",    "light_pos",
-    "light_target", "light_type", "light_color", "ambient",      "base_color", "srgb"};
+    "size",        "azimuth", "elevation",    "distance", "eye",    "target",    "up",           "up_axis",
+    "fov",         "ortho",   "ortho_height", "near",     "far",    "light_pos", "light_target", "light_type",
+    "light_color", "ambient", "base_color",   "srgb",     "camera", "lights"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -104,7 +104,14 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             r.base_color = glm::vec3(to_color(key, value, false));
         else if (key == "srgb")
             r.srgb = value.cast<bool>();
+        else if (key == "camera")
+            r.file_camera =
+                py::isinstance<py::int_>(value) ? std::to_string(value.cast<long long>()) : value.cast<std::string>();
+        else if (key == "lights")
+            r.lights = parse_light_source(key, value.cast<std::string>());
     }
+    // Without a size, the image takes a file camera's aspect (as the CLI without --size).
+    r.size_from_camera = !kwargs.contains("size") || kwargs["size"].is_none();
     return r;
 }
 
@@ -147,8 +154,9 @@ public:
         renderer_.set_mesh(mesh_);
         extractor_ = std::make_unique<LineExtractor>(mesh_);
     }
-    py::array_t<uint8_t> render(const Scene& scene) {
+    py::array_t<uint8_t> render(Scene scene) {
         need_mesh();
+        place(scene);
         const Camera camera = scene.frame(mesh_.bounds());
         const Light light = scene.light(mesh_.bounds(), camera);
         Image image;
@@ -158,14 +166,20 @@ public:
         }
         return to_array(std::move(image));
     }
-    LineDrawing lines(const Scene& scene) {
+    LineDrawing lines(Scene scene) {
         need_mesh();
+        place(scene);
         py::gil_scoped_release release;
         return draw_scene_lines(*extractor_, scene, scene.frame(mesh_.bounds()));
     }
     std::string gl_renderer() const { return renderer_.gl_renderer(); }
 
 private:
+    // The mesh's camera and light as camera= and lights= ask; warnings as Python warnings.
+    void place(Scene& scene) const {
+        for (const std::string& w : scene.apply_file_scene(mesh_))
+            if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+    }
     void need_mesh() const {
         if (!extractor_) throw InputError("no mesh: call set_mesh(load_mesh(path)) first");
     }
@@ -207,6 +221,22 @@ PYBIND11_MODULE(inkshade, m) {
                               std::array<float, 3>{b.max.x, b.max.y, b.max.z});
             })
         .def_readonly("warnings", &Mesh::warnings)
+        .def_property_readonly(
+            "cameras",
+            [](const Mesh& mesh) {
+        std::vector<std::string> names;
+        for (const FileCamera& c : mesh.cameras) names.push_back(c.name);
+        return names;
+            },
+            "The file's camera names, in the order camera=INDEX counts them (glTF cameras).")
+        .def_property_readonly(
+            "lights",
+            [](const Mesh& mesh) {
+        std::vector<std::string> names;
+        for (const FileLight& l : mesh.lights) names.push_back(l.name);
+        return names;
+            },
+            "The file's light names (glTF KHR_lights_punctual); lights=\"file\" uses the first.")
         .def("__repr__", [](const Mesh& mesh) {
             return "<inkshade.Mesh " + std::to_string(mesh.vertex_count()) + " vertices, " +
                    std::to_string(mesh.triangle_count()) + " triangles>";
@@ -248,9 +278,10 @@ PYBIND11_MODULE(inkshade, m) {
         [](const std::string& output_dir, std::optional<std::string> manifest, std::optional<std::string> models,
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
-           int samples, std::optional<py::function> progress) {
+           int samples, const std::string& lights, std::optional<py::function> progress) {
         BatchDefaults defaults;
         defaults.views = views;
+        defaults.lights = parse_light_source("lights", lights);
         defaults.styles.clear();
         for (const auto& s : styles) defaults.styles += (defaults.styles.empty() ? "" : ",") + s;
         std::tie(defaults.width, defaults.height) = size;
@@ -302,7 +333,7 @@ PYBIND11_MODULE(inkshade, m) {
         py::arg("output_dir"), py::kw_only(), py::arg("manifest") = py::none(), py::arg("models") = py::none(),
         py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
         py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
-        py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4,
+        py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("lights") = "style",
         py::arg("progress") = py::none(),
         "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}.");
 

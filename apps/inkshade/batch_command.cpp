@@ -34,6 +34,7 @@ struct BatchArgs {
     bool ortho = false;
     std::string up_axis;
     std::optional<float> smooth_angle;
+    std::string lights = "style";
     int samples = 4;
     std::string shard;
     bool force = false, dry_run = false, quiet = false;
@@ -107,6 +108,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.orthographic = a.ortho;
     d.up_axis = shared.camera.up_axis;  // unset: each style's up-axis, else y
     d.smooth_angle = a.smooth_angle;
+    d.lights = parse_light_source("--lights", a.lights);
     return d;
 }
 
@@ -199,8 +201,8 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--models", args->models, "instead of a manifest: every model file under DIR (recursively)");
     cmd->add_option("-o,--out,--output", args->output, "output directory (created when missing)");
     cmd->add_option("--views", args->views,
-                    "views where the manifest gives none: orbitAxE, turntable:N[:EL], AZ:EL[:DIST], "
-                    "'eye=X,Y,Z target=X,Y,Z' (explicit cameras separated by ';')")
+                    "views where the manifest gives none: orbitAxE, turntable:N[:EL], AZ:EL[:DIST], camera=NAME "
+                    "(the model file's camera), 'eye=X,Y,Z target=X,Y,Z' (explicit cameras separated by ';')")
         ->capture_default_str();
     cmd->add_option("--styles", args->styles, "styles where the manifest gives none, comma-separated")
         ->capture_default_str();
@@ -216,6 +218,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--smooth-angle", args->smooth_angle,
                     "auto-smooth angle in degrees for models without normals where the manifest gives none "
                     "(default: the style's, else 30)");
+    cmd->add_option("--lights", args->lights,
+                    "style or file (the model file's glTF light) where the manifest gives none")
+        ->capture_default_str();
     cmd->add_option("--samples", args->samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");

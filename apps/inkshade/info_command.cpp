@@ -1,8 +1,11 @@
 // `inkshade info MODEL`: facts about a mesh as loaded, duplicate faces kept (they are counted).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
+#include <string>
 
 #include "commands.hpp"
 #include "geometry/mesh_stats.hpp"
@@ -19,6 +22,58 @@ size_t texture_count(const Mesh& mesh) {
     for (const Material& m : mesh.materials)
         if (m.texture) textures.insert(m.texture.get());
     return textures.size();
+}
+
+// "0.1", or `absent` for a value the file leaves out (a far plane, range, aspect ratio).
+std::string number_or(const std::optional<float>& v, const char* absent) {
+    if (!v) return absent;
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", *v);
+    return buf;
+}
+
+// A vector as "x y z", rounding away the float noise of rotations (-2.2e-16 reads 0).
+std::string vec3_text(const glm::vec3& v) {
+    char buf[96];
+    const auto clean = [](float x) { return std::abs(x) < 1e-6f ? 0.0f : x; };
+    std::snprintf(buf, sizeof buf, "%g %g %g", clean(v.x), clean(v.y), clean(v.z));
+    return buf;
+}
+
+// One line per camera, as `--camera` takes them: index, name, projection, placement.
+void print_cameras(const Mesh& mesh) {
+    std::printf("cameras:              %zu\n", mesh.cameras.size());
+    for (size_t i = 0; i < mesh.cameras.size(); ++i) {
+        const FileCamera& c = mesh.cameras[i];
+        const NodePlacement& p = c.placement;
+        if (c.orthographic)
+            std::printf("  %zu '%s': orthographic, xmag %g, ymag %g", i, c.name.c_str(), c.xmag, c.ymag);
+        else
+            std::printf("  %zu '%s': perspective, yfov %g deg, aspect %s", i, c.name.c_str(), c.yfov_degrees,
+                        number_or(c.aspect_ratio, "of the image").c_str());
+        std::printf(", znear %g, zfar %s; at %s looking %s, up %s\n", c.znear, number_or(c.zfar, "infinite").c_str(),
+                    vec3_text(p.position).c_str(), vec3_text(p.forward).c_str(), vec3_text(p.up).c_str());
+    }
+}
+
+// One line per light (KHR_lights_punctual), in the extension's units.
+void print_lights(const Mesh& mesh) {
+    std::printf("lights:               %zu\n", mesh.lights.size());
+    for (size_t i = 0; i < mesh.lights.size(); ++i) {
+        const FileLight& l = mesh.lights[i];
+        const NodePlacement& p = l.placement;
+        const char* type = l.type == FileLightType::Directional ? "directional"
+                           : l.type == FileLightType::Point     ? "point"
+                                                                : "spot";
+        std::printf("  %zu '%s': %s, colour %s, intensity %g %s", i, l.name.c_str(), type, vec3_text(l.color).c_str(),
+                    l.intensity, l.type == FileLightType::Directional ? "lux" : "cd");
+        if (l.type != FileLightType::Directional)
+            std::printf(", range %s, at %s", number_or(l.range, "infinite").c_str(), vec3_text(p.position).c_str());
+        if (l.type == FileLightType::Spot)
+            std::printf(", cone %g..%g deg", glm::degrees(l.inner_cone_angle), glm::degrees(l.outer_cone_angle));
+        if (l.type != FileLightType::Point) std::printf(", shining %s", vec3_text(p.forward).c_str());
+        std::printf("\n");
+    }
 }
 
 }  // namespace
@@ -55,6 +110,11 @@ Command add_info_command(CLI::App& app) {
         std::printf("textures:             %zu\n", texture_count(mesh));
         std::printf("texture coordinates:  %s\n", mesh.uvs.empty() ? "no" : "yes");
         std::printf("vertex colours:       %s\n", mesh.colors.empty() ? "no" : "yes");
+        const size_t unlit = size_t(
+            std::count_if(mesh.materials.begin(), mesh.materials.end(), [](const Material& m) { return m.unlit; }));
+        if (unlit > 0) std::printf("unlit materials:      %zu\n", unlit);
+        print_cameras(mesh);
+        print_lights(mesh);
         std::printf("load time:            %.1f ms\n", load_ms);
         return 0;
     };

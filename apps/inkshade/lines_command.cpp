@@ -79,11 +79,12 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
-    const Scene scene = make_scene(request);
+    Scene scene = make_scene(request);
 
     const auto load_start = std::chrono::steady_clock::now();
     Mesh mesh = load_mesh(scene.model, scene.load_options());
     print_mesh_warnings(mesh);
+    print_warnings(scene.apply_file_scene(mesh));
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const Camera camera = scene.frame(mesh.bounds());

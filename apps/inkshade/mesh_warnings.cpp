@@ -6,8 +6,10 @@
 
 namespace inkshade::cli {
 
-void print_mesh_warnings(const Mesh& mesh) {
-    for (std::string line : mesh.warnings) {
+void print_mesh_warnings(const Mesh& mesh) { print_warnings(mesh.warnings); }
+
+void print_warnings(const std::vector<std::string>& warnings) {
+    for (std::string line : warnings) {
         std::replace(line.begin(), line.end(), '\n', ' ');  // one line each, whatever the file held
         std::fprintf(stderr, "inkshade: warning: %s\n", line.c_str());
     }

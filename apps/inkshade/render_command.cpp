@@ -40,7 +40,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     if (!args.save_style.empty()) check_output_path("--save-style", args.save_style);
     SceneRequest request = args.scene.to_request(cmd, args.scene_file);
     request.added_lines = split_names(args.lines).value_or(std::vector<std::string>{});
-    const Scene scene = make_scene(request);
+    Scene scene = make_scene(request);
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     if (format == ImageFormat::Jpeg && scene.options.background.a < 1.0f)
         throw InputError(args.output + ": JPEG has no transparency; write .png for a transparent background");
@@ -48,6 +48,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const auto load_start = std::chrono::steady_clock::now();
     Mesh mesh = load_mesh(scene.model, scene.load_options());
     print_mesh_warnings(mesh);
+    print_warnings(scene.apply_file_scene(mesh));
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();

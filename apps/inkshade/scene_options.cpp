@@ -36,10 +36,17 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
                    "orthographic view height in world units (default: framed to the model)");
     cmd.add_option("--near", c.near_plane, "near clipping plane distance (default: fitted to the model)");
     cmd.add_option("--far", c.far_plane, "far clipping plane distance (default: fitted to the model)");
+    cmd.add_option("--camera", r.file_camera,
+                   "view through a camera of the model file (glTF), by name or index (`inkshade info` lists them); "
+                   "without --size the image takes its aspect ratio");
     cmd.add_option("--light-pos", light_pos, "light position x,y,z (world; default above-left of the camera)");
     cmd.add_option("--light-target", light_target,
                    "point a directional light shines towards, x,y,z (default: the model centre)");
     cmd.add_option("--light-type", light_type, "directional (from position to the model centre) or point")
+        ->capture_default_str();
+    cmd.add_option("--lights", lights,
+                   "style (the style's key light, placed by the options above) or file (the model file's first "
+                   "glTF KHR_lights_punctual light)")
         ->capture_default_str();
     cmd.add_option("--light-color", light_color, "light colour E (default 0.9 grey)");
     cmd.add_option("--ambient", ambient, "ambient colour A (default 0.1 grey)");
@@ -65,6 +72,8 @@ SceneRequest SceneOptions::to_request(const CLI::App& cmd, const std::string& sc
     if (!up.empty()) r.camera.up = parse_vec3("--up", up);
     if (!up_axis.empty()) r.camera.up_axis = parse_up_axis("--up-axis", up_axis);
     r.light_type = parse_light_type("--light-type", light_type);
+    r.lights = parse_light_source("--lights", lights);
+    r.size_from_camera = cmd.count("--size") == 0;
     if (!light_pos.empty()) r.light_position = parse_vec3("--light-pos", light_pos);
     if (!light_target.empty()) r.light_target = parse_vec3("--light-target", light_target);
     if (!light_color.empty()) r.light_color = glm::vec3(parse_color("--light-color", light_color));

@@ -195,7 +195,12 @@ void Viewer::report(const std::string& message, bool error) {
 bool Viewer::open_model(const std::string& path) {
     try {
         Mesh mesh = load_mesh(path, scene_.load_options());
+        // The file's camera and light as --camera and --lights ask, for each model opened.
+        Scene placed = scene_;
+        const std::vector<std::string> warnings = placed.apply_file_scene(mesh);
         renderer_->set_mesh(mesh);
+        scene_ = std::move(placed);
+        for (const std::string& w : warnings) report(w, false);
         mesh_ = std::move(mesh);
         box_ = mesh_.bounds();
         model_path_ = model_field_ = path;
@@ -414,10 +419,12 @@ void Viewer::draw_gui() {
         bool moved = ImGui::SliderFloat("light x", &p.x, c.x - r, c.x + r);
         moved |= ImGui::SliderFloat("light y", &p.y, c.y - r, c.y + r);
         moved |= ImGui::SliderFloat("light z", &p.z, c.z - r, c.z + r);
-        if (moved) scene_.light_position = p, dirty_ = true;
+        // Moving the light or changing its type turns a file's light (--lights file) into the key light.
+        if (moved) scene_.light_position = p, scene_.file_light.reset(), dirty_ = true;
         bool point = scene_.light_type == LightType::Point;
         if (ImGui::Checkbox("point light", &point))
-            scene_.light_type = point ? LightType::Point : LightType::Directional, dirty_ = true;
+            scene_.light_type = point ? LightType::Point : LightType::Directional, scene_.file_light.reset(),
+            dirty_ = true;
         glm::vec3 lc = scene_.style.light_color.value_or(light_.color),
                   amb = scene_.style.ambient.value_or(light_.ambient);
         if (ImGui::ColorEdit3("light colour", &lc.x)) scene_.style.light_color = lc, dirty_ = true;
@@ -457,7 +464,7 @@ void Viewer::run_script_command(const ScriptCommand& c) {
                 report(e.what(), true);
             }
             break;
-        case ScriptCommand::LightPos: scene_.light_position = c.vector, dirty_ = true; break;
+        case ScriptCommand::LightPos: scene_.light_position = c.vector, scene_.file_light.reset(), dirty_ = true; break;
         case ScriptCommand::Orbit:
             orbit(camera_, c.vector.x, c.vector.y, scene_.camera.up_axis.value_or(UpAxis::PosY)),
                 fit_clip_planes(camera_, box_), dirty_ = true;

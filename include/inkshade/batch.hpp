@@ -19,6 +19,7 @@ namespace inkshade {
 struct BatchView {
     std::string name;  // the file-name part of the job's stem: "az045_el30", "cam1", "front"
     CameraOptions camera;
+    std::string file_camera;  // a camera of the model file instead (SceneRequest::file_camera)
 };
 
 struct BatchOutputs {
@@ -32,9 +33,10 @@ struct BatchJob {
     BatchView view;
     int width = 512, height = 512;
     BatchOutputs outputs;
-    std::string stem;                   // outputs without extension, relative to the output directory
-    std::string source;                 // where the job comes from, for messages: "jobs.csv:7", "--models"
-    std::optional<float> smooth_angle;  // SceneRequest::smooth_angle; unset: the style's, else 30
+    std::string stem;                         // outputs without extension, relative to the output directory
+    std::string source;                       // where the job comes from, for messages: "jobs.csv:7", "--models"
+    std::optional<float> smooth_angle;        // SceneRequest::smooth_angle; unset: the style's, else 30
+    LightSource lights = LightSource::Style;  // File: the model file's light (SceneRequest::lights)
 };
 
 // What a manifest line (or --models) leaves out.
@@ -47,6 +49,7 @@ struct BatchDefaults {
     bool orthographic = false;
     std::optional<UpAxis> up_axis;      // the models' up axis (CameraOptions::up_axis); unset: the style's
     std::optional<float> smooth_angle;  // auto-smooth angle (SceneRequest::smooth_angle)
+    LightSource lights = LightSource::Style;
 };
 
 // A view list: items separated by ',' or ';' —
@@ -54,10 +57,12 @@ struct BatchDefaults {
 //                     orbit8x3 = 24 views at elevations 0, 30, 60
 //   turntable:N[:EL]  N azimuths i*360/N at elevation EL (default 20)
 //   AZ:EL[:DIST]      one orbit view (degrees; distance in world units, default auto-framed)
+//   camera=NAME       the model file's camera NAME (or index; glTF), as `render --camera`
 // and, separated from other items by ';' only (its vectors hold commas), an explicit camera
 //   eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]   (target default: the model centre)
 // Views are named azAAA_elEE[_dD] (azimuth zero-padded to 3 digits), explicit cameras camN
-// (N counts them from 1) unless named. Throws InputError("view 'ITEM': problem") for a bad
+// (N counts them from 1) unless named, file cameras camera-NAME (characters other than
+// letters, digits, - _ . as _). Throws InputError("view 'ITEM': problem") for a bad
 // item, and for a duplicate name or an empty list.
 std::vector<BatchView> parse_views(const std::string& text);
 
@@ -69,7 +74,7 @@ std::string model_name(const std::string& model);
 // be double-quoted) or JSON Lines (one object per line). The format is chosen by the extension
 // of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
 // Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
-// name, views (or view), styles (or style), size, format, fov, ortho, up-axis, output;
+// name, views (or view), styles (or style), size, format, fov, ortho, up-axis, lights, output;
 // docs/cli.md#batch.
 // Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
 // Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two

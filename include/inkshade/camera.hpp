@@ -65,7 +65,13 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& options, float 
 // frame_camera sets them (used again after the camera moved).
 void fit_clip_planes(Camera& camera, const BoundingBox& box);
 
-enum class LightType { Directional, Point };
+// Spot: a point light whose cone points from position to target (a model file's light).
+enum class LightType { Directional, Point, Spot };
+
+// Whose light shines on the model: the style's key light, placed by the light options
+// (default_light), or the model file's first light (glTF KHR_lights_punctual, FileLight;
+// Inkshade shades with one light).
+enum class LightSource { Style, File };
 
 struct Light {
     LightType type = LightType::Directional;
@@ -73,6 +79,15 @@ struct Light {
     glm::vec3 target{0.0f};
     glm::vec3 color{0.9f};
     glm::vec3 ambient{0.1f};
+    // Spot cone: full light within cos_inner of the axis, none outside cos_outer, smoothstep
+    // between (three.js getSpotAttenuation; KHR_lights_punctual inner and outer cone angles).
+    float cos_inner = 1.0f, cos_outer = 0.0f;
+    // Point and spot lights: colour x 1 / max(d^2, 0.01) x window(d / range), three.js's
+    // physically correct falloff (decay 2; range 0: no window), for the models that shade in
+    // physical light units with their own intensity-free light colour (mtoon's threejs
+    // convention). Off: the colour reaches every point as it is.
+    bool inverse_square = false;
+    float range = 0.0f;
     // Unit vector towards the light at world point p (l in the shading formulas, docs/shading.md).
     glm::vec3 direction_to_light(const glm::vec3& p) const;
 };

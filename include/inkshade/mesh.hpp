@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "inkshade/file_scene.hpp"
+
 namespace inkshade {
 
 // A decoded base-colour texture (glTF baseColorTexture, MTL map_Kd, PLY `comment TextureFile`).
@@ -39,6 +41,9 @@ struct Material {
     // 2 screen), outline-width, outline-color (3), outline-lighting-mix, gi-equalization.
     // Colours linear. Empty = not an MToon material.
     std::map<std::string, std::vector<float>> mtoon;
+    // glTF KHR_materials_unlit: drawn in its base colour (x texture x vertex colour) without
+    // lighting, whatever the shading model.
+    bool unlit = false;
 };
 
 struct BoundingBox {
@@ -65,6 +70,10 @@ struct Mesh {
     std::vector<uint32_t> face_materials;  // per triangle index into materials; may be empty
     bool welded = false;                   // true when duplicate positions were merged
     std::vector<std::string> warnings;     // "FILE: problem" lines for the user (e.g. a texture not loaded)
+    // The file's cameras and lights in scene order (glTF; empty for other formats), in the
+    // coordinates of `positions`.
+    std::vector<FileCamera> cameras;
+    std::vector<FileLight> lights;
 
     bool has_hard_edges() const { return !triangles.empty() && shading_normal_ids.size() == triangles.size(); }
     size_t vertex_count() const { return positions.size(); }

@@ -48,6 +48,15 @@ struct SceneRequest {
 
     glm::ivec2 size{1024, 1024};
     CameraOptions camera;  // what is unset is auto-framed (frame_camera)
+    // A camera of the model file instead of the camera options, which are then left unset: its
+    // name, or its index in the order `inkshade info` lists the file's cameras. Empty: none.
+    std::string file_camera;
+    // With a file camera, the image takes the camera's aspect ratio (perspective aspectRatio,
+    // orthographic xmag / ymag), its longer side that of `size`; front ends turn this on when
+    // no size is given. Off, or a camera without one: `size` as it is, the camera's vertical
+    // extent kept.
+    bool size_from_camera = false;
+    LightSource lights = LightSource::Style;  // File: the light options are left unset
     LightType light_type = LightType::Directional;
     std::optional<glm::vec3> light_position;  // default: above-left of the camera (default_light)
     std::optional<glm::vec3> light_target;    // default: the model centre
@@ -75,6 +84,18 @@ struct Scene {
     std::optional<glm::vec3> light_position, light_target;
     float smooth_angle = LoadOptions{}.smooth_angle;
     OptionNames names = OptionNames::Cli;  // for the light's error
+    std::string file_camera;               // as requested; apply_file_scene makes it `camera`
+    bool size_from_camera = false;
+    LightSource lights = LightSource::Style;
+    std::optional<FileLight> file_light;  // the file's light in use (apply_file_scene)
+
+    // Takes what the request asks of the loaded model file: its camera becomes the camera
+    // options (placement, projection, near and far; the image's aspect with size_from_camera)
+    // and its first light replaces the key light. Call it once the model is loaded, before
+    // frame and light; it does nothing for a request that asks neither. Returns warnings for the
+    // user ("FILE: ..."). Throws InputError naming the option: a camera the file does not have
+    // (with the file's cameras), a file without cameras or without lights.
+    std::vector<std::string> apply_file_scene(const Mesh& mesh);
 
     // How to load the scene's model: load_mesh(scene.model, scene.load_options()).
     LoadOptions load_options() const;
@@ -84,8 +105,12 @@ struct Scene {
     Camera frame(const BoundingBox& box) const;
     Camera frame(const BoundingBox& box, float aspect) const;
     // The light for that camera: the default key light with the request's type, position and
-    // target, and the style's colours.
+    // target, and the style's colours; or the file's light (apply_file_scene) as the shading
+    // model takes it (docs/inputs.md, "Cameras and lights").
     Light light(const BoundingBox& box, const Camera& camera) const;
+    // The style's shading, with a file light's intensity, range and decay in the parameters of
+    // a model that takes them (the threejs-* models' light-intensity, light-distance, light-decay).
+    ShadingSelection shading() const;
 };
 
 // Checks every value of the request and resolves its style. Throws InputError naming the
@@ -116,10 +141,11 @@ LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const
 
 // The values of command-line options and manifest columns as text; each throws InputError
 // naming `option`. Python and the library pass typed values instead.
-glm::ivec2 parse_image_size(const std::string& option, const std::string& text);  // "WxH"
-glm::vec3 parse_vec3(const std::string& option, const std::string& text);         // "x,y,z"
-glm::vec4 parse_color(const std::string& option, const std::string& text);        // parse_color
-LightType parse_light_type(const std::string& option, const std::string& text);   // directional|point
-UpAxis parse_up_axis(const std::string& option, const std::string& text);         // x|y|z|-x|-y|-z
+glm::ivec2 parse_image_size(const std::string& option, const std::string& text);     // "WxH"
+glm::vec3 parse_vec3(const std::string& option, const std::string& text);            // "x,y,z"
+glm::vec4 parse_color(const std::string& option, const std::string& text);           // parse_color
+LightType parse_light_type(const std::string& option, const std::string& text);      // directional|point
+LightSource parse_light_source(const std::string& option, const std::string& text);  // style|file
+UpAxis parse_up_axis(const std::string& option, const std::string& text);            // x|y|z|-x|-y|-z
 
 }  // namespace inkshade

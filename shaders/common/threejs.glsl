@@ -20,10 +20,11 @@ float threejs_distance_attenuation(float d) {
     return falloff;
 }
 
-// The direct light's colour at p as three.js's directLight.color: E, attenuated for a point light.
+// The direct light's colour at p as three.js's directLight.color: E, attenuated for a point or
+// spot light, and a spot light's cone.
 vec3 threejs_direct_light(vec3 p) {
     vec3 e = u_light_color * u_light_intensity;
-    return u_light_type == 1 ? e * threejs_distance_attenuation(length(u_light_pos - p)) : e;
+    return u_light_type != 0 ? e * threejs_distance_attenuation(length(u_light_pos - p)) * spot_attenuation(p) : e;
 }
 
 vec3 threejs_ambient() { return u_ambient * u_ambient_intensity; }

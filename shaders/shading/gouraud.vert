@@ -31,6 +31,9 @@ void main() {
     vec3 mesh_color = a_color;
 #endif
     v_color = u_base_color * mesh_color * (u_light_color * lambert(n, l) + u_ambient);
+#ifdef INKSHADE_UNLIT
+    if (u_unlit == 1) v_color = mesh_color;  // as it is: common/shading_main.glsl multiplies the base
+#endif
     v_object_pos = a_position;
 #ifdef INKSHADE_BASE_TEXTURE
     v_uv = a_uv;

@@ -34,7 +34,7 @@ void shade() {
     float ndotl = clamp(dot(s.n, s.l), -1.0, 1.0);
     float t = linearstep(-1.0 + u_shading_toony, 1.0 - u_shading_toony, ndotl + u_shading_shift);
     t *= shadow_visibility(s.p, s.n, s.l, u_shadow_softness);
-    vec3 E = u_light_color * k, A = u_ambient * k;
+    vec3 E = u_light_color * light_attenuation(s.p) * k, A = u_ambient * k;
     vec3 direct = E * mix(u_shade_color, s.albedo, t);
     vec3 gi = A * s.albedo;
     float fresnel = pow(max(clamp(1.0 - dot(s.n, s.v) + u_rim_lift, 0.0, 1.0), 1e-6), u_rim_fresnel_power);

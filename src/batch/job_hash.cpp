@@ -47,6 +47,8 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     // Only a model that is not y-up adds to the text, so earlier jobs keep their hashes.
     if (c.up_axis && *c.up_axis != UpAxis::PosY) text += " up-axis=" + std::to_string(int(*c.up_axis));
     if (job.smooth_angle) text += " smooth-angle=" + number(*job.smooth_angle);
+    if (!job.view.file_camera.empty()) text += " camera=" + job.view.file_camera;
+    if (job.lights == LightSource::File) text += " lights=file";
     text += "\n";
     text += "size=" + std::to_string(job.width) + "x" + std::to_string(job.height) +
             " samples=" + std::to_string(samples) + " png=" + (job.outputs.png ? "1" : "0") +

@@ -92,6 +92,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.orthographic = d.orthographic;
     g.up_axis = d.up_axis;
     g.smooth_angle = d.smooth_angle;
+    g.lights = d.lights;
     return g;
 }
 
@@ -117,8 +118,10 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
     }
     for (const std::string& style : styles) {
         for (BatchView view : views) {
-            view.camera.fov_degrees = group.fov_degrees;
-            view.camera.orthographic = group.orthographic;
+            if (view.file_camera.empty()) {  // a file's camera has its own projection
+                view.camera.fov_degrees = group.fov_degrees;
+                view.camera.orthographic = group.orthographic;
+            }
             view.camera.up_axis = group.up_axis;
             BatchJob job;
             job.model = group.model;
@@ -126,6 +129,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.width = group.width;
             job.height = group.height;
             job.outputs = group.outputs;
+            job.lights = group.lights;
             job.stem = group.output.empty() ? name + "/" + style_stem_name(style) + "/" + view.name : group.output;
             job.view = std::move(view);
             job.source = group.source;

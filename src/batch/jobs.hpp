@@ -23,6 +23,7 @@ struct JobGroup {
     bool orthographic = false;
     std::optional<UpAxis> up_axis;
     std::optional<float> smooth_angle;
+    LightSource lights = LightSource::Style;
     std::string source;
 };
 

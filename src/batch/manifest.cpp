@@ -23,9 +23,9 @@ namespace {
 using batch::default_group;
 using batch::JobGroup;
 
-const std::set<std::string> kColumns = {"model",  "name", "views", "view",    "styles",       "style", "size",
-                                        "format", "fov",  "ortho", "up-axis", "smooth-angle", "output"};
-const char* kColumnList = "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, output";
+const std::set<std::string> kColumns = {"model",  "name", "views", "view",    "styles",       "style",  "size",
+                                        "format", "fov",  "ortho", "up-axis", "smooth-angle", "lights", "output"};
+const char* kColumnList = "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -82,6 +82,8 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         if (ec != std::errc() || ptr != value.data() + value.size() || !(v >= 0.0 && v <= 180.0))
             throw InputError("smooth-angle: expected degrees in [0, 180], got " + io::quote_token(value));
         g.smooth_angle = float(v);
+    } else if (key == "lights") {
+        g.lights = parse_light_source("lights", value);
     } else if (key == "ortho") {
         if (value == "true" || value == "1" || value == "yes")
             g.orthographic = true;

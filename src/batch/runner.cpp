@@ -276,9 +276,12 @@ private:
         request.size = {job.width, job.height};
         request.camera = job.view.camera;
         request.smooth_angle = job.smooth_angle;
+        request.file_camera = job.view.file_camera;
+        request.lights = job.lights;
         request.samples = options_.samples;
         request.outputs = {.image = true, .line_drawing = true};
-        const Scene scene = make_scene(request);
+        Scene scene = make_scene(request);
+        scene.apply_file_scene(*model.mesh);  // a bad camera fails the job; its warnings are not kept
         const Camera camera = scene.frame(bounds);
         JobFiles files;
         batch::JobRecord& record = files.record;

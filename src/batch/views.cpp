@@ -18,7 +18,8 @@ namespace {
 constexpr int kMaxViewsPerItem = 3600;
 constexpr float kTurntableElevation = 20.0f;  // the auto-framing default (kDefaultElevation)
 
-const char* kGrammar = "orbitAxE, turntable:N[:EL], AZ:EL[:DIST] or eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]";
+const char* kGrammar =
+    "orbitAxE, turntable:N[:EL], AZ:EL[:DIST], camera=NAME or eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]";
 
 [[noreturn]] void bad(const std::string& item, const std::string& why) {
     throw InputError("view " + io::quote_token(item) + ": " + why);
@@ -151,6 +152,17 @@ BatchView parse_camera_item(const std::string& item, int index) {
     return v;
 }
 
+// camera=NAME: the model file's camera, named camera-NAME in stems.
+BatchView file_camera_view(const std::string& item) {
+    BatchView v;
+    v.file_camera = item.substr(7);
+    if (v.file_camera.empty()) bad(item, "expected camera=NAME or camera=INDEX");
+    v.name = "camera-";
+    for (char c : v.file_camera)
+        v.name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
+    return v;
+}
+
 }  // namespace
 
 std::vector<BatchView> parse_views(const std::string& text) {
@@ -162,6 +174,10 @@ std::vector<BatchView> parse_views(const std::string& text) {
             continue;
         }
         for (const std::string& item : batch::split_list(chunk, ",")) {
+            if (item.starts_with("camera=")) {
+                views.push_back(file_camera_view(item));
+                continue;
+            }
             if (item.find('=') != std::string::npos)
                 bad(item, "an explicit camera starts with eye= and is separated from other views by ';'");
             parse_orbit_item(item, views);

@@ -12,8 +12,9 @@
 // - TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN primitives (3.7.2.1); points and lines skipped;
 // - POSITION, NORMAL, TEXCOORD_n, COLOR_0 in any component type the spec or
 //   KHR_mesh_quantization allows, sparse accessors (3.6.2.3), accessors without a bufferView;
-// - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), VRM 0.x and VRM 1.0
-//   MToon parameters.
+// - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), KHR_materials_unlit,
+//   VRM 0.x and VRM 1.0 MToon parameters;
+// - the nodes' cameras (3.10) and KHR_lights_punctual lights (gltf_cameras_lights.cpp).
 #include <fstream>  // tiny_gltf.h's writers use std::ofstream but include <fstream> only without TINYGLTF_NO_FS
 
 #define TINYGLTF_IMPLEMENTATION
@@ -43,6 +44,7 @@
 #include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "io/file_bytes.hpp"
+#include "io/gltf_cameras_lights.hpp"
 #include "io/readers.hpp"
 #include "io/texture_image.hpp"
 
@@ -494,9 +496,16 @@ struct Instance {
     glm::dmat4 transform;
 };
 
-// Every mesh instance of the scene with its world transform. The hierarchy must be a tree
-// (section 3.5.3): a node reached twice (a cycle or two parents) is an error, never a hang.
-std::vector<Instance> scene_instances(const tinygltf::Model& model, const std::string& path) {
+// What the scene's nodes hold, in depth-first order.
+struct SceneNodes {
+    std::vector<Instance> meshes;
+    std::vector<PlacedNode> cameras_and_lights;  // nodes with a camera or a KHR_lights_punctual light
+};
+
+// Every mesh instance of the scene with its world transform, and the nodes that may carry a
+// camera or a light. The hierarchy must be a tree (section 3.5.3): a node reached twice (a
+// cycle or two parents) is an error, never a hang.
+SceneNodes scene_nodes(const tinygltf::Model& model, const std::string& path) {
     std::vector<int> roots;
     const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
     if (scene >= 0) {
@@ -512,7 +521,7 @@ std::vector<Instance> scene_instances(const tinygltf::Model& model, const std::s
         for (size_t i = 0; i < model.nodes.size(); ++i)
             if (!is_child[i]) roots.push_back(int(i));
     }
-    std::vector<Instance> out;
+    SceneNodes out;
     std::vector<char> visited(model.nodes.size(), 0);
     struct Item {
         int node;
@@ -541,8 +550,10 @@ std::vector<Instance> scene_instances(const tinygltf::Model& model, const std::s
                                            std::to_string(model.meshes.size()));
             // A skinned mesh ignores its node's transform (section 3.7.3.3): in the rest pose its
             // vertices are already where the joints put them.
-            out.push_back({node.mesh, node.skin >= 0 ? glm::dmat4(1.0) : world});
+            out.meshes.push_back({node.mesh, node.skin >= 0 ? glm::dmat4(1.0) : world});
         }
+        if (node.camera >= 0 || node.extensions.count("KHR_lights_punctual"))
+            out.cameras_and_lights.push_back({item.node, world});
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
             stack.push_back({*c, world, item.depth + 1});
     }
@@ -717,6 +728,7 @@ private:
             }
         }
         if (texture >= 0) m.texture = texture_of(texture, m.name);
+        m.unlit = g.extensions.count("KHR_materials_unlit") > 0;
         return m;
     }
 
@@ -996,8 +1008,11 @@ Mesh read_gltf(const std::string& path) {
 
     Mesh mesh;
     MeshBuilder builder(model, path, mesh);
-    for (const Instance& instance : scene_instances(model, path)) builder.add(instance);
+    const SceneNodes nodes = scene_nodes(model, path);
+    for (const Instance& instance : nodes.meshes) builder.add(instance);
     builder.finish();
+    add_gltf_cameras(model, nodes.cameras_and_lights, path, mesh);
+    add_gltf_lights(model, nodes.cameras_and_lights, path, mesh);
     if (mesh.triangles.empty()) {
         if (builder.skipped() > 0)
             throw InputError(path, "no triangles (only point or line primitives: " + std::to_string(builder.skipped()) +

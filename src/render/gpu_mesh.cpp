@@ -126,6 +126,7 @@ void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
     for (Material& m : materials_) {
         m.texture.reset();
         has_material_params_ |= !m.mtoon.empty();
+        has_unlit_materials_ |= m.unlit;
     }
     if (has_face_materials && mesh.uvs.size() == mesh.positions.size()) {
         constexpr size_t kWhite = std::numeric_limits<size_t>::max();
@@ -149,7 +150,7 @@ void GpuMesh::upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& fa
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
-    if (has_face_materials && (textured() || has_material_params_)) {
+    if (has_face_materials && (textured() || has_material_params_ || has_unlit_materials_)) {
         std::vector<uint32_t> order(faces.size());
         std::iota(order.begin(), order.end(), 0u);
         auto key = [&](uint32_t f) {

@@ -107,10 +107,13 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame, const A
     program.set("u_eye", camera.eye);
     program.set("u_view_dir", glm::normalize(camera.target - camera.eye));
     program.set("u_orthographic", camera.orthographic ? 1 : 0);
-    program.set("u_light_type", light.type == LightType::Point ? 1 : 0);
+    program.set("u_light_type", light.type == LightType::Directional ? 0 : light.type == LightType::Point ? 1 : 2);
     program.set("u_light_pos", light.position);
     program.set("u_light_target", light.target);
     program.set("u_light_color", light.color);
+    program.set("u_light_cone", glm::vec2(light.cos_outer, light.cos_inner));
+    program.set("u_light_range", light.range);
+    program.set("u_unlit_srgb", convention == ColorConvention::Linear ? 1 : 0);
     program.set("u_ambient", light.ambient);
     program.set("u_base_color", albedo.base);
     program.set("u_srgb_output", convention == ColorConvention::Linear ? 1 : 0);
@@ -132,10 +135,12 @@ public:
         const bool textured = mesh.textured() && !model.debug_view && c.mesh_colors;
         const bool material_params =
             mesh.has_material_params() && param_on(model, shading.params, "use-material-params");
+        const bool unlit = mesh.has_unlit_materials() && !model.debug_view;
         const SurfaceLines surface_lines{frame.line("rim-contour")};
         // A mesh whose colours are all white needs no variant to leave them out.
         const bool base_color_only = !c.mesh_colors && mesh.has_own_colors();
-        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, base_color_only);
+        gpu::ShaderProgram& program =
+            program_for(model, shading.params, surface_lines, textured, base_color_only, unlit, frame.light);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -160,11 +165,12 @@ public:
         }
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
-        if (textured || material_params) {
+        if (textured || material_params || unlit) {
             program.set("u_base_texture", int(kBaseTextureUnit));
             mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
                 if (material_params)
                     upload_params(program, model, with_material_params(model, shading.params, material));
+                if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
             });
         } else {
             mesh.draw();
@@ -177,11 +183,17 @@ private:
     // `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl). `textured`:
     // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE);
     // `base_color_only`: the one that leaves out the vertex/material colours (BaseColorUse::Only).
+    // `unlit`: the one that draws unlit materials as they are (INKSHADE_UNLIT). A model file's
+    // spot light and physical falloff (common/lighting.glsl) are variants too.
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured, bool base_color_only) {
+                                    bool textured, bool base_color_only, bool unlit, const Light& light) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
         if (base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
+        if (unlit) defines += "#define INKSHADE_UNLIT 1\n";
+        if (light.type == LightType::Spot) defines += "#define INKSHADE_SPOT_LIGHT 1\n";
+        if (light.inverse_square && light.type != LightType::Directional)
+            defines += "#define INKSHADE_INVERSE_SQUARE 1\n";
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
             const ParamValue& v = value_or_default(spec, values);

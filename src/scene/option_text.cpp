@@ -55,4 +55,10 @@ LightType parse_light_type(const std::string& option, const std::string& text) {
     throw InputError(option + ": expected directional or point, got " + io::quote_token(text));
 }
 
+LightSource parse_light_source(const std::string& option, const std::string& text) {
+    if (text == "style") return LightSource::Style;
+    if (text == "file") return LightSource::File;
+    throw InputError(option + ": expected style or file, got " + io::quote_token(text));
+}
+
 }  // namespace inkshade

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "inkshade/error.hpp"
+#include "scene/file_scene.hpp"
 #include "scene/option_name.hpp"
 
 namespace inkshade {
@@ -119,6 +120,39 @@ std::vector<LineSettings> select_vector_lines(const Style& style, const SceneReq
     return out;
 }
 
+// The file's camera places and projects the view, and its light replaces the key light: the
+// options that would do the same are refused beside them rather than ignored.
+void check_file_scene_alternatives(const SceneRequest& r) {
+    auto name = [&](const char* option) { return option_name(r.names, option); };
+    if (!r.file_camera.empty()) {
+        const CameraOptions& o = r.camera;
+        const std::pair<bool, const char*> given[] = {{bool(o.azimuth_degrees), "azimuth"},
+                                                      {bool(o.elevation_degrees), "elevation"},
+                                                      {bool(o.distance), "distance"},
+                                                      {bool(o.eye), "eye"},
+                                                      {bool(o.target), "target"},
+                                                      {bool(o.up), "up"},
+                                                      {o.fov_degrees != CameraOptions{}.fov_degrees, "fov"},
+                                                      {o.orthographic, "ortho"},
+                                                      {bool(o.ortho_height), "ortho-height"},
+                                                      {bool(o.near_plane), "near"},
+                                                      {bool(o.far_plane), "far"}};
+        for (const auto& [set, option] : given)
+            if (set)
+                throw InputError(name("camera") + " and " + name(option) +
+                                 " are alternatives: the file's camera places and projects the view");
+    }
+    if (r.lights == LightSource::File) {
+        const std::pair<bool, const char*> given[] = {{bool(r.light_position), "light-pos"},
+                                                      {bool(r.light_target), "light-target"},
+                                                      {r.light_type != LightType::Directional, "light-type"}};
+        for (const auto& [set, option] : given)
+            if (set)
+                throw InputError(name("lights") + " file and " + name(option) +
+                                 " are alternatives: the file's light is placed by its node");
+    }
+}
+
 }  // namespace
 
 void check_camera_options(const CameraOptions& o, OptionNames names) {
@@ -166,6 +200,7 @@ Scene make_scene(const SceneRequest& r) {
     if (r.smooth_angle && !(*r.smooth_angle >= 0.0f && *r.smooth_angle <= 180.0f))
         throw InputError(name("smooth-angle") + ": expected degrees in [0, 180]");
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
+    check_file_scene_alternatives(r);
 
     Scene scene;
     scene.model = r.model;
@@ -197,6 +232,9 @@ Scene make_scene(const SceneRequest& r) {
     scene.smooth_angle = r.smooth_angle.value_or(scene.style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
     scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
     scene.names = r.names;
+    scene.file_camera = r.file_camera;
+    scene.size_from_camera = r.size_from_camera;
+    scene.lights = r.lights;
     return scene;
 }
 
@@ -207,6 +245,7 @@ Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(opti
 Camera Scene::frame(const BoundingBox& box, float aspect) const { return frame_camera(box, camera, aspect); }
 
 Light Scene::light(const BoundingBox& box, const Camera& cam) const {
+    if (file_light) return file_scene_light(*file_light, style, box);
     Light l = default_light(box, cam);
     l.type = light_type;
     if (light_position) l.position = *light_position;
@@ -220,7 +259,7 @@ Light Scene::light(const BoundingBox& box, const Camera& cam) const {
 
 Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
                    std::vector<PassTiming>* timings) {
-    return renderer.render(camera, light, scene.style.shading, scene.style.lines, scene.options, timings);
+    return renderer.render(camera, light, scene.shading(), scene.style.lines, scene.options, timings);
 }
 
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,

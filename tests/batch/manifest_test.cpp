@@ -104,6 +104,29 @@ TEST(BatchManifest, UpAxisColumnAndDefaultTurnTheViews) {
     EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(y_up, "", -1, 4));
 }
 
+TEST(BatchManifest, LightsColumnAndFileCamerasKeepTheirOwnProjection) {
+    BatchDefaults d;
+    d.fov_degrees = 50.0f;
+    d.orthographic = true;
+    const auto jobs = parse_manifest("model,views,lights\na.glb,camera=Main;20:10,file\nb.glb,,\n", "m.csv", d);
+    ASSERT_EQ(jobs.size(), 3u);
+    EXPECT_EQ(jobs[0].lights, LightSource::File);
+    EXPECT_EQ(jobs[0].view.file_camera, "Main");
+    EXPECT_EQ(jobs[0].view.camera.fov_degrees, CameraOptions{}.fov_degrees);  // the file's camera projects
+    EXPECT_FALSE(jobs[0].view.camera.orthographic);
+    EXPECT_EQ(jobs[1].view.camera.fov_degrees, 50.0f);  // an orbit view takes the line's camera
+    EXPECT_TRUE(jobs[1].view.camera.orthographic);
+    EXPECT_EQ(jobs[2].lights, LightSource::Style);
+    EXPECT_THROW(parse_manifest("model,lights\na.glb,sun\n", "m.csv"), InputError);
+    // Each changes the job's hash; a job with neither hashes as before.
+    BatchJob plain = jobs[0];
+    plain.lights = LightSource::Style;
+    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(plain, "", -1, 4));
+    BatchJob orbit = plain;
+    orbit.view.file_camera.clear();
+    EXPECT_NE(job_hash(plain, "", -1, 4), job_hash(orbit, "", -1, 4));
+}
+
 TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
     // No extension: '{' means JSON Lines, anything else CSV.
     EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);

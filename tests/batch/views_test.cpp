@@ -51,6 +51,17 @@ TEST(BatchViews, ListsMixItemsAndExplicitCameras) {
     EXPECT_EQ(views[3].camera.target.value(), glm::vec3(1, 0, 0));
 }
 
+TEST(BatchViews, FileCamerasAreNamedForTheirCameras) {
+    const auto views = parse_views("camera=Main, 35:20; camera=0;camera=Side cam/2");
+    EXPECT_EQ(names(views), (std::vector<std::string>{"camera-Main", "az035_el20", "camera-0", "camera-Side_cam_2"}));
+    EXPECT_EQ(views[0].file_camera, "Main");
+    EXPECT_FALSE(views[0].camera.eye.has_value());
+    EXPECT_EQ(views[1].file_camera, "");
+    EXPECT_EQ(views[3].file_camera, "Side cam/2");
+    EXPECT_THROW(parse_views("camera="), InputError);
+    EXPECT_THROW(parse_views("camera=a,camera=a"), InputError);  // one name twice
+}
+
 TEST(BatchViews, BadListsAreOneLineInputErrors) {
     for (const std::string bad : {"",
                                   " ; ",

@@ -171,6 +171,60 @@ class ModuleTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "exactly one of"):
             inkshade.batch("/tmp/x")
 
+    def test_gltf_camera_and_lights_are_the_clis(self):
+        """camera= and lights= as `inkshade render --camera --lights file` and a batch view camera=NAME."""
+        import base64
+        import json
+        import warnings
+        positions = [-1, -1, 0, 1, -1, 0, 0, 1, 0.5]
+        data = struct.pack("<9f", *positions)
+        doc = {
+            "asset": {"version": "2.0"},
+            "buffers": [{"byteLength": len(data),
+                         "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+            "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [-1, -1, 0], "max": [1, 1, 0.5]}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "cameras": [{"type": "perspective", "name": "Cam",
+                         "perspective": {"yfov": 0.8, "aspectRatio": 2.0, "znear": 0.1}}],
+            "extensions": {"KHR_lights_punctual": {"lights": [
+                {"type": "point", "name": "Lamp", "intensity": 20}, {"type": "directional", "name": "Fill"}]}},
+            "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.5, 0.2, 4]},
+                      {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 0, 2]},
+                      {"extensions": {"KHR_lights_punctual": {"light": 1}}}],
+            "scenes": [{"nodes": [0, 1, 2, 3]}], "scene": 0}
+        with tempfile.TemporaryDirectory() as tmp:
+            model = os.path.join(tmp, "scene.gltf")
+            with open(model, "w") as f:
+                json.dump(doc, f)
+            mesh = inkshade.load_mesh(model)
+            self.assertEqual(mesh.cameras, ["Cam"])
+            self.assertEqual(mesh.lights, ["Lamp", "Fill"])
+            renderer = inkshade.Renderer()
+            renderer.set_mesh(mesh)
+            png = os.path.join(tmp, "cli.png")
+            self.cli("render", model, "--camera", "Cam", "--lights", "file", "--style", "threejs-lambert",
+                     "--size", "512x256", "-o", png)
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                image = renderer.render("threejs-lambert", camera="Cam", lights="file")  # aspect 2: 512x256
+            self.assertEqual([str(w.message) for w in caught],
+                             ["the mesh: 2 lights; Inkshade shades with one, the first: 'Lamp' (point)"])
+            np.testing.assert_array_equal(image, read_png(png))
+            self.assertEqual(renderer.render("lambert", camera=0, size=(64, 64)).shape, (64, 64, 4))
+            with self.assertRaisesRegex(ValueError, "^camera: the mesh has no camera 'cma' "
+                                        r"\(did you mean 'Cam'\?\); its cameras: 0 'Cam'$"):
+                renderer.render("lambert", camera="cma")
+            with self.assertRaisesRegex(ValueError, "^camera and fov are alternatives"):
+                renderer.render("lambert", camera="Cam", fov=20)
+            self.cli("render", model, "--camera", "Cam", "--size", "512x512", "-o", png)
+            summary = inkshade.batch(os.path.join(tmp, "out"), models=tmp, views="camera=Cam")
+            self.assertEqual(summary["done"], 1)
+            with open(os.path.join(tmp, "out", "scene", "lambert", "camera-Cam.png"), "rb") as f, \
+                    open(png, "rb") as g:
+                self.assertEqual(f.read(), g.read())
+
     def test_bad_input_raises_value_error(self):
         with self.assertRaisesRegex(ValueError, "nope.obj"):
             inkshade.load_mesh("/nope.obj")
