@@ -8,7 +8,8 @@
 // n.v = 0 contour: constant width in pixels whatever the curvature. Near a fold contour n.v
 // grows like the square root of the distance to it, so (n.v)^2 is the linear one:
 // distance = (n.v)^2 / |grad (n.v)^2| = |n.v| / (2 |grad n.v|) (a Newton step).
-// n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl).
+// n is the interpolated normal turned towards the viewer on back faces (seen_normal, as
+// common/surface.glsl).
 // Reads common/surface.glsl's v_world_pos and v_world_normal (it is included from there).
 #include "common/lighting.glsl"
 
@@ -20,9 +21,8 @@ uniform float u_rim_contour_width;  // pixels, compensated mode
 
 // `shaded` with the rim line mixed over it.
 vec3 rim_contour(vec3 shaded) {
-    vec3 n = normalize(v_world_normal);
-    if (!gl_FrontFacing) n = -n;
-    float ndotv = dot(n, to_viewer(v_world_pos));
+    vec3 v = to_viewer(v_world_pos);
+    float ndotv = dot(seen_normal(normalize(v_world_normal), v, gl_FrontFacing), v);
     float grad = max(length(vec2(dFdx(ndotv), dFdy(ndotv))), 1e-6);
 #if INKSHADE_RIM_COMPENSATE
     float coverage = clamp(u_rim_contour_width - 0.5 * abs(ndotv) / grad + 0.5, 0.0, 1.0);
