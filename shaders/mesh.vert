@@ -18,6 +18,7 @@ out float v_kr;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform mat3 u_normal_matrix;
+#include "common/back_face_push.glsl"
 
 out vec3 v_world_pos;
 out vec3 v_world_normal;
@@ -40,5 +41,5 @@ void main() {
 #ifdef INKSHADE_RADIAL_CURVATURE
     v_kr = a_kr;
 #endif
-    gl_Position = u_view_proj * world;
+    gl_Position = pushed_back(u_view_proj * world);
 }

@@ -65,6 +65,12 @@ float light_attenuation(vec3 p) {
 float light_attenuation(vec3 p) { return 1.0; }
 #endif
 
+// The unit normal n of the side the viewer sees (two-sided lighting, docs/shading.md): on a back
+// face (front_facing = gl_FrontFacing false) turned towards the viewer v, unless it already
+// faces v: a triangle wound against its neighbours, whose vertex normals follow the surface,
+// is lit as the surface around it instead of as a dark speck.
+vec3 seen_normal(vec3 n, vec3 v, bool front_facing) { return (!front_facing && dot(n, v) < 0.0) ? -n : n; }
+
 vec3 srgb_encode(vec3 c) {
     vec3 lo = 12.92 * c;
     vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;

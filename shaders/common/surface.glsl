@@ -30,7 +30,7 @@ vec3 normalized_object_pos() {
 
 struct Surface {
     vec3 p;       // world position
-    vec3 n;       // unit normal, flipped towards the viewer on back faces (two-sided)
+    vec3 n;       // unit normal, turned towards the viewer on back faces (two-sided, seen_normal)
     vec3 v;       // unit vector towards the viewer
     vec3 l;       // unit vector towards the light
     vec3 albedo;  // C = base colour x vertex/material colour x texture
@@ -39,10 +39,9 @@ struct Surface {
 Surface surface() {
     Surface s;
     s.p = v_world_pos;
-    s.n = normalize(v_world_normal);
-    // Back faces of open meshes are lit as seen (no inside-out rim glow or lighting).
-    if (!gl_FrontFacing) s.n = -s.n;
     s.v = to_viewer(s.p);
+    // Back faces of open meshes are lit as seen (no inside-out rim glow or lighting).
+    s.n = seen_normal(normalize(v_world_normal), s.v, gl_FrontFacing);
     s.l = to_light(s.p);
     s.albedo = u_base_color * v_color;
 #ifdef INKSHADE_BASE_TEXTURE

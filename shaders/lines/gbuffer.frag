@@ -4,7 +4,8 @@
 //                         0 = background), packHalf2x16(view-space w.xy)
 //   location 1 (RGBA8_SNORM, INKSHADE_GBUFFER_FACE_NORMALS): face normal dFdx(p) x dFdy(p),
 //                         view space (faces the viewer by construction)
-// n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl),
+// n is the interpolated normal turned towards the viewer on back faces (seen_normal, as
+// common/surface.glsl),
 // w = v - (n.v) n (the projected view vector of DeCarlo et al. 2003).
 #include "common/lighting.glsl"
 
@@ -20,9 +21,8 @@ layout(location = 1) out vec4 o_face_normal;
 #endif
 
 void main() {
-    vec3 n = normalize(v_world_normal);
-    if (!gl_FrontFacing) n = -n;
     vec3 v = to_viewer(v_world_pos);
+    vec3 n = seen_normal(normalize(v_world_normal), v, gl_FrontFacing);
     float ndotv = dot(n, v);
     vec3 p_view = (u_view * vec4(v_world_pos, 1.0)).xyz;
     vec2 w_view = (u_view * vec4(v - ndotv * n, 0.0)).xy;

@@ -6,6 +6,7 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 4) in uint a_object_id;
 
 uniform mat4 u_view_proj;
+#include "common/back_face_push.glsl"
 
 out vec3 v_world_pos;
 out vec3 v_world_normal;
@@ -15,5 +16,5 @@ void main() {
     v_world_pos = a_position;
     v_world_normal = a_normal;
     v_object_id = a_object_id;
-    gl_Position = u_view_proj * vec4(a_position, 1.0);
+    gl_Position = pushed_back(u_view_proj * vec4(a_position, 1.0));
 }

@@ -12,11 +12,12 @@ uniform int u_world_mode;
 uniform float u_world_width;
 uniform float u_width_px;
 uniform vec2 u_viewport_size;
+#include "common/back_face_push.glsl"
 
 void main() {
     vec3 n = a_hull_normal;
     if (u_world_mode == 1) {
-        gl_Position = u_view_proj * vec4(a_position + u_world_width * n, 1.0);
+        gl_Position = pushed_back(u_view_proj * vec4(a_position + u_world_width * n, 1.0));
         return;
     }
     vec4 clip = u_view_proj * vec4(a_position, 1.0);
@@ -26,5 +27,5 @@ void main() {
     vec2 d_px = d_ndc * 0.5 * u_viewport_size;
     float len = length(d_px);
     if (len > 1e-12) clip.xy += (d_px / len) * u_width_px * 2.0 / u_viewport_size * clip.w;
-    gl_Position = clip;
+    gl_Position = pushed_back(clip);
 }

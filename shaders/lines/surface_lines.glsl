@@ -8,7 +8,8 @@
 // n.v = 0 contour: constant width in pixels whatever the curvature. Near a fold contour n.v
 // grows like the square root of the distance to it, so (n.v)^2 is the linear one:
 // distance = (n.v)^2 / |grad (n.v)^2| = |n.v| / (2 |grad n.v|) (a Newton step).
-// n is the interpolated normal turned towards the viewer (two-sided, as common/surface.glsl).
+// n is the interpolated normal turned towards the viewer on back faces (seen_normal, as
+// common/surface.glsl).
 // Where n does not vary across the pixel quad (a flat face of a mesh with hard edges) there is
 // no contour inside the face to draw near: a plane's n.v never reaches 0 on it, and a band there
 // would only be a flat face seen obliquely painted over (the contour is the face's edge, which
@@ -24,9 +25,8 @@ uniform float u_rim_contour_width;  // pixels, compensated mode
 
 // `shaded` with the rim line mixed over it.
 vec3 rim_contour(vec3 shaded) {
-    vec3 n = normalize(v_world_normal);
-    if (!gl_FrontFacing) n = -n;
-    float ndotv = dot(n, to_viewer(v_world_pos));
+    vec3 v = to_viewer(v_world_pos);
+    float ndotv = dot(seen_normal(normalize(v_world_normal), v, gl_FrontFacing), v);
     float grad = max(length(vec2(dFdx(ndotv), dFdy(ndotv))), 1e-6);
     // Interpolating three equal normals varies them by rounding only (about 1e-7); curved
     // surfaces turn the normal by far more per pixel (2e-5 on a sphere 100000 px across).

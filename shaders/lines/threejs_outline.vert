@@ -12,10 +12,11 @@ layout(location = 1) in vec3 a_normal;
 
 uniform mat4 u_view_proj;
 uniform float u_thickness;
+#include "common/back_face_push.glsl"
 
 void main() {
     vec4 clip = u_view_proj * vec4(a_position, 1.0);
     vec4 d = u_view_proj * vec4(a_normal, 0.0);
     float len = length(d);
-    gl_Position = len > 0.0 ? clip + d * (u_thickness * clip.w / len) : clip;
+    gl_Position = pushed_back(len > 0.0 ? clip + d * (u_thickness * clip.w / len) : clip);
 }

@@ -13,6 +13,7 @@ out vec2 v_uv;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform mat3 u_normal_matrix;
+#include "common/back_face_push.glsl"
 
 out vec3 v_world_pos;
 out vec3 v_world_normal;
@@ -38,5 +39,5 @@ void main() {
 #ifdef INKSHADE_BASE_TEXTURE
     v_uv = a_uv;
 #endif
-    gl_Position = u_view_proj * world;
+    gl_Position = pushed_back(u_view_proj * world);
 }

@@ -26,6 +26,7 @@ struct Frame {
 
     // The scene.
     const BoundingBox& bounds;
+    float edge_length = 0.0f;       // the mesh's typical edge length, world units (render/edge_length.hpp)
     bool closed = false;            // closed and outward (back faces invisible from outside)
     bool cull_back_faces = false;   // closed and wholly in front of the near plane (cull_back_faces())
     LineExtractor& line_extractor;  // MeshLineData

@@ -1,6 +1,7 @@
 // `gbuffer`: the mesh again into the G-buffer (render/gbuffer.hpp), for the passes that read it.
 #include "gpu/gl_state.hpp"
 #include "gpu/shader_program.hpp"
+#include "render/back_faces.hpp"
 #include "render/frame.hpp"
 
 namespace inkshade::render {
@@ -25,8 +26,6 @@ public:
         gbuffer->bind_for_drawing(face_normals);
         const gpu::DepthScope depth(GL_LESS);
         const gpu::BlendScope blend(std::nullopt);
-        // As for the shading pass (closed meshes seen from outside).
-        const gpu::CullScope cull(frame.cull_back_faces ? std::optional<GLenum>(GL_BACK) : std::nullopt);
 
         const Camera& camera = frame.camera;
         gpu::ShaderProgram& p = *program;
@@ -36,7 +35,8 @@ public:
         p.set("u_eye", camera.eye);
         p.set("u_view_dir", glm::normalize(camera.target - camera.eye));
         p.set("u_orthographic", camera.orthographic ? 1 : 0);
-        frame.mesh->draw();
+        // The surface the shading pass shows: back faces only where no front face is just behind.
+        draw_front_then_back(frame, p, [&] { frame.mesh->draw(); });
     }
 
 private:

@@ -8,6 +8,7 @@
 #include "gpu/gl_context.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/line_drawing.hpp"
+#include "render/edge_length.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/pass_plan.hpp"
@@ -24,7 +25,8 @@ struct Renderer::Impl {
     std::shared_ptr<Mesh> cpu_mesh;
     std::unique_ptr<render::GpuMesh> mesh;
     BoundingBox bounds;
-    bool closed = false;  // closed and outward: back faces invisible from outside
+    bool closed = false;       // closed and outward: back faces invisible from outside
+    float edge_length = 0.0f;  // render::typical_edge_length
     // Object-space lines: extracted on the CPU (ray-cast visibility), drawn as strokes;
     // curvature and the ray scene come on first use.
     std::unique_ptr<LineExtractor> line_extractor;
@@ -78,6 +80,7 @@ void Renderer::Impl::stage(std::shared_ptr<Mesh> m, MeshUse use) {
     // held at once.
     closed = geometry::is_closed_outward(*m);
     bounds = m->bounds();
+    edge_length = render::typical_edge_length(*m);
     geometry::ensure_vertex_normals(*m);  // what the line extractor needs, so it can share
     geometry::reserve_embree_padding(m->positions);
     cpu_mesh = std::move(m);
@@ -129,6 +132,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         .options = options,
         .lines = lines,
         .bounds = impl_->bounds,
+        .edge_length = impl_->edge_length,
         .closed = impl_->closed,
         .cull_back_faces = render::cull_back_faces(impl_->closed, impl_->bounds, camera),
         .line_extractor = *impl_->line_extractor,

@@ -10,6 +10,7 @@
 #include "gpu/shader_program.hpp"
 #include "inkshade/color.hpp"
 #include "render/color_convention.hpp"
+#include "render/back_faces.hpp"
 #include "render/frame.hpp"
 #include "render/surface_lines.hpp"
 
@@ -149,8 +150,6 @@ public:
         glClearStencil(0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         const gpu::DepthScope depth(GL_LESS);
-        // Two-sided by default (open meshes show their lit inside); culling is only a speed-up.
-        const gpu::CullScope cull(frame.cull_back_faces ? std::optional<GLenum>(GL_BACK) : std::nullopt);
         std::optional<gpu::CapabilityScope> multisample;
         if (frame.options.samples > 1) multisample.emplace(GL_MULTISAMPLE, true);
 
@@ -165,16 +164,17 @@ public:
         }
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
-        if (textured || material_params || unlit) {
-            program.set("u_base_texture", int(kBaseTextureUnit));
+        if (textured || material_params || unlit) program.set("u_base_texture", int(kBaseTextureUnit));
+        // Two-sided (open meshes show their lit inside), front faces winning depth ties
+        // (render/back_faces.hpp); back faces culled when none can be seen.
+        draw_front_then_back(frame, program, [&] {
+            if (!textured && !material_params && !unlit) return mesh.draw();
             mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
                 if (material_params)
                     upload_params(program, model, with_material_params(model, shading.params, material));
                 if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
             });
-        } else {
-            mesh.draw();
-        }
+        });
     }
 
 private:

@@ -50,7 +50,7 @@ public:
         p.set("u_width_px", stroke.width);
         p.set("u_viewport_size", glm::vec2(frame.options.width, frame.options.height));
         p.set("u_color", glm::vec4(stroke.color, stroke.opacity));
-        draw_back_face_shell(*frame.mesh, GL_LESS, stroke.opacity < 1.0f);
+        draw_back_face_shell(frame, p, GL_LESS, stroke.opacity < 1.0f);
     }
 
 private:

@@ -84,6 +84,13 @@ void ImageLinesPass::run(Frame& frame) {
         p.set("u_sc_color", glm::vec4(s.color, s.opacity));
         p.set("u_sc_width", s.width);
         p.set("u_sc_step", int(line_param(*suggestive, "step").at(0)));
+        p.set("u_sc_span_world", line_param(*suggestive, "edge-span").at(0) * frame.edge_length);
+        // A pixel's world size at linear depth z (its footprint).
+        const float per_height = 1.0f / float(height);
+        p.set("u_sc_footprint",
+              camera.orthographic
+                  ? glm::vec2(camera.ortho_height * per_height, 0.0f)
+                  : glm::vec2(0.0f, 2.0f * std::tan(0.5f * glm::radians(camera.fov_degrees)) * per_height));
         p.set("u_sc_threshold", line_param(*suggestive, "threshold").at(0));
         p.set("u_sc_fade", line_param(*suggestive, "fade").at(0));
         p.set("u_sc_min_ndotv", line_param(*suggestive, "min-ndotv").at(0));

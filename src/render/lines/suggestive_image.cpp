@@ -8,9 +8,10 @@ namespace {
 
 std::vector<ParamSpec> suggestive_params() {
     std::vector<ParamSpec> p = stroke_params(glm::vec3(0.0f), 1.5f);
-    p.push_back(int_param("step", 2, 1, 8,
-                          "finite-difference spacing h in pixels (Qu et al. 2022 use 1; 2 smooths the "
-                          "kinks of interpolated normals at triangle edges)"));
+    p.push_back(int_param("step", 2, 1, 8, "smallest finite-difference spacing h in pixels (Qu et al. 2022 use 1)"));
+    p.push_back(float_param("edge-span", 1.0f, 0.0f, 64.0f,
+                            "the spacing spans this many of the mesh's typical edge lengths (at least step px): "
+                            "kinks of interpolated normals at the edges of coarse meshes average out; 0 = step"));
     p.push_back(float_param("threshold", 20.0f, 0.0f, 1e6f,
                             "minimum D_w D_w(n.v), derivatives per image height, the valley sharpness "
                             "DeCarlo et al. 2003 threshold (section 4)"));

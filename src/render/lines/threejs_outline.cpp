@@ -49,7 +49,7 @@ public:
         p.set("u_color", glm::vec4(linear_to_srgb(glm::vec3(c.at(0), c.at(1), c.at(2))), alpha));
         // BackSide material, three.js's LessEqual depth test against the model drawn before; as
         // the hull: opaque without depth writes, alpha < 1 as three.js's transparent NormalBlending.
-        draw_back_face_shell(*frame.mesh, GL_LEQUAL, alpha < 1.0f);
+        draw_back_face_shell(frame, p, GL_LEQUAL, alpha < 1.0f);
     }
 
 private:
