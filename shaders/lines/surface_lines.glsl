@@ -26,7 +26,8 @@ uniform float u_rim_contour_width;  // pixels, compensated mode
 // `shaded` with the rim line mixed over it.
 vec3 rim_contour(vec3 shaded) {
     vec3 v = to_viewer(v_world_pos);
-    float ndotv = dot(seen_normal(normalize(v_world_normal), v, gl_FrontFacing), v);
+    vec3 n = seen_normal(normalize(v_world_normal), v, gl_FrontFacing);
+    float ndotv = dot(n, v);
     float grad = max(length(vec2(dFdx(ndotv), dFdy(ndotv))), 1e-6);
     // Interpolating three equal normals varies them by rounding only (about 1e-7); curved
     // surfaces turn the normal by far more per pixel (2e-5 on a sphere 100000 px across).

@@ -138,7 +138,7 @@ std::vector<std::string> Scene::apply_file_scene(const Mesh& mesh) {
         const std::string option = option_name(names, "camera");
         if (mesh.cameras.empty()) throw InputError(option + ": " + file + " has no cameras");
         const FileCamera& c = find_camera(mesh.cameras, file_camera, option, file);
-        camera = camera_options(c, mesh.bounds(), camera.up_axis);
+        camera = camera_options(c, mesh.bounds(), camera.up_axis.value_or(UpAxis::PosY));
         if (size_from_camera) {
             if (c.orthographic)
                 take_aspect(options, c.xmag / c.ymag);
