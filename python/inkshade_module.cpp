@@ -25,7 +25,7 @@ namespace {
 const std::vector<std::string> kSceneKeywords = {
     "size",         "azimuth",    "elevation",   "distance",     "eye",        "target", "up",
     "up_axis",      "fov",        "ortho",       "ortho_height", "near",       "far",    "light_pos",
-    "light_target", "light_type", "light_color", "ambient",      "base_color", "srgb"};
+    "light_target", "light_type", "light_color", "ambient",      "base_color", "srgb",   "bit_depth"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -104,13 +104,18 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             r.base_color = glm::vec3(to_color(key, value, false));
         else if (key == "srgb")
             r.srgb = value.cast<bool>();
+        else if (key == "bit_depth")
+            r.bit_depth = value.cast<int>();
     }
     return r;
 }
 
-py::array_t<uint8_t> to_array(Image&& image) {
+// uint8, or uint16 when the image has 16-bit pixels (bit_depth=16).
+py::array to_array(Image&& image) {
     auto* owned = new Image(std::move(image));
     py::capsule free_image(owned, [](void* p) { delete static_cast<Image*>(p); });
+    if (!owned->rgba16.empty())
+        return py::array_t<uint16_t>({owned->height, owned->width, 4}, owned->rgba16.data(), free_image);
     return py::array_t<uint8_t>({owned->height, owned->width, 4}, owned->rgba.data(), free_image);
 }
 
@@ -147,7 +152,7 @@ public:
         renderer_.set_mesh(mesh_);
         extractor_ = std::make_unique<LineExtractor>(mesh_);
     }
-    py::array_t<uint8_t> render(const Scene& scene) {
+    py::array render(const Scene& scene) {
         need_mesh();
         const Camera camera = scene.frame(mesh_.bounds());
         const Light light = scene.light(mesh_.bounds(), camera);
@@ -314,8 +319,9 @@ PYBIND11_MODULE(inkshade, m) {
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
-            "RGBA uint8 array (height, width, 4), top row first: the PNG `inkshade render` writes for the same "
-            "options; `lines` adds line types to the style, as `inkshade render --lines`.")
+            "RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
+            "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
+            "--lines`.")
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,

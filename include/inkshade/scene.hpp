@@ -54,6 +54,7 @@ struct SceneRequest {
     std::optional<glm::vec4> background;  // default: the style's
     int samples = 4;                      // MSAA, 1..16
     bool srgb = false;                    // sRGB-encode the output
+    int bit_depth = 8;                    // bits a channel of the image: 8 or 16
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;

@@ -151,6 +151,8 @@ Scene make_scene(const SceneRequest& r) {
                          std::to_string(r.size.y));
     if (r.samples < 1 || r.samples > 16)
         throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
+    if (r.bit_depth != 8 && r.bit_depth != 16)
+        throw InputError(name("bit-depth") + ": expected 8 or 16, got " + std::to_string(r.bit_depth));
     check_camera_options(r.camera, r.names);
     for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
         if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
@@ -183,6 +185,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.options.samples = r.samples;
     scene.options.background = scene.style.background;
     scene.options.srgb_output = r.srgb;
+    scene.options.bit_depth = r.bit_depth;
     scene.camera = r.camera;
     scene.light_type = r.light_type;
     scene.light_position = r.light_position;
