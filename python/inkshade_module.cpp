@@ -23,9 +23,9 @@ namespace {
 // The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
 // with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
 const std::vector<std::string> kSceneKeywords = {
-    "size",         "azimuth",    "elevation",   "distance",     "eye",        "target", "up",
-    "up_axis",      "fov",        "ortho",       "ortho_height", "near",       "far",    "light_pos",
-    "light_target", "light_type", "light_color", "ambient",      "base_color", "srgb",   "bit_depth"};
+    "size",        "azimuth", "elevation",    "distance", "eye",       "target",    "up",           "up_axis",
+    "fov",         "ortho",   "ortho_height", "near",     "far",       "light_pos", "light_target", "light_type",
+    "light_color", "ambient", "base_color",   "srgb",     "bit_depth", "margin"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -84,6 +84,8 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             c.orthographic = value.cast<bool>();
         else if (key == "ortho_height")
             c.ortho_height = value.cast<float>();
+        else if (key == "margin")
+            c.margin = value.cast<float>();
         else if (key == "near")
             c.near_plane = value.cast<float>();
         else if (key == "far")
@@ -154,7 +156,7 @@ public:
     }
     py::array render(const Scene& scene) {
         need_mesh();
-        const Camera camera = scene.frame(mesh_.bounds());
+        const Camera camera = scene.frame(mesh_);
         const Light light = scene.light(mesh_.bounds(), camera);
         Image image;
         {
@@ -166,7 +168,7 @@ public:
     LineDrawing lines(const Scene& scene) {
         need_mesh();
         py::gil_scoped_release release;
-        return draw_scene_lines(*extractor_, scene, scene.frame(mesh_.bounds()));
+        return draw_scene_lines(*extractor_, scene, scene.frame(mesh_));
     }
     std::string gl_renderer() const { return renderer_.gl_renderer(); }
 
@@ -245,7 +247,7 @@ PYBIND11_MODULE(inkshade, m) {
         [](const std::string& output_dir, std::optional<std::string> manifest, std::optional<std::string> models,
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
-           int samples, std::optional<py::function> progress) {
+           int samples, float margin, std::optional<py::function> progress) {
         BatchDefaults defaults;
         defaults.views = views;
         defaults.styles.clear();
@@ -255,7 +257,9 @@ PYBIND11_MODULE(inkshade, m) {
         shared.names = OptionNames::Keywords;
         shared.size = {defaults.width, defaults.height};
         shared.samples = samples;
+        shared.camera.margin = margin;
         make_scene(shared);
+        defaults.margin = margin;
         defaults.outputs = {};
         defaults.outputs.png = false;
         for (const auto& f : formats) {
@@ -299,7 +303,7 @@ PYBIND11_MODULE(inkshade, m) {
         py::arg("output_dir"), py::kw_only(), py::arg("manifest") = py::none(), py::arg("models") = py::none(),
         py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
         py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
-        py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4,
+        py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("margin") = 0.05f,
         py::arg("progress") = py::none(),
         "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}.");
 

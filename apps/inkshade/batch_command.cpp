@@ -32,6 +32,7 @@ struct BatchArgs {
     std::string format = "png";
     float fov = 30.0f;
     bool ortho = false;
+    float margin = 0.05f;
     std::string up_axis = "y";
     int samples = 4;
     std::string shard;
@@ -98,12 +99,14 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     shared.camera.fov_degrees = a.fov;
     shared.camera.orthographic = a.ortho;
     shared.camera.up_axis = parse_up_axis("--up-axis", a.up_axis);
+    shared.camera.margin = a.margin;
     make_scene(shared);
     d.width = shared.size.x, d.height = shared.size.y;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
     d.fov_degrees = a.fov;
     d.orthographic = a.ortho;
     d.up_axis = shared.camera.up_axis;
+    d.margin = a.margin;
     return d;
 }
 
@@ -207,6 +210,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--fov", args->fov, "vertical field of view in degrees where the manifest gives none")
         ->capture_default_str();
     cmd->add_flag("--ortho", args->ortho, "orthographic projection where the manifest gives none");
+    cmd->add_option("--margin", args->margin,
+                    "auto-framing's margin, a fraction of the image on each side, where the manifest gives none")
+        ->capture_default_str();
     cmd->add_option("--up-axis", args->up_axis,
                     "the models' up axis where the manifest gives none (x, y, z, -x, -y, -z)")
         ->capture_default_str();

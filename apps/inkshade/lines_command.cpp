@@ -107,7 +107,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     print_mesh_warnings(mesh);
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
-    const Camera camera = scene.frame(mesh.bounds());
+    const Camera camera = scene.frame(mesh);
 
     const size_t triangles = mesh.triangle_count();
     LineExtractor extractor(std::move(mesh));  // takes the mesh's arrays: no copy

@@ -49,7 +49,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();
-    const Camera camera = scene.frame(box);
+    const Camera camera = scene.frame(mesh);
     const Light light = scene.light(box, camera);
 
     const size_t triangles = mesh.triangle_count();

@@ -76,6 +76,10 @@ struct Scene {
     // (a window's).
     Camera frame(const BoundingBox& box) const;
     Camera frame(const BoundingBox& box, float aspect) const;
+    // The same, framing the mesh's vertices rather than the corners of its bounding box, so the
+    // model itself reaches the margin: what the front ends use.
+    Camera frame(const Mesh& mesh) const;
+    Camera frame(const Mesh& mesh, float aspect) const;
     // The light for that camera: the default key light with the request's type, position and
     // target, and the style's colours.
     Light light(const BoundingBox& box, const Camera& camera) const;

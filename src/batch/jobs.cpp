@@ -91,6 +91,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.fov_degrees = d.fov_degrees;
     g.orthographic = d.orthographic;
     g.up_axis = d.up_axis;
+    g.margin = d.margin;
     return g;
 }
 
@@ -119,6 +120,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             view.camera.fov_degrees = group.fov_degrees;
             view.camera.orthographic = group.orthographic;
             view.camera.up_axis = group.up_axis;
+            view.camera.margin = group.margin;
             BatchJob job;
             job.model = group.model;
             job.style = style;

@@ -21,6 +21,7 @@ struct JobGroup {
     float fov_degrees = 30.0f;
     bool orthographic = false;
     UpAxis up_axis = UpAxis::PosY;
+    float margin = 0.05f;  // CameraOptions::margin
     std::string source;
 };
 

@@ -269,7 +269,7 @@ private:
         request.samples = options_.samples;
         request.outputs = {.image = true, .line_drawing = true};
         const Scene scene = make_scene(request);
-        const Camera camera = scene.frame(bounds);
+        const Camera camera = scene.frame(*model.mesh);
         JobFiles files;
         batch::JobRecord& record = files.record;
         record.job = &job;

@@ -136,6 +136,8 @@ void check_camera_options(const CameraOptions& o, OptionNames names) {
         throw InputError(name("far") + ": must be greater than " + name("near"));
     if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
         throw InputError(name("ortho-height") + ": must be a positive number");
+    if (!(o.margin >= 0.0f && o.margin < 0.5f))
+        throw InputError(name("margin") + ": expected a fraction of the image in [0, 0.5)");
 }
 
 const std::vector<std::string>& default_vector_lines() {
@@ -197,6 +199,12 @@ Scene make_scene(const SceneRequest& r) {
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
 
 Camera Scene::frame(const BoundingBox& box, float aspect) const { return frame_camera(box, camera, aspect); }
+
+Camera Scene::frame(const Mesh& mesh) const { return frame(mesh, float(options.width) / float(options.height)); }
+
+Camera Scene::frame(const Mesh& mesh, float aspect) const {
+    return frame_camera(mesh.bounds(), camera, aspect, mesh.positions);
+}
 
 Light Scene::light(const BoundingBox& box, const Camera& cam) const {
     Light l = default_light(box, cam);
