@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
         request.size = {512, 512};
         const inkshade::Scene scene = inkshade::make_scene(request);  // checks every value
         const inkshade::Mesh mesh = inkshade::load_mesh(scene.model, scene.load_options());
-        const inkshade::Camera camera = scene.frame(mesh.bounds());  // auto-framed
+        const inkshade::Camera camera = scene.frame(mesh);  // auto-framed
 
         inkshade::Renderer renderer;  // headless OpenGL 4.5 (EGL)
         renderer.set_mesh(mesh);

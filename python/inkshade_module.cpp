@@ -23,9 +23,9 @@ namespace {
 // The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
 // with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
 const std::vector<std::string> kSceneKeywords = {
-    "size",        "azimuth", "elevation",    "distance", "eye",    "target",    "up",           "up_axis",
-    "fov",         "ortho",   "ortho_height", "near",     "far",    "light_pos", "light_target", "light_type",
-    "light_color", "ambient", "base_color",   "srgb",     "camera", "lights"};
+    "size",        "azimuth", "elevation",    "distance", "eye",       "target",    "up",           "up_axis",
+    "fov",         "ortho",   "ortho_height", "near",     "far",       "light_pos", "light_target", "light_type",
+    "light_color", "ambient", "base_color",   "srgb",     "bit_depth", "margin",    "camera",       "lights"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -84,6 +84,8 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             c.orthographic = value.cast<bool>();
         else if (key == "ortho_height")
             c.ortho_height = value.cast<float>();
+        else if (key == "margin")
+            c.margin = value.cast<float>();
         else if (key == "near")
             c.near_plane = value.cast<float>();
         else if (key == "far")
@@ -109,15 +111,20 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
                 py::isinstance<py::int_>(value) ? std::to_string(value.cast<long long>()) : value.cast<std::string>();
         else if (key == "lights")
             r.lights = parse_light_source(key, value.cast<std::string>());
+        else if (key == "bit_depth")
+            r.bit_depth = value.cast<int>();
     }
     // Without a size, the image takes a file camera's aspect (as the CLI without --size).
     r.size_from_camera = !kwargs.contains("size") || kwargs["size"].is_none();
     return r;
 }
 
-py::array_t<uint8_t> to_array(Image&& image) {
+// uint8, or uint16 when the image has 16-bit pixels (bit_depth=16).
+py::array to_array(Image&& image) {
     auto* owned = new Image(std::move(image));
     py::capsule free_image(owned, [](void* p) { delete static_cast<Image*>(p); });
+    if (!owned->rgba16.empty())
+        return py::array_t<uint16_t>({owned->height, owned->width, 4}, owned->rgba16.data(), free_image);
     return py::array_t<uint8_t>({owned->height, owned->width, 4}, owned->rgba.data(), free_image);
 }
 
@@ -154,10 +161,10 @@ public:
         renderer_.set_mesh(mesh_);
         extractor_ = std::make_unique<LineExtractor>(mesh_);
     }
-    py::array_t<uint8_t> render(Scene scene) {
+    py::array render(Scene scene) {
         need_mesh();
         place(scene);
-        const Camera camera = scene.frame(mesh_.bounds());
+        const Camera camera = scene.frame(mesh_);
         const Light light = scene.light(mesh_.bounds(), camera);
         Image image;
         {
@@ -170,7 +177,7 @@ public:
         need_mesh();
         place(scene);
         py::gil_scoped_release release;
-        return draw_scene_lines(*extractor_, scene, scene.frame(mesh_.bounds()));
+        return draw_scene_lines(*extractor_, scene, scene.frame(mesh_));
     }
     std::string gl_renderer() const { return renderer_.gl_renderer(); }
 
@@ -278,7 +285,7 @@ PYBIND11_MODULE(inkshade, m) {
         [](const std::string& output_dir, std::optional<std::string> manifest, std::optional<std::string> models,
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
-           int samples, const std::string& lights, std::optional<py::function> progress) {
+           int samples, const std::string& lights, float margin, std::optional<py::function> progress) {
         BatchDefaults defaults;
         defaults.views = views;
         defaults.lights = parse_light_source("lights", lights);
@@ -289,7 +296,9 @@ PYBIND11_MODULE(inkshade, m) {
         shared.names = OptionNames::Keywords;
         shared.size = {defaults.width, defaults.height};
         shared.samples = samples;
+        shared.camera.margin = margin;
         make_scene(shared);
+        defaults.margin = margin;
         defaults.outputs = {};
         defaults.outputs.png = false;
         for (const auto& f : formats) {
@@ -334,7 +343,7 @@ PYBIND11_MODULE(inkshade, m) {
         py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
         py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
         py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("lights") = "style",
-        py::arg("progress") = py::none(),
+        py::arg("margin") = 0.05f, py::arg("progress") = py::none(),
         "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}.");
 
     py::class_<PyRenderer>(m, "Renderer", "A headless OpenGL 4.5 renderer (EGL) holding one mesh.")
@@ -353,8 +362,9 @@ PYBIND11_MODULE(inkshade, m) {
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
-            "RGBA uint8 array (height, width, 4), top row first: the PNG `inkshade render` writes for the same "
-            "options; `lines` adds line types to the style, as `inkshade render --lines`.")
+            "RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
+            "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
+            "--lines`.")
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,

@@ -35,6 +35,7 @@ struct BatchArgs {
     std::string up_axis;
     std::optional<float> smooth_angle;
     std::string lights = "style";
+    float margin = 0.05f;
     int samples = 4;
     std::string shard;
     bool force = false, dry_run = false, quiet = false;
@@ -101,6 +102,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     shared.camera.orthographic = a.ortho;
     if (!a.up_axis.empty()) shared.camera.up_axis = parse_up_axis("--up-axis", a.up_axis);
     shared.smooth_angle = a.smooth_angle;
+    shared.camera.margin = a.margin;
     make_scene(shared);
     d.width = shared.size.x, d.height = shared.size.y;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
@@ -109,6 +111,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.up_axis = shared.camera.up_axis;  // unset: each style's up-axis, else y
     d.smooth_angle = a.smooth_angle;
     d.lights = parse_light_source("--lights", a.lights);
+    d.margin = a.margin;
     return d;
 }
 
@@ -212,6 +215,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--fov", args->fov, "vertical field of view in degrees where the manifest gives none")
         ->capture_default_str();
     cmd->add_flag("--ortho", args->ortho, "orthographic projection where the manifest gives none");
+    cmd->add_option("--margin", args->margin,
+                    "auto-framing's margin, a fraction of the image on each side, where the manifest gives none")
+        ->capture_default_str();
     cmd->add_option("--up-axis", args->up_axis,
                     "the models' up axis where the manifest gives none (x, y, z, -x, -y, -z; default: the "
                     "style's up-axis, else y)");

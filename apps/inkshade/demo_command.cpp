@@ -39,7 +39,7 @@ Command add_demo_command(CLI::App& app) {
         for (const std::string& name : builtin_style_names()) {
             request.style = name;
             const Scene scene = make_scene(request);
-            const Camera camera = scene.frame(box);
+            const Camera camera = scene.frame(mesh);
             Image image = render_scene(renderer, scene, camera, scene.light(box, camera));
             const std::string path = (std::filesystem::path(args->out) / (name + ".png")).string();
             write_png(path, image);
@@ -55,7 +55,7 @@ Command add_demo_command(CLI::App& app) {
             const Scene scene = make_scene(request);
             LineExtractor extractor(mesh);
             const std::string svg = (std::filesystem::path(args->out) / "lines.svg").string();
-            write_svg(svg, draw_scene_lines(extractor, scene, scene.frame(box)), scene.style.background);
+            write_svg(svg, draw_scene_lines(extractor, scene, scene.frame(mesh)), scene.style.background);
             std::printf("  %s\n", svg.c_str());
         }
         const std::string sheet = (std::filesystem::path(args->out) / "contact_sheet.png").string();

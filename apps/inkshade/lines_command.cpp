@@ -1,5 +1,6 @@
 // `inkshade lines MODEL -o out.svg`: the object-space line drawing of a model (contours,
-// suggestive contours, creases, borders, ...) with hidden lines removed, as layered SVG.
+// suggestive contours, creases, borders, ...) with hidden lines removed, as layered SVG, or as
+// a PNG or JPEG image drawn by the renderer's stroke pass (the pixels `render` gives the lines).
 
 #include <algorithm>
 #include <chrono>
@@ -11,11 +12,14 @@
 
 #include "commands.hpp"
 #include "core/name_suggestion.hpp"
+#include "image_output.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
+#include "inkshade/renderer.hpp"
 #include "inkshade/scene.hpp"
 #include "io/atomic_file.hpp"
+#include "io/text_scanner.hpp"
 #include "mesh_warnings.hpp"
 #include "output_path.hpp"
 #include "scene_options.hpp"
@@ -32,6 +36,7 @@ struct LinesArgs {
     std::string lines_json;
     bool hidden = false;
     int timing = 0;
+    ImageOutputOptions image;  // --quality, --bit-depth
 };
 
 void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& drawing, const Scene& scene,
@@ -70,16 +75,32 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
 }
 
 int run_lines(const LinesArgs& args, const CLI::App& cmd) {
+    // Every output checked before any work: a run that fails leaves no file.
     check_output_path("-o", args.output);
     const std::string ext = lower_ascii(std::filesystem::path(args.output).extension().string());
-    // Until line drawings are rasterised, anything but SVG text would land in a misnamed file.
-    if (ext != ".svg") throw InputError(args.output + ": `inkshade lines` writes SVG: name the output .svg");
+    std::optional<ImageOutput> image_file;
+    if (ext == ".svg") {
+        refuse_image_options(args.image);
+    } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") {
+        image_file = image_output(args.output, args.image);
+        if (args.hidden) throw InputError("--hidden: hidden lines are drawn (dashed) in SVG only; write .svg");
+    } else {
+        throw InputError(args.output, "cannot write " +
+                                          (ext.empty() ? std::string("line drawings without an extension")
+                                                       : io::quote_token(ext) + " line drawings") +
+                                          " (write .svg, .png, .jpg or .jpeg)");
+    }
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);
     SceneRequest request = args.scene.to_request(cmd);
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
+    if (image_file) request.bit_depth = image_file->bit_depth;
     Scene scene = make_scene(request);
+    if (image_file) check_background(*image_file, scene.options.background);
+    // The GL context before the work, so a machine without one fails at once.
+    std::optional<Renderer> renderer;
+    if (image_file) renderer.emplace();
 
     const auto load_start = std::chrono::steady_clock::now();
     Mesh mesh = load_mesh(scene.model, scene.load_options());
@@ -87,21 +108,29 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     print_warnings(scene.apply_file_scene(mesh));
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
-    const Camera camera = scene.frame(mesh.bounds());
+    const Camera camera = scene.frame(mesh);
 
     const size_t triangles = mesh.triangle_count();
     LineExtractor extractor(std::move(mesh));  // takes the mesh's arrays: no copy
     std::vector<LineTiming> first;
     const LineDrawing drawing = draw_scene_lines(extractor, scene, camera, &first);
     if (args.timing > 0) print_timing(args, triangles, drawing, scene, first, extractor, camera, load_ms);
+    Image image;
+    if (renderer) image = renderer->draw_lines(drawing, scene.options);
+    const auto write_output = [&] {
+        if (image_file)
+            write_image(*image_file, image);
+        else
+            write_svg(args.output, drawing, scene.style.background);
+    };
     if (args.lines_json.empty()) {
-        write_svg(args.output, drawing, scene.style.background);
+        write_output();
         return 0;
     }
-    // Both files or neither: the JSON is removed again if the SVG cannot be written.
+    // Both files or neither: the JSON is removed again if the drawing cannot be written.
     io::write_file_atomic(args.lines_json, format_lines_json(drawing));
     try {
-        write_svg(args.output, drawing, scene.style.background);
+        write_output();
     } catch (...) {
         std::error_code ec;
         std::filesystem::remove(args.lines_json, ec);
@@ -114,14 +143,19 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
 
 Command add_lines_command(CLI::App& app) {
     auto args = std::make_shared<LinesArgs>();
-    CLI::App* cmd = app.add_subcommand("lines", "draw a model's contours, creases, ... as a layered SVG");
+    CLI::App* cmd =
+        app.add_subcommand("lines", "draw a model's contours, creases, ... as a layered SVG or a PNG/JPEG image");
     args->scene.add_to(*cmd);
-    cmd->add_option("-o,--output", args->output, "output SVG file (written atomically)")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "output file by its extension: .svg (layers, hidden lines), or .png or .jpg/.jpeg drawn by the "
+                    "renderer's strokes (written atomically)")
+        ->required();
     cmd->add_option("--lines", args->lines,
                     "object-space line types to draw, comma-separated (default: the style's, else "
                     "contour,suggestive,crease,border)");
     cmd->add_option("--lines-json", args->lines_json, "also write the polylines as JSON (docs/lines.md)");
-    cmd->add_flag("--hidden", args->hidden, "also draw hidden lines, dashed, in layers TYPE-hidden");
+    cmd->add_flag("--hidden", args->hidden, "also draw hidden lines, dashed, in layers TYPE-hidden (SVG only)");
+    args->image.add_to(*cmd);
     cmd->add_option("--timing", args->timing, "extract N extra views and print median ms per stage and total")
         ->check(CLI::Range(0, 100000));
     return [args, cmd] { return run_lines(*args, *cmd); };

@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "image_output.hpp"
 #include "inkshade/error.hpp"
-#include "inkshade/image.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/scene.hpp"
 #include "mesh_warnings.hpp"
@@ -26,24 +26,22 @@ struct RenderArgs {
     std::string output;
     int timing = 0;
     std::string save_style;
-    std::optional<int> quality;  // --quality, JPEG only
-    std::string scene_file;      // --scene
-    std::string lines;           // --lines a,b: line types added to the style
+    ImageOutputOptions image;  // --quality, --bit-depth
+    std::string scene_file;    // --scene
+    std::string lines;         // --lines a,b: line types added to the style
 };
 
 int run_render(RenderArgs& args, const CLI::App& cmd) {
     // Every output checked before any work: a run that fails leaves no file.
     check_output_path("-o", args.output);
-    const ImageFormat format = image_format_of(args.output);
-    if (args.quality && format != ImageFormat::Jpeg)
-        throw InputError("--quality: applies to .jpg and .jpeg output only");
+    const ImageOutput output = image_output(args.output, args.image);
     if (!args.save_style.empty()) check_output_path("--save-style", args.save_style);
     SceneRequest request = args.scene.to_request(cmd, args.scene_file);
     request.added_lines = split_names(args.lines).value_or(std::vector<std::string>{});
+    request.bit_depth = output.bit_depth;
     Scene scene = make_scene(request);
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
-    if (format == ImageFormat::Jpeg && scene.options.background.a < 1.0f)
-        throw InputError(args.output + ": JPEG has no transparency; write .png for a transparent background");
+    check_background(output, scene.options.background);
     const RenderOptions& options = scene.options;
     const auto load_start = std::chrono::steady_clock::now();
     Mesh mesh = load_mesh(scene.model, scene.load_options());
@@ -52,7 +50,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
     const BoundingBox box = mesh.bounds();
-    const Camera camera = scene.frame(box);
+    const Camera camera = scene.frame(mesh);
     const Light light = scene.light(box, camera);
 
     const size_t triangles = mesh.triangle_count();
@@ -92,10 +90,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
         std::printf("  %-10s median %8.2f ms  gpu %8.3f ms\n", "total", median(totals), median(gpu_totals));
         std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, peak_rss_mib());
     }
-    if (format == ImageFormat::Jpeg)
-        write_jpeg(args.output, image, args.quality.value_or(95));
-    else
-        write_png(args.output, image);
+    write_image(output, image);
     if (args.save_style.empty()) return 0;
     try {  // both files or neither
         save_style(args.save_style, scene.style);
@@ -116,7 +111,7 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output,
                     "output image, .png or .jpg/.jpeg by its extension (written atomically)")
         ->required();
-    cmd->add_option("--quality", args->quality, "JPEG quality 1..100 (default 95)")->check(CLI::Range(1, 100));
+    args->image.add_to(*cmd);
     cmd->add_option("--timing", args->timing, "render N extra frames and print median ms per pass and total")
         ->check(CLI::Range(0, 100000));
     cmd->add_option("--lines", args->lines,

@@ -34,6 +34,10 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_flag("--ortho", c.orthographic, "orthographic projection");
     cmd.add_option("--ortho-height", c.ortho_height,
                    "orthographic view height in world units (default: framed to the model)");
+    cmd.add_option("--margin", c.margin,
+                   "auto-framing: fraction of the image's width or height left free on each side of the model, "
+                   "on the limiting axis, in [0, 0.5)")
+        ->capture_default_str();
     cmd.add_option("--near", c.near_plane, "near clipping plane distance (default: fitted to the model)");
     cmd.add_option("--far", c.far_plane, "far clipping plane distance (default: fitted to the model)");
     cmd.add_option("--camera", r.file_camera,

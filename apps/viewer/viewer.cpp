@@ -226,7 +226,7 @@ bool Viewer::open_model(const std::string& path) {
 void Viewer::reset_camera() {
     glfwGetFramebufferSize(window_, &fb_width_, &fb_height_);
     const float aspect = float(std::max(fb_width_, 1)) / float(std::max(fb_height_, 1));
-    camera_ = scene_.frame(box_, aspect);
+    camera_ = scene_.frame(mesh_, aspect);
     scene_.light_position = options_.scene.light_position;  // a moved light goes back too
     dirty_ = true;
 }

@@ -50,6 +50,7 @@ struct BatchDefaults {
     std::optional<UpAxis> up_axis;      // the models' up axis (CameraOptions::up_axis); unset: the style's
     std::optional<float> smooth_angle;  // auto-smooth angle (SceneRequest::smooth_angle)
     LightSource lights = LightSource::Style;
+    float margin = 0.05f;  // auto-framing's margin (CameraOptions::margin)
 };
 
 // A view list: items separated by ',' or ';' —
@@ -74,7 +75,8 @@ std::string model_name(const std::string& model);
 // be double-quoted) or JSON Lines (one object per line). The format is chosen by the extension
 // of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
 // Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
-// name, views (or view), styles (or style), size, format, fov, ortho, up-axis, lights, output;
+// name, views (or view), styles (or style), size, format, fov, ortho, up-axis, smooth-angle,
+// lights, margin, output;
 // docs/cli.md#batch.
 // Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
 // Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two

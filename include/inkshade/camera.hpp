@@ -2,6 +2,7 @@
 #pragma once
 #include <optional>
 #include <string_view>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -51,15 +52,26 @@ struct CameraOptions {
     // Eye, target and up, when given, are in the model's coordinates whatever the axis.
     // Unset: the style's up-axis (make_scene), else +y.
     std::optional<UpAxis> up_axis;
+    // Auto-framing leaves this fraction of the image's width and height free on each side of
+    // the model, on the axis that limits it; [0, 0.5).
+    float margin = 0.05f;
 };
 
 // Default view angles of auto-framing: a three-quarter view from slightly above.
 constexpr float kDefaultAzimuth = 35.0f;
 constexpr float kDefaultElevation = 20.0f;
 
-// Places the camera so the bounding sphere of `box` fills the view with a small margin
-// (both dimensions, any aspect), unless eye/distance are given; near/far enclose the model.
-Camera frame_camera(const BoundingBox& box, const CameraOptions& options, float aspect);
+// Frames a model tightly. Seen from the view direction (azimuth and elevation, or the eye), the
+// projection of `points` (the model's vertices; none: the eight corners of its bounding `box`,
+// which fill less of the image when the model is round) spans 1 - 2 margin of the image's
+// width or height, whichever limits, and is centred on both axes. Perspective: the eye moves
+// along and across the view direction (the target becomes the point of the view axis nearest
+// the box centre); with a target given, only along it, so the farthest point meets the margin.
+// Orthographic: the view height fits, and the view axis moves across to centre the model unless
+// eye or target is given. A given eye, distance or ortho height is kept; near/far enclose the
+// bounding sphere. Linear in the number of points.
+Camera frame_camera(const BoundingBox& box, const CameraOptions& options, float aspect,
+                    std::span<const glm::vec3> points = {});
 
 // Near and far planes that enclose the bounding sphere of `box` from the current eye, as
 // frame_camera sets them (used again after the camera moved).

@@ -1,4 +1,4 @@
-// RGBA8 images and PNG output.
+// RGBA images (8 bits a channel, optionally 16 as well) and their PNG and JPEG files.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -10,6 +10,10 @@ struct Image {
     int width = 0;
     int height = 0;
     std::vector<uint8_t> rgba;  // row-major, top row first, 4 bytes per pixel
+    // The same pixels at 16 bits a channel (0..65535), or empty. Filled by a render that asks
+    // for 16 bits (RenderOptions::bit_depth) and by read_png of a 16-bit file; `rgba` then
+    // holds them rounded to 8 bits, so code that reads only `rgba` sees the same picture.
+    std::vector<uint16_t> rgba16;
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgba(size_t(w) * size_t(h) * 4, 0) {}
@@ -17,12 +21,16 @@ struct Image {
     const uint8_t* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
 
-// Reverses the row order in place (OpenGL reads pixels bottom row first).
+// Reverses the row order in place, of `rgba16` too (OpenGL reads pixels bottom row first).
 void flip_vertically(Image& image);
 
-// Writes a PNG atomically (temp file in the same directory, then rename).
+// A 16-bit channel value rounded to 8 bits (v * 255 / 65535, to nearest).
+inline uint8_t to_8_bits(uint16_t v) { return uint8_t((uint32_t(v) * 255u + 32767u) / 65535u); }
+
+// Writes a PNG (libpng) atomically (temp file in the same directory, then rename), RGBA at
+// `bit_depth` 8 or 16 bits a channel; 16 needs the image's `rgba16`.
 // Throws RuntimeError with "FILE: reason" when it cannot.
-void write_png(const std::string& path, const Image& image);
+void write_png(const std::string& path, const Image& image, int bit_depth = 8);
 
 // JPEG (baseline, 8-bit RGB) at `quality` 1..100, written atomically; the alpha channel is
 // dropped, so callers refuse images with transparency first. Throws RuntimeError.
@@ -33,7 +41,8 @@ enum class ImageFormat { Png, Jpeg };
 // Throws InputError("FILE: cannot write '.bmp' images (write .png, .jpg or .jpeg)").
 ImageFormat image_format_of(const std::string& path);
 
-// Reads a PNG into RGBA8 (used by tests and golden comparisons). Throws InputError.
+// Reads a PNG (or JPEG) into RGBA8, and into `rgba16` as well when the file has 16 bits a
+// channel (used by tests and golden comparisons). Throws InputError.
 Image read_png(const std::string& path);
 
 }  // namespace inkshade

@@ -13,6 +13,8 @@
 
 namespace inkshade {
 
+struct LineDrawing;
+
 struct RenderOptions {
     int width = 1024;
     int height = 1024;
@@ -21,6 +23,9 @@ struct RenderOptions {
     // The linear colour convention: textures decoded from sRGB, the output sRGB-encoded. Default:
     // the display convention, texels and formula values as they are (docs/shading.md).
     bool srgb_output = false;
+    // Bits a channel of the colour targets and the image: 8 (RGBA8), or 16 (RGBA16 targets, the
+    // image's rgba16 filled beside its rgba) for smooth gradients without banding.
+    int bit_depth = 8;
 };
 
 struct PassTiming {
@@ -75,6 +80,12 @@ public:
     Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                  const std::vector<LineSettings>& lines, const RenderOptions& options,
                  std::vector<PassTiming>* timings = nullptr);
+
+    // The line drawing alone over options.background, drawn by the pass that strokes render()'s
+    // object-space lines, so its pixels are those strokes (`inkshade lines -o x.png`); hidden
+    // parts stay SVG-only. Needs no mesh. Throws InputError when the drawing's size is not the
+    // image's.
+    Image draw_lines(const LineDrawing& drawing, const RenderOptions& options);
 
     // "llvmpipe (LLVM ...)", "NVIDIA H100 ..." — what GL runs on.
     std::string gl_renderer() const;

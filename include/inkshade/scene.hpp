@@ -67,6 +67,7 @@ struct SceneRequest {
     // Auto-smooth angle in degrees, 0..180, for files without normals (LoadOptions::smooth_angle);
     // unset: the style's, else 30.
     std::optional<float> smooth_angle;
+    int bit_depth = 8;  // bits a channel of the image: 8 or 16
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;
@@ -104,6 +105,10 @@ struct Scene {
     // (a window's).
     Camera frame(const BoundingBox& box) const;
     Camera frame(const BoundingBox& box, float aspect) const;
+    // The same, framing the mesh's vertices rather than the corners of its bounding box, so the
+    // model itself reaches the margin: what the front ends use.
+    Camera frame(const Mesh& mesh) const;
+    Camera frame(const Mesh& mesh, float aspect) const;
     // The light for that camera: the default key light with the request's type, position and
     // target, and the style's colours; or the file's light (apply_file_scene) as the shading
     // model takes it (docs/inputs.md, "Cameras and lights").

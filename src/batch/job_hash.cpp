@@ -10,7 +10,8 @@ namespace inkshade {
 namespace {
 
 // Version of what the hashed text means; bump it when the same text would render differently.
-constexpr int kHashFormat = 1;
+// 2: auto-framing frames the box corners tightly with a margin (the same view renders larger).
+constexpr int kHashFormat = 2;
 
 std::string number(float v) {
     char buf[32];
@@ -43,7 +44,7 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     text += "view=" + job.view.name + " az=" + optional_number(c.azimuth_degrees) +
             " el=" + optional_number(c.elevation_degrees) + " dist=" + optional_number(c.distance) +
             " eye=" + optional_vec3(c.eye) + " target=" + optional_vec3(c.target) + " up=" + optional_vec3(c.up) +
-            " fov=" + number(c.fov_degrees) + " ortho=" + (c.orthographic ? "1" : "0");
+            " fov=" + number(c.fov_degrees) + " ortho=" + (c.orthographic ? "1" : "0") + " margin=" + number(c.margin);
     // Only a model that is not y-up adds to the text, so earlier jobs keep their hashes.
     if (c.up_axis && *c.up_axis != UpAxis::PosY) text += " up-axis=" + std::to_string(int(*c.up_axis));
     if (job.smooth_angle) text += " smooth-angle=" + number(*job.smooth_angle);

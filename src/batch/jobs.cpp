@@ -93,6 +93,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.up_axis = d.up_axis;
     g.smooth_angle = d.smooth_angle;
     g.lights = d.lights;
+    g.margin = d.margin;
     return g;
 }
 
@@ -123,6 +124,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
                 view.camera.orthographic = group.orthographic;
             }
             view.camera.up_axis = group.up_axis;
+            view.camera.margin = group.margin;
             BatchJob job;
             job.model = group.model;
             job.style = style;

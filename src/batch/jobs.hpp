@@ -24,6 +24,7 @@ struct JobGroup {
     std::optional<UpAxis> up_axis;
     std::optional<float> smooth_angle;
     LightSource lights = LightSource::Style;
+    float margin = 0.05f;  // CameraOptions::margin
     std::string source;
 };
 

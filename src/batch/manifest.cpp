@@ -23,9 +23,11 @@ namespace {
 using batch::default_group;
 using batch::JobGroup;
 
-const std::set<std::string> kColumns = {"model",  "name", "views", "view",    "styles",       "style",  "size",
-                                        "format", "fov",  "ortho", "up-axis", "smooth-angle", "lights", "output"};
-const char* kColumnList = "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, output";
+const std::set<std::string> kColumns = {"model",   "name",         "views",  "view",   "styles",
+                                        "style",   "size",         "format", "fov",    "ortho",
+                                        "up-axis", "smooth-angle", "lights", "margin", "output"};
+const char* kColumnList =
+    "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, margin, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -65,15 +67,19 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.width = size.x, g.height = size.y;
     } else if (key == "format")
         g.outputs = batch::parse_formats(value);
-    else if (key == "fov") {
+    else if (key == "fov" || key == "margin") {
         double v = 0;
         auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
         if (ec != std::errc() || ptr != value.data() + value.size())
-            throw InputError("fov: expected degrees, got " + io::quote_token(value));
+            throw InputError(key + ": expected " + (key == "fov" ? "degrees" : "a fraction") + ", got " +
+                             io::quote_token(value));
         CameraOptions camera;
-        camera.fov_degrees = io::to_float(v);
+        camera.fov_degrees = g.fov_degrees;
+        camera.margin = g.margin;
+        (key == "fov" ? camera.fov_degrees : camera.margin) = io::to_float(v);
         check_camera_options(camera, OptionNames::Keywords);  // the range every front end takes
         g.fov_degrees = camera.fov_degrees;
+        g.margin = camera.margin;
     } else if (key == "up-axis") {
         g.up_axis = parse_up_axis("up-axis", value);
     } else if (key == "smooth-angle") {
@@ -180,9 +186,9 @@ void parse_csv(const std::vector<std::pair<int, std::string_view>>& lines, const
 std::string json_text(const std::string& key, const nlohmann::json& v) {
     if (v.is_string()) return v.get<std::string>();
     if (v.is_boolean() && key == "ortho") return v.get<bool>() ? "true" : "false";
-    if (v.is_number() && key == "fov") {
+    if (v.is_number() && (key == "fov" || key == "margin")) {
         const double d = v.get<double>();
-        if (!std::isfinite(d)) throw InputError("fov: not a finite number");
+        if (!std::isfinite(d)) throw InputError(key + ": not a finite number");
         std::ostringstream out;
         out.precision(17);
         out << d;

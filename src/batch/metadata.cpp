@@ -94,7 +94,8 @@ std::string format_metadata(const JobRecord& r) {
     j["view"] = {{"name", job.view.name},
                  {"azimuth_degrees", optional_number(job.view.camera.azimuth_degrees)},
                  {"elevation_degrees", optional_number(job.view.camera.elevation_degrees)},
-                 {"distance", optional_number(job.view.camera.distance)}};
+                 {"distance", optional_number(job.view.camera.distance)},
+                 {"margin", number(job.view.camera.margin)}};
     if (!job.view.file_camera.empty()) j["view"]["file_camera"] = job.view.file_camera;  // camera=NAME
     if (job.lights == LightSource::File) j["lights"] = "file";
     j["camera"] = {{"eye", vec3(r.camera.eye)},

@@ -282,7 +282,7 @@ private:
         request.outputs = {.image = true, .line_drawing = true};
         Scene scene = make_scene(request);
         scene.apply_file_scene(*model.mesh);  // a bad camera fails the job; its warnings are not kept
-        const Camera camera = scene.frame(bounds);
+        const Camera camera = scene.frame(*model.mesh);
         JobFiles files;
         batch::JobRecord& record = files.record;
         record.job = &job;

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "core/tight_framing.hpp"
 
 namespace inkshade {
 
@@ -66,8 +69,29 @@ glm::mat3 up_axis_rotation(UpAxis axis) {
 
 namespace {
 
-// frame_camera for a model whose up is +y.
-Camera frame_y_up(const BoundingBox& box, const CameraOptions& o, float aspect) {
+// The framed points in the view's axes (x right, y up, z along the view) relative to `origin`:
+// the model's points turned into the camera math's frame by `to_frame`, or the box's corners.
+std::vector<glm::vec3> view_points(const BoundingBox& box, std::span<const glm::vec3> points, const glm::mat3& to_frame,
+                                   const glm::vec3& origin, const glm::vec3& right, const glm::vec3& up,
+                                   const glm::vec3& forward) {
+    std::vector<glm::vec3> out;
+    const auto add = [&](const glm::vec3& p) {
+        const glm::vec3 q = p - origin;
+        out.emplace_back(glm::dot(q, right), glm::dot(q, up), glm::dot(q, forward));
+    };
+    if (points.empty()) {
+        for (int i = 0; i < 8; ++i)
+            add({(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z});
+        return out;
+    }
+    out.reserve(points.size());
+    for (const glm::vec3& p : points) add(to_frame * p);
+    return out;
+}
+
+// frame_camera in the camera math's frame (+y up): `box` there, `points` turned by `to_frame`.
+Camera frame_y_up(const BoundingBox& box, std::span<const glm::vec3> points, const glm::mat3& to_frame,
+                  const CameraOptions& o, float aspect) {
     Camera cam;
     cam.fov_degrees = std::clamp(o.fov_degrees, 1.0f, 170.0f);
     cam.orthographic = o.orthographic;
@@ -75,11 +99,14 @@ Camera frame_y_up(const BoundingBox& box, const CameraOptions& o, float aspect) 
     cam.target = o.target.value_or(box.center());
     cam.up = o.up.value_or(glm::vec3(0, 1, 0));
 
-    // Distance at which the bounding sphere fits the narrower of the two fields of view,
-    // with a 5% margin.
-    const float half_v = glm::radians(cam.fov_degrees) * 0.5f;
-    const float half_h = std::atan(std::tan(half_v) * aspect);
-    const float fit = 1.05f * radius / std::sin(std::min(half_v, half_h));
+    // The part of the image the model may fill, all but `margin` of the width and of the height
+    // on each side, as tangents of the half fields of view.
+    const float fill = 1.0f - 2.0f * std::clamp(o.margin, 0.0f, 0.49f);
+    const float tan_v = std::tan(glm::radians(cam.fov_degrees) * 0.5f);
+    const glm::vec2 reach = fill * glm::vec2(tan_v * aspect, tan_v);
+    // Where the bounding sphere fits that part of the narrower field of view: the distance of an
+    // orthographic eye, and of a perspective one that nothing else places.
+    const float sphere_fit = radius / std::sin(std::atan(std::min(reach.x, reach.y)));
 
     glm::vec3 dir = o.eye ? glm::vec3(0.0f)
                           : orbit_direction(o.azimuth_degrees.value_or(kDefaultAzimuth),
@@ -87,27 +114,41 @@ Camera frame_y_up(const BoundingBox& box, const CameraOptions& o, float aspect) 
     if (o.eye)
         cam.eye = *o.eye;
     else
-        cam.eye = cam.target + dir * o.distance.value_or(fit);
+        cam.eye = cam.target + dir * o.distance.value_or(sphere_fit);
     if (glm::length(cam.eye - cam.target) < 1e-6f * radius)
-        cam.eye = cam.target + glm::vec3(0, 0, fit), dir = {0, 0, 1};
+        cam.eye = cam.target + glm::vec3(0, 0, sphere_fit), dir = {0, 0, 1};
     cam.up = safe_up(cam.target - cam.eye, cam.up);
 
-    // Tighter auto-framing: the distance at which all eight box corners fit the view
-    // (the bounding sphere above is only the upper bound).
+    // Tight framing of the points (the model's vertices, or the box corners) seen from here.
     const glm::vec3 f = glm::normalize(cam.target - cam.eye);
     const glm::vec3 r = glm::normalize(glm::cross(f, cam.up)), u = glm::cross(r, f);
-    float need = 0.0f, half_x = 0.0f, half_y = 0.0f;
-    for (int i = 0; i < 8; ++i) {
-        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z);
-        glm::vec3 q = p - cam.target;
-        float x = std::abs(glm::dot(q, r)), y = std::abs(glm::dot(q, u)), z = -glm::dot(q, f);
-        need = std::max({need, z + x / std::tan(half_h), z + y / std::tan(half_v)});
-        half_x = std::max(half_x, x);
-        half_y = std::max(half_y, y);
+    const bool fit_eye = !cam.orthographic && !o.eye && !o.distance;
+    const bool fit_height = cam.orthographic && !o.ortho_height;
+    if (fit_eye || fit_height) {
+        const std::vector<glm::vec3> seen = view_points(box, points, to_frame, cam.target, r, u, f);
+        const bool centre = !o.eye && !o.target;  // else the view axis stays through the target
+        const float clearance = 1e-2f * radius;   // the eye stays this far before the nearest point
+        if (fit_eye && centre) {
+            // The eye from which the limiting axis touches both margins and the other is centred;
+            // the target becomes the point of the view axis nearest the box centre (the pivot).
+            const glm::vec3 e = framing::centred_eye(seen, reach, clearance);
+            cam.eye = cam.target + r * e.x + u * e.y + f * e.z;
+            cam.target = cam.eye + f * glm::dot(box.center() - cam.eye, f);
+        } else if (fit_eye) {
+            cam.eye = cam.target - f * framing::distance_on_axis(seen, reach, clearance);
+        } else {
+            auto [lo, hi] = framing::extent(seen);
+            if (centre) {
+                const glm::vec2 mid = 0.5f * (lo + hi);
+                cam.eye += r * mid.x + u * mid.y;
+                cam.target += r * mid.x + u * mid.y;
+                lo -= mid, hi -= mid;
+            }
+            const glm::vec2 half = glm::max(-lo, hi);
+            cam.ortho_height = 2.0f * std::max({half.y, half.x / aspect, 1e-6f * radius}) / fill;
+        }
     }
-    if (!o.eye && !o.distance && !o.target) cam.eye = cam.target + dir * std::min(fit, 1.08f * need);
-    // Orthographic: the box's projected extent with a 5% margin.
-    cam.ortho_height = o.ortho_height.value_or(2.1f * std::max({half_y, half_x / aspect, 1e-6f}));
+    if (o.ortho_height) cam.ortho_height = *o.ortho_height;
     fit_clip_planes(cam, box);
     if (o.near_plane) cam.near_plane = *o.near_plane;
     if (o.far_plane) cam.far_plane = *o.far_plane;
@@ -116,9 +157,9 @@ Camera frame_y_up(const BoundingBox& box, const CameraOptions& o, float aspect) 
 
 }  // namespace
 
-Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect) {
+Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect, std::span<const glm::vec3> points) {
     const UpAxis axis = o.up_axis.value_or(UpAxis::PosY);
-    if (axis == UpAxis::PosY) return frame_y_up(box, o, aspect);
+    if (axis == UpAxis::PosY) return frame_y_up(box, points, glm::mat3(1.0f), o, aspect);
     // Frame the model in the camera math's frame (a signed permutation keeps the box
     // axis-aligned), then turn the camera back into the model's coordinates.
     const glm::mat3 to_model = up_axis_rotation(axis), to_frame = glm::transpose(to_model);
@@ -128,7 +169,7 @@ Camera frame_camera(const BoundingBox& box, const CameraOptions& o, float aspect
     if (o.eye) lo.eye = to_frame * *o.eye;
     if (o.target) lo.target = to_frame * *o.target;
     if (o.up) lo.up = to_frame * *o.up;
-    Camera cam = frame_y_up(local, lo, aspect);
+    Camera cam = frame_y_up(local, points, to_frame, lo, aspect);
     cam.eye = to_model * cam.eye;
     cam.target = to_model * cam.target;
     cam.up = to_model * cam.up;

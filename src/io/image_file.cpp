@@ -1,9 +1,12 @@
-// Image files through stb (Debian libstb): PNG and JPEG encoding, PNG decoding, and the format
-// an output's extension asks for. Output goes through write_file_atomic.
+// Image files: PNG encoding through libpng (8 or 16 bits a channel; stb writes only 8), JPEG
+// encoding and PNG decoding through stb (Debian libstb), and the format an output's extension
+// asks for. Output goes through write_file_atomic.
+#include <png.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <csetjmp>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -29,14 +32,82 @@ void check_image(const std::string& path, const Image& image) {
         throw RuntimeError(path + ": cannot write an empty or inconsistent image");
 }
 
+// libpng's output and errors: bytes appended to `bytes`; an error's message kept for the throw
+// after libpng has jumped back out (png_error longjmps, which no C++ exception may cross).
+struct PngSink {
+    std::string bytes;
+    std::string error;
+};
+
+void png_append(png_structp png, png_bytep data, size_t size) {
+    auto* sink = static_cast<PngSink*>(png_get_io_ptr(png));
+    bool failed = false;
+    try {
+        sink->bytes.append(reinterpret_cast<const char*>(data), size);
+    } catch (const std::exception&) {
+        failed = true;
+    }
+    if (failed) png_error(png, "out of memory");
+}
+
+[[noreturn]] void png_fail(png_structp png, png_const_charp message) {
+    auto* sink = static_cast<PngSink*>(png_get_error_ptr(png));
+    try {
+        sink->error = message;
+    } catch (const std::exception&) {
+    }
+    png_longjmp(png, 1);
+}
+
+void png_ignore_warning(png_structp, png_const_charp) {}
+
+// The encoding proper. libpng's errors longjmp back to the setjmp here, so no object with a
+// destructor lives in between; false on error (the message is in the sink).
+bool encode_png(png_structp png, png_infop info, int width, int height, int bit_depth, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), bit_depth, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_write_image(png, rows);
+    png_write_end(png, nullptr);
+    return true;
+}
+
 }  // namespace
 
-void write_png(const std::string& path, const Image& image) {
+void write_png(const std::string& path, const Image& image, int bit_depth) {
     check_image(path, image);
-    std::string bytes;
-    if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.rgba.data(), image.width * 4))
-        throw RuntimeError(path + ": PNG encoding failed");
-    io::write_file_atomic(path, bytes);
+    if (bit_depth != 8 && bit_depth != 16)
+        throw RuntimeError(path + ": PNG bit depth must be 8 or 16, got " + std::to_string(bit_depth));
+    if (bit_depth == 16 && image.rgba16.size() != image.rgba.size())
+        throw RuntimeError(path + ": a 16-bit PNG needs the image's 16-bit pixels (render with 16 bits)");
+    // PNG stores 16-bit samples most significant byte first, whatever the machine's order.
+    std::vector<uint8_t> big_endian;
+    if (bit_depth == 16) {
+        big_endian.resize(image.rgba16.size() * 2);
+        for (size_t i = 0; i < image.rgba16.size(); ++i) {
+            big_endian[2 * i] = uint8_t(image.rgba16[i] >> 8);
+            big_endian[2 * i + 1] = uint8_t(image.rgba16[i] & 0xff);
+        }
+    }
+    // libpng takes non-const row pointers but only reads them when writing.
+    uint8_t* pixels = bit_depth == 16 ? big_endian.data() : const_cast<uint8_t*>(image.rgba.data());
+    const size_t row_bytes = size_t(image.width) * 4 * size_t(bit_depth / 8);
+    std::vector<png_bytep> rows(size_t(image.height));
+    for (size_t y = 0; y < rows.size(); ++y) rows[y] = pixels + y * row_bytes;
+
+    PngSink sink;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_fail, png_ignore_warning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        throw RuntimeError(path + ": PNG encoding failed (out of memory)");
+    }
+    png_set_write_fn(png, &sink, png_append, nullptr);
+    const bool encoded = encode_png(png, info, image.width, image.height, bit_depth, rows.data());
+    png_destroy_write_struct(&png, &info);
+    if (!encoded) throw RuntimeError(path + ": PNG encoding failed (" + sink.error + ")");
+    io::write_file_atomic(path, sink.bytes);
 }
 
 void write_jpeg(const std::string& path, const Image& image, int quality) {
@@ -63,13 +134,23 @@ Image read_png(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "cannot open file");
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const int size = int(bytes.size());
     int w = 0, h = 0, comp = 0;
-    unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()), int(bytes.size()),
-                                                &w, &h, &comp, 4);
-    if (!data) throw InputError(path, std::string("not a readable PNG (") + stbi_failure_reason() + ")");
+    if (stbi_is_16_bit_from_memory(data, size)) {
+        stbi_us* wide = stbi_load_16_from_memory(data, size, &w, &h, &comp, 4);
+        if (!wide) throw InputError(path, std::string("not a readable PNG (") + stbi_failure_reason() + ")");
+        Image image(w, h);
+        image.rgba16.assign(wide, wide + size_t(w) * size_t(h) * 4);
+        stbi_image_free(wide);
+        std::transform(image.rgba16.begin(), image.rgba16.end(), image.rgba.begin(), to_8_bits);
+        return image;
+    }
+    unsigned char* pixels = stbi_load_from_memory(data, size, &w, &h, &comp, 4);
+    if (!pixels) throw InputError(path, std::string("not a readable PNG (") + stbi_failure_reason() + ")");
     Image image(w, h);
-    std::copy(data, data + size_t(w) * size_t(h) * 4, image.rgba.begin());
-    stbi_image_free(data);
+    std::copy(pixels, pixels + size_t(w) * size_t(h) * 4, image.rgba.begin());
+    stbi_image_free(pixels);
     return image;
 }
 

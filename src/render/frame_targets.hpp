@@ -20,8 +20,8 @@ struct FrameTargets {
     std::unique_ptr<ShadowMap> shadow_map;
     std::optional<glm::mat4> shadow_light;  // the light view-projection it holds; none: stale
 
-    // The colour target for `options`: kept when its size and samples match.
-    gpu::Framebuffer& color_for(int width, int height, int samples);
+    // The colour target for `options`: kept when its size, samples and bit depth match.
+    gpu::Framebuffer& color_for(int width, int height, int samples, int bit_depth);
 };
 
 }  // namespace inkshade::render

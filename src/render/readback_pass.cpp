@@ -1,4 +1,5 @@
-// `readback`: the resolved colour into the returned image.
+// `readback`: the resolved colour into the returned image, at the colour target's bit depth
+// (RenderOptions::bit_depth: 16 fills Image::rgba16 too).
 #include "render/frame.hpp"
 
 namespace inkshade::render {

@@ -13,6 +13,7 @@
 #include "render/gpu_mesh.hpp"
 #include "render/pass_plan.hpp"
 #include "render/pass_timer.hpp"
+#include "render/stroke_pass.hpp"
 
 namespace inkshade {
 
@@ -32,6 +33,7 @@ struct Renderer::Impl {
     std::unique_ptr<LineExtractor> line_extractor;
     render::FrameTargets targets;
     std::map<const render::PassType*, std::unique_ptr<render::Pass>> passes;  // made on first use
+    std::unique_ptr<render::StrokePass> strokes;                              // draw_lines, on first use
 
     // set_mesh: the previous mesh is released first, so two are never held at once.
     void stage(std::shared_ptr<Mesh> m, MeshUse use);
@@ -109,6 +111,15 @@ void Renderer::Impl::run(const std::vector<render::PlannedPass>& planned, render
     }
 }
 
+namespace {
+
+void check_bit_depth(const RenderOptions& options) {
+    if (options.bit_depth != 8 && options.bit_depth != 16)
+        throw InputError("bit depth: expected 8 or 16, got " + std::to_string(options.bit_depth));
+}
+
+}  // namespace
+
 void Renderer::set_mesh(const Mesh& mesh, MeshUse use) { impl_->stage(std::make_shared<Mesh>(mesh), use); }
 
 void Renderer::set_mesh(Mesh&& mesh, MeshUse use) { impl_->stage(std::make_shared<Mesh>(std::move(mesh)), use); }
@@ -122,6 +133,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
                        const std::vector<LineSettings>& lines, const RenderOptions& options,
                        std::vector<PassTiming>* timings) {
     if (!impl_->cpu_mesh) throw RuntimeError("no mesh to render (set_mesh first)");
+    check_bit_depth(options);
     std::vector<LineSettings> object_lines = render::object_lines_of(lines);  // checks every type
     impl_->context->make_current();
     render::Frame frame{
@@ -153,9 +165,30 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         frame.mesh = impl_->mesh.get();
         if (frame.vertex_scalar) frame.mesh->set_vertex_scalar(*frame.vertex_scalar);
     }
-    impl_->targets.color_for(options.width, options.height, options.samples);
+    impl_->targets.color_for(options.width, options.height, options.samples, options.bit_depth);
     impl_->run(plan.passes, frame, timings);
     return std::move(frame.image);
+}
+
+Image Renderer::draw_lines(const LineDrawing& drawing, const RenderOptions& options) {
+    check_bit_depth(options);
+    if (drawing.width != options.width || drawing.height != options.height)
+        throw InputError("the line drawing is " + std::to_string(drawing.width) + "x" + std::to_string(drawing.height) +
+                         ", the image " + std::to_string(options.width) + "x" + std::to_string(options.height));
+    impl_->context->make_current();
+    gpu::Framebuffer& target =
+        impl_->targets.color_for(options.width, options.height, options.samples, options.bit_depth);
+    target.bind();
+    // The shading pass's clear: premultiplied, so a transparent background reads back as it does.
+    const glm::vec4& bg = options.background;
+    glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
+    glClearDepth(1.0);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    if (!impl_->strokes) impl_->strokes = std::make_unique<render::StrokePass>();
+    impl_->strokes->draw_layers(drawing.layers, options.width, options.height, options.samples);
+    target.resolve();
+    return target.read(bg.a < 1.0f);
 }
 
 }  // namespace inkshade

@@ -34,7 +34,7 @@ StrokePass::StrokePass()
 void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height,
                       int samples) {
     if (style.opacity <= 0.0f || style.width <= 0.0f) return;
-    bool depth_test = true;
+    bool depth_test = style.depth_test;
     std::vector<Segment> segments;
     for (const LinePath& path : paths) {
         const size_t n = path.points.size();
@@ -77,17 +77,22 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(segments.size()));
 }
 
-void StrokePass::run(Frame& frame) {
-    for (LineLayer& layer : frame.drawing->layers) {
+void StrokePass::draw_layers(const std::vector<LineLayer>& layers, int width, int height, int samples) {
+    for (const LineLayer& layer : layers) {
         const Stroke stroke = stroke_of(layer.settings);
-        const StrokeStyle style{stroke.color, stroke.opacity, stroke.width,
-                                line_param(layer.settings, "taper").at(0) != 0.0f};
-        // Hidden parts are already cut away exactly by ray casting; without per-point depth the
-        // stroke pass skips its depth test, which would otherwise nibble at the half of a
-        // contour stroke that lies over the surface it outlines.
-        for (LinePath& path : layer.visible) path.depth.clear();
-        draw(layer.visible, style, frame.options.width, frame.options.height, frame.options.samples);
+        // Hidden parts are already cut away exactly by ray casting; a depth test would only
+        // nibble at the half of a contour stroke that lies over the surface it outlines.
+        const StrokeStyle style{.color = stroke.color,
+                                .opacity = stroke.opacity,
+                                .width = stroke.width,
+                                .taper = line_param(layer.settings, "taper").at(0) != 0.0f,
+                                .depth_test = false};
+        draw(layer.visible, style, width, height, samples);
     }
+}
+
+void StrokePass::run(Frame& frame) {
+    draw_layers(frame.drawing->layers, frame.options.width, frame.options.height, frame.options.samples);
 }
 
 namespace {

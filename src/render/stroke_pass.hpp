@@ -4,8 +4,9 @@
 // fragment shader computes coverage analytically. With MSAA each sample is tested against the
 // capsule (gl_SampleMask) and the stencil lets a sample be covered once per draw, so joins and
 // overlaps of one layer never blend twice; without MSAA the pixel coverage becomes alpha.
-// Depth-tested against the scene with a bias when every path has per-point depth.
-// As the `strokes` pass it draws the frame's object-space lines (LineDrawing).
+// Depth-tested against the scene with a bias when every path has per-point depth and the style
+// asks for it. As the `strokes` pass it draws the frame's object-space lines (LineDrawing); the
+// renderer's Renderer::draw_lines draws a line drawing alone with the same code.
 #pragma once
 #include <vector>
 
@@ -22,6 +23,7 @@ struct StrokeStyle {
     float width = 1.0f;        // pixels; times strength when taper is on
     bool taper = true;         // width * strength (LinePath::strength) per point
     float depth_bias = 2e-4f;  // subtracted from the paths' window depth before the test
+    bool depth_test = true;    // false: no test even where the paths carry depth
 };
 
 class StrokePass final : public Pass {
@@ -31,7 +33,10 @@ public:
     // Draws `paths` into the bound framebuffer of width x height pixels with `samples`
     // samples (its depth/stencil buffer is used; the stencil is cleared).
     void draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height, int samples);
-    // Draws every layer of the frame's LineDrawing (visible parts; hidden ones are SVG-only).
+    // Draws the visible parts of `layers` (hidden ones are SVG-only) with their strokes, without
+    // a depth test: ray casting has already cut the hidden parts away exactly.
+    void draw_layers(const std::vector<LineLayer>& layers, int width, int height, int samples);
+    // Draws every layer of the frame's LineDrawing (draw_layers).
     void run(Frame& frame) override;
 
 private:

@@ -175,6 +175,8 @@ void check_camera_options(const CameraOptions& o, OptionNames names) {
         throw InputError(name("far") + ": must be greater than " + name("near"));
     if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
         throw InputError(name("ortho-height") + ": must be a positive number");
+    if (!(o.margin >= 0.0f && o.margin < 0.5f))
+        throw InputError(name("margin") + ": expected a fraction of the image in [0, 0.5)");
 }
 
 const std::vector<std::string>& default_vector_lines() {
@@ -190,6 +192,8 @@ Scene make_scene(const SceneRequest& r) {
                          std::to_string(r.size.y));
     if (r.samples < 1 || r.samples > 16)
         throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
+    if (r.bit_depth != 8 && r.bit_depth != 16)
+        throw InputError(name("bit-depth") + ": expected 8 or 16, got " + std::to_string(r.bit_depth));
     check_camera_options(r.camera, r.names);
     for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
         if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
@@ -225,6 +229,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.options.samples = r.samples;
     scene.options.background = scene.style.background;
     scene.options.srgb_output = r.srgb;
+    scene.options.bit_depth = r.bit_depth;
     scene.camera = r.camera;
     scene.light_type = r.light_type;
     scene.light_position = r.light_position;
@@ -243,6 +248,12 @@ LoadOptions Scene::load_options() const { return LoadOptions{.smooth_angle = smo
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
 
 Camera Scene::frame(const BoundingBox& box, float aspect) const { return frame_camera(box, camera, aspect); }
+
+Camera Scene::frame(const Mesh& mesh) const { return frame(mesh, float(options.width) / float(options.height)); }
+
+Camera Scene::frame(const Mesh& mesh, float aspect) const {
+    return frame_camera(mesh.bounds(), camera, aspect, mesh.positions);
+}
 
 Light Scene::light(const BoundingBox& box, const Camera& cam) const {
     if (file_light) return file_scene_light(*file_light, style, box);

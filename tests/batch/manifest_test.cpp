@@ -127,6 +127,20 @@ TEST(BatchManifest, LightsColumnAndFileCamerasKeepTheirOwnProjection) {
     EXPECT_NE(job_hash(plain, "", -1, 4), job_hash(orbit, "", -1, 4));
 }
 
+TEST(BatchManifest, MarginColumnAndDefaultReachTheCamera) {
+    BatchDefaults d;
+    d.margin = 0.1f;
+    const auto jobs = parse_manifest("model,margin,fov\nx.stl,0.25,40\ny.stl,,\n", "m.csv", d);
+    ASSERT_EQ(jobs.size(), 2u);
+    EXPECT_EQ(jobs[0].view.camera.margin, 0.25f);
+    EXPECT_EQ(jobs[0].view.camera.fov_degrees, 40.0f);  // one column does not reset the other
+    EXPECT_EQ(jobs[1].view.camera.margin, 0.1f);
+    const auto json = parse_manifest("{\"model\": \"x.stl\", \"fov\": 50, \"margin\": 0}\n", "m.jsonl");
+    EXPECT_EQ(json[0].view.camera.margin, 0.0f);
+    EXPECT_EQ(json[0].view.camera.fov_degrees, 50.0f);
+    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
+}
+
 TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
     // No extension: '{' means JSON Lines, anything else CSV.
     EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);
@@ -157,6 +171,8 @@ TEST(BatchManifest, EveryBadLineIsAnInputErrorNamingSourceAndLine) {
         {"model,format\na.obj,gif\n", "m.csv:2: format: unknown output format 'gif'"},
         {"model,fov\na.obj,180\n", "m.csv:2: fov:"},
         {"model,ortho\na.obj,maybe\n", "m.csv:2: ortho:"},
+        {"model,margin\na.obj,0.5\n", "m.csv:2: margin: expected a fraction of the image in [0, 0.5)"},
+        {"model,margin\na.obj,wide\n", "m.csv:2: margin: expected a fraction, got 'wide'"},
         {"model,up-axis\na.obj,w\n", "m.csv:2: up-axis: expected x, y, z, -x, -y or -z, got 'w'"},
         {"model,output\na.obj,/abs\n", "m.csv:2: output: '/abs' must be relative"},
         {"model,output\na.obj,x/../../y\n", "m.csv:2: output: 'x/../../y' must stay inside"},

@@ -98,6 +98,7 @@ TEST(BatchShard, JobHashFollowsEverythingThatDecidesTheFiles) {
     EXPECT_NE(changed([](BatchJob& j) { j.outputs.svg = true; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.view.camera.azimuth_degrees = 31.0f; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.view.camera.fov_degrees = 40.0f; }), h);
+    EXPECT_NE(changed([](BatchJob& j) { j.view.camera.margin = 0.1f; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.view.camera.eye = glm::vec3(1.0f); }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.model = "other.obj"; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.style = "anime"; }), h);

@@ -4,6 +4,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -120,6 +123,81 @@ TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
     EXPECT_FALSE(std::filesystem::exists(out)) << "no output after a failure";
     for (const auto& e : std::filesystem::directory_iterator(dir.path()))
         EXPECT_EQ(e.path().filename().string().find("x.svg"), std::string::npos) << e.path();
+}
+
+// `lines -o x.png` is the stroke pass of `render` alone: over a white background its pixels are
+// exactly those of `render` drawing the same line types over a white fill (ambient 1, light 0),
+// for a style's lines and for --lines with a camera of its own.
+void expect_same_pixels(const std::string& lines_args, const std::string& render_args) {
+    TempDir dir;
+    auto r = run_cli("lines " + lines_args + " -o " + dir.file("l.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("render " + render_args + " -o " + dir.file("r.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Image lines = read_png(dir.file("l.png")), render = read_png(dir.file("r.png"));
+    ASSERT_EQ(lines.width, 160);
+    ASSERT_EQ(lines.height, 120);
+    ASSERT_EQ(render.width, 160);
+    ASSERT_EQ(render.height, 120);
+    int dark = 0, differ = 0;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x) {
+            dark += lines.pixel(x, y)[0] < 128;
+            for (int c = 0; c < 4; ++c) differ += lines.pixel(x, y)[c] != render.pixel(x, y)[c];
+        }
+    EXPECT_GT(dark, 300) << "the drawing has lines";
+    EXPECT_EQ(differ, 0) << lines_args;
+}
+
+TEST(LinesCommand, PngIsTheRenderersStrokesOfTheStylesLines) {
+    expect_same_pixels("builtin:teapot --style ink-vector --size 160x120",
+                       "builtin:teapot --style ink-vector --size 160x120");
+}
+
+TEST(LinesCommand, PngOfChosenLinesIsTheRenderersStrokesOverWhite) {
+    const std::string view = " --size 160x120 --azimuth 20 --elevation 35 --ortho --samples 8";
+    expect_same_pixels("builtin:torus --lines contour,suggestive" + view,
+                       "builtin:torus --lines contour,suggestive --base-color 1,1,1 --light-color 0,0,0 --ambient "
+                       "1,1,1" +
+                           view);
+}
+
+// JPEG and 16-bit PNG as `render` writes them; a transparent background gives alpha 0 around
+// opaque lines; what an image cannot hold is exit 2 before any work.
+TEST(LinesCommand, ImageOutputsAndTheirLimits) {
+    TempDir dir;
+    const std::string base = "lines builtin:torus --size 96x64 ";
+    auto r = run_cli(base + "--quality 80 -o " + dir.file("l.JPEG"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir.file("l.JPEG")).substr(0, 3), std::string("\xFF\xD8\xFF"));
+    r = run_cli(base + "--bit-depth 16 --background transparent -o " + dir.file("l16.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Image wide = read_png(dir.file("l16.png"));
+    ASSERT_EQ(wide.rgba16.size(), size_t(96 * 64 * 4));
+    int opaque = 0;
+    for (size_t i = 3; i < wide.rgba16.size(); i += 4) opaque += wide.rgba16[i] == 65535;
+    EXPECT_EQ(wide.rgba16[3], 0) << "the corner is background";
+    EXPECT_GT(opaque, 50) << "line pixels";
+
+    for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+             {"-o " + dir.file("x.bmp"),
+              dir.file("x.bmp") + ": cannot write '.bmp' line drawings (write .svg, .png, .jpg or .jpeg)"},
+             {"-o " + dir.file("x"),
+              dir.file("x") + ": cannot write line drawings without an extension (write .svg, .png, .jpg or .jpeg)"},
+             {"--hidden -o " + dir.file("x.png"), "--hidden: hidden lines are drawn (dashed) in SVG only; write .svg"},
+             {"--quality 50 -o " + dir.file("x.svg"), "--quality: applies to .jpg and .jpeg output only"},
+             {"--quality 50 -o " + dir.file("x.png"), "--quality: applies to .jpg and .jpeg output only"},
+             {"--bit-depth 16 -o " + dir.file("x.svg"), "--bit-depth: applies to .png output only"},
+             {"--bit-depth 16 -o " + dir.file("x.jpg"), "--bit-depth: applies to .png output only"},
+             {"--bit-depth 4 -o " + dir.file("x.png"), "--bit-depth: expected 8 or 16, got 4"},
+             {"--background transparent -o " + dir.file("x.jpg"),
+              dir.file("x.jpg") + ": JPEG has no transparency; write .png for a transparent background"}}) {
+        r = run_cli(base + args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, "inkshade: " + message + "\n") << args;
+    }
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+        EXPECT_EQ(e.path().filename().string().rfind("x", 0), std::string::npos) << e.path() << " written";
 }
 
 TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/run_cli.hpp"
 #include "inkshade/image.hpp"
@@ -382,18 +385,66 @@ TEST(RenderCommand, OutputFormatFollowsTheExtension) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("c.jpg")));
 }
 
-// A second output that cannot be written leaves no first one behind.
+// Either output that cannot be written, of `render` or of `lines`, leaves no file at all.
 TEST(RenderCommand, EveryOutputIsCheckedBeforeWork) {
     TempDir dir;
-    auto r = run_cli("render builtin:sphere --size 16x16 -o " + dir.file("a.png") + " --save-style " +
-                     dir.file("missing/s.toml"));
-    EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("missing"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
-    r = run_cli("lines builtin:sphere --size 16x16 -o " + dir.file("l.png"));
-    EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("writes SVG"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dir.file("l.png")));
+    const std::string missing = dir.file("missing/x");
+    const std::vector<std::string> runs = {
+        "render builtin:sphere --size 16x16 -o " + dir.file("a.png") + " --save-style " + missing + ".toml",
+        "render builtin:sphere --size 16x16 -o " + missing + ".png --save-style " + dir.file("s.toml"),
+        "render builtin:sphere --size 16x16 -o " + dir.file("a.jpg") + " --save-style " + missing + ".toml",
+        "lines builtin:sphere --size 16x16 -o " + dir.file("l.png") + " --lines-json " + missing + ".json",
+        "lines builtin:sphere --size 16x16 -o " + dir.file("l.svg") + " --lines-json " + missing + ".json",
+        "lines builtin:sphere --size 16x16 -o " + missing + ".png --lines-json " + dir.file("l.json"),
+        "lines builtin:sphere --size 16x16 -o " + missing + ".svg --lines-json " + dir.file("l.json"),
+    };
+    for (const std::string& run : runs) {
+        const CliResult r = run_cli(run);
+        EXPECT_EQ(r.status, 2) << run;
+        EXPECT_EQ(line_count(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find(dir.file("missing")), std::string::npos) << r.err;
+        EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << run << " left a file";
+    }
+}
+
+// --bit-depth 16: a 16-bit PNG (IHDR bit depth 16) whose values, scaled, are the 8-bit PNG's
+// within one level; only for PNG, and only 8 or 16.
+TEST(RenderCommand, BitDepth16WritesA16BitPng) {
+    TempDir dir;
+    const std::string base = "render builtin:sphere --size 64x48 ";
+    auto r = run_cli(base + "--bit-depth 16 -o " + dir.file("wide.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli(base + "-o " + dir.file("narrow.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string bytes = slurp(dir.file("wide.png"));
+    ASSERT_GT(bytes.size(), 26u);
+    EXPECT_EQ(bytes.substr(12, 4), "IHDR");
+    EXPECT_EQ(int(uint8_t(bytes[24])), 16) << "bit depth";
+    EXPECT_EQ(int(uint8_t(bytes[25])), 6) << "RGBA";
+    EXPECT_EQ(int(uint8_t(slurp(dir.file("narrow.png"))[24])), 8);
+    const Image wide = read_png(dir.file("wide.png")), narrow = read_png(dir.file("narrow.png"));
+    ASSERT_EQ(wide.rgba16.size(), size_t(64 * 48 * 4));
+    EXPECT_TRUE(narrow.rgba16.empty());
+    int off = 0, shaded = 0, finer = 0;
+    for (size_t i = 0; i < narrow.rgba.size(); ++i) {
+        off += std::abs(wide.rgba16[i] / 257.0 - narrow.rgba[i]) > 1.0;
+        if (narrow.rgba[i] == 255) continue;  // background white is 65535 in both
+        ++shaded;
+        finer += wide.rgba16[i] % 257 != 0;  // not a widened 8-bit value
+    }
+    EXPECT_EQ(off, 0);
+    EXPECT_GT(shaded, 1000) << "the sphere";
+    EXPECT_GT(finer, 0.9 * shaded) << "the 16-bit file carries levels between the 8-bit ones";
+
+    for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+             {"--bit-depth 16 -o " + dir.file("c.jpg"), "--bit-depth: applies to .png output only"},
+             {"--bit-depth 8 -o " + dir.file("c.jpeg"), "--bit-depth: applies to .png output only"},
+             {"--bit-depth 12 -o " + dir.file("c.png"), "--bit-depth: expected 8 or 16, got 12"}}) {
+        r = run_cli(base + args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, "inkshade: " + message + "\n") << args;
+    }
+    for (const char* name : {"c.jpg", "c.jpeg", "c.png"}) EXPECT_FALSE(std::filesystem::exists(dir.file(name)));
 }
 
 }  // namespace

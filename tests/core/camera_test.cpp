@@ -1,6 +1,10 @@
 // Auto-framing and camera placement (no GL).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "inkshade/camera.hpp"
@@ -65,6 +69,123 @@ TEST(FrameCamera, ExplicitEyeAndTargetAreKept) {
     EXPECT_EQ(cam.eye, glm::vec3(3, 4, 5));
     EXPECT_EQ(cam.target, glm::vec3(0.5f, 0, 0));
     EXPECT_LT(cam.near_plane, cam.far_plane);
+}
+
+std::vector<glm::vec3> corners(const BoundingBox& b) {
+    std::vector<glm::vec3> out;
+    for (int i = 0; i < 8; ++i)
+        out.emplace_back((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+    return out;
+}
+
+// The points' projection in normalised device coordinates: lo and hi per image axis.
+std::pair<glm::vec2, glm::vec2> projected_extent(const Camera& cam, const std::vector<glm::vec3>& points,
+                                                 float aspect) {
+    const glm::mat4 vp = cam.projection(aspect) * cam.view();
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : points) {
+        const glm::vec4 c = vp * glm::vec4(p, 1);
+        EXPECT_GT(c.w, 0.0f);
+        lo = glm::min(lo, glm::vec2(c) / c.w);
+        hi = glm::max(hi, glm::vec2(c) / c.w);
+    }
+    return {lo, hi};
+}
+
+// Tight framing: the corners reach 1 - 2 margin (NDC spans 2) on both sides of the limiting
+// axis and are centred on the other, for wide and tall images, both projections, any view.
+TEST(FrameCamera, BoxCornersTouchTheMarginOnTheLimitingAxisCentred) {
+    const std::vector<BoundingBox> boxes = {unit_box(),
+                                            {{2.0f, -1.5f, 0.5f}, {6.0f, -0.5f, 1.1f}},   // wide, off the origin
+                                            {{-0.2f, 0.0f, -0.3f}, {0.2f, 3.0f, 0.3f}}};  // tall
+    for (const BoundingBox& box : boxes)
+        for (float aspect : {1920.0f / 1080.0f, 1080.0f / 1920.0f, 1.0f})
+            for (bool ortho : {false, true})
+                for (float margin : {0.05f, 0.0f, 0.2f})
+                    for (auto [az, el] : {std::pair{35.0f, 20.0f}, std::pair{-120.0f, 65.0f}, std::pair{0.0f, 0.0f}}) {
+                        CameraOptions o;
+                        o.orthographic = ortho;
+                        o.margin = margin;
+                        o.azimuth_degrees = az;
+                        o.elevation_degrees = el;
+                        o.fov_degrees = 40.0f;
+                        const Camera cam = frame_camera(box, o, aspect);
+                        const auto [lo, hi] = projected_extent(cam, corners(box), aspect);
+                        SCOPED_TRACE(::testing::Message()
+                                     << "aspect " << aspect << " ortho " << ortho << " margin " << margin << " view "
+                                     << az << ":" << el << " box " << box.max.x);
+                        const float reach = 1.0f - 2.0f * margin;
+                        const int limiting = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;  // NDC: both axes span 2
+                        EXPECT_NEAR(hi[limiting], reach, 1e-4f);
+                        EXPECT_NEAR(lo[limiting], -reach, 1e-4f);
+                        EXPECT_NEAR(hi[1 - limiting], -lo[1 - limiting], 1e-4f) << "centred";
+                        EXPECT_LE(hi[1 - limiting], reach + 1e-4f);
+                        // The orbit pivot stays on the view axis, level with the box centre.
+                        const glm::vec3 f = glm::normalize(cam.target - cam.eye);
+                        EXPECT_NEAR(glm::dot(box.center() - cam.target, f), 0.0f, 1e-4f * glm::length(box.max));
+                    }
+}
+
+// Given the model's points, they (not the box corners) touch the margin: a cloud on a tilted
+// ellipse, in the model's coordinates whatever its up axis.
+TEST(FrameCamera, PointsTouchTheMarginOnTheLimitingAxisCentred) {
+    std::vector<glm::vec3> points;
+    for (int i = 0; i < 200; ++i) {
+        const float a = 0.1f * float(i), b = 0.37f * float(i);
+        points.emplace_back(3.0f + 2.0f * std::cos(a), 1.0f + std::sin(a) * std::cos(b), 0.5f * std::sin(b));
+    }
+    BoundingBox box{points[0], points[0]};
+    for (const glm::vec3& p : points) box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
+    for (UpAxis axis : {UpAxis::PosY, UpAxis::PosZ, UpAxis::NegX})
+        for (float aspect : {16.0f / 9.0f, 9.0f / 16.0f})
+            for (bool ortho : {false, true}) {
+                CameraOptions o;
+                o.up_axis = axis;
+                o.orthographic = ortho;
+                o.margin = 0.1f;
+                const Camera cam = frame_camera(box, o, aspect, points);
+                const auto [lo, hi] = projected_extent(cam, points, aspect);
+                SCOPED_TRACE(::testing::Message()
+                             << "axis " << int(axis) << " aspect " << aspect << " ortho " << ortho);
+                const int limiting = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
+                EXPECT_NEAR(hi[limiting], 0.8f, 1e-4f);
+                EXPECT_NEAR(lo[limiting], -0.8f, 1e-4f);
+                EXPECT_NEAR(hi[1 - limiting], -lo[1 - limiting], 1e-4f) << "centred";
+                // Tighter than the box: its corners reach beyond the points' extent.
+                const auto [box_lo, box_hi] = projected_extent(cam, corners(box), aspect);
+                EXPECT_GT(std::max(box_hi[limiting], -box_lo[limiting]), 0.8f + 1e-3f);
+            }
+}
+
+// A given target keeps the view axis through it: the distance (or the orthographic height)
+// fits, so the farthest corner meets the margin on its side.
+TEST(FrameCamera, GivenTargetFitsTheDistanceToTheFarthestCorner) {
+    for (bool ortho : {false, true}) {
+        CameraOptions o;
+        o.orthographic = ortho;
+        o.target = glm::vec3(0.5f, 0.25f, 0.0f);
+        o.margin = 0.1f;
+        const Camera cam = frame_camera(unit_box(), o, 1.5f);
+        EXPECT_EQ(cam.target, *o.target);
+        const auto [lo, hi] = projected_extent(cam, corners(unit_box()), 1.5f);
+        const float widest = std::max({hi.x, hi.y, -lo.x, -lo.y});
+        EXPECT_NEAR(widest, 0.8f, 1e-4f) << "ortho " << ortho;
+    }
+}
+
+// The margin and projection change the framing, not the view direction; a given distance or
+// orthographic height wins over it.
+TEST(FrameCamera, GivenDistanceAndOrthoHeightAreKept) {
+    CameraOptions o;
+    o.distance = 9.0f;
+    o.margin = 0.3f;
+    Camera cam = frame_camera(unit_box(), o, 1.0f);
+    EXPECT_NEAR(glm::length(cam.eye - cam.target), 9.0f, 1e-4f);
+    EXPECT_EQ(cam.target, glm::vec3(0.0f));
+    o = {};
+    o.orthographic = true;
+    o.ortho_height = 7.0f;
+    EXPECT_EQ(frame_camera(unit_box(), o, 1.0f).ortho_height, 7.0f);
 }
 
 TEST(Light, DirectionalLightDirectionIsIndependentOfPoint) {

@@ -18,7 +18,8 @@ INKSHADE_BIN = os.environ["INKSHADE_BIN"]
 
 
 def read_png(path):
-    """RGBA8, non-interlaced PNG (what inkshade writes) -> (h, w, 4) uint8, independent of inkshade."""
+    """RGBA, non-interlaced PNG (what inkshade writes) -> (h, w, 4) uint8, or uint16 for a 16-bit
+    file, independent of inkshade."""
     with open(path, "rb") as f:
         data = f.read()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
@@ -28,12 +29,13 @@ def read_png(path):
         body = data[pos + 8:pos + 8 + length]
         if kind == b"IHDR":
             width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            assert (depth, colour) == (8, 6), "expected RGBA8"
+            assert depth in (8, 16) and colour == 6, "expected RGBA8 or RGBA16"
         elif kind == b"IDAT":
             idat += body
         pos += 12 + length
     raw = zlib.decompress(idat)
-    stride = width * 4
+    bpp = 4 * depth // 8  # bytes a pixel: the filters' left neighbour
+    stride = width * bpp
     out = np.zeros((height, stride), dtype=np.int32)
     prev = np.zeros(stride, dtype=np.int32)
     for y in range(height):
@@ -41,9 +43,9 @@ def read_png(path):
         line = np.frombuffer(raw, dtype=np.uint8, count=stride, offset=y * (stride + 1) + 1).astype(np.int32)
         row = np.zeros(stride, dtype=np.int32)
         for x in range(stride):  # the five PNG filters (RFC 2083 section 6)
-            a = row[x - 4] if x >= 4 else 0
+            a = row[x - bpp] if x >= bpp else 0
             b = prev[x]
-            c = prev[x - 4] if x >= 4 else 0
+            c = prev[x - bpp] if x >= bpp else 0
             if f == 0:
                 p = 0
             elif f == 1:
@@ -58,6 +60,8 @@ def read_png(path):
             row[x] = (line[x] + p) & 255
         out[y] = row
         prev = row
+    if depth == 16:  # big-endian samples
+        return (out[:, 0::2] * 256 + out[:, 1::2]).reshape(height, width, 4).astype(np.uint16)
     return out.reshape(height, width, 4).astype(np.uint8)
 
 
@@ -84,6 +88,18 @@ class ModuleTest(unittest.TestCase):
             np.testing.assert_array_equal(image, read_png(png))
             # Not a blank picture: the torus covers a good part of it.
             self.assertGreater(int((image[:, :, :3] != 255).any(axis=2).sum()), 96 * 64 // 8)
+
+    def test_bit_depth_16_equals_the_cli_png(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "a.png")
+            self.cli("render", "builtin:torus", "--size", "48x40", "--bit-depth", "16", "-o", png)
+            image = self.renderer.render("lambert", size=(48, 40), bit_depth=16)
+            self.assertEqual(image.dtype, np.uint16)
+            expected = read_png(png)
+            self.assertEqual(expected.dtype, np.uint16)
+            np.testing.assert_array_equal(image, expected)
+            with self.assertRaisesRegex(ValueError, "bit_depth: expected 8 or 16, got 12"):
+                self.renderer.render("lambert", size=(8, 8), bit_depth=12)
 
     def test_one_request_gives_the_same_bytes_in_every_front_end(self):
         """`inkshade render`/`lines`, `inkshade batch`, inkshade.batch and Renderer.render/svg."""

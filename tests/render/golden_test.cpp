@@ -93,7 +93,7 @@ protected:
             current_model() = model;
             Scene s;
             s.box = mesh.bounds();
-            s.camera = frame_camera(s.box, CameraOptions{}, 1.0f);
+            s.camera = frame_camera(s.box, CameraOptions{}, 1.0f, mesh.positions);  // Scene::frame(mesh)
             scenes[model] = s;
         }
         return scenes.at(model);

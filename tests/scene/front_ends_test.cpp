@@ -22,7 +22,7 @@ void library_files(SceneRequest request, const std::string& png, const std::stri
     request.outputs = {.image = true, .line_drawing = true};
     const Scene scene = make_scene(request);
     const Mesh mesh = load_mesh(scene.model);
-    const Camera camera = scene.frame(mesh.bounds());
+    const Camera camera = scene.frame(mesh);
     Renderer renderer;
     renderer.set_mesh(mesh);
     write_png(png, render_scene(renderer, scene, camera, scene.light(mesh.bounds(), camera)));

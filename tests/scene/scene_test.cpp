@@ -180,6 +180,16 @@ TEST(Scene, CameraAndLightAreTheDefaultsWithTheRequestsValues) {
     const Camera expected = frame_camera(box, r.camera, 2.0f);
     EXPECT_EQ(cam.eye, expected.eye);
     EXPECT_EQ(cam.near_plane, expected.near_plane);
+    // A mesh is framed by its vertices: a tetrahedron inside the box comes closer than its box.
+    Mesh tetra;
+    tetra.positions = {{-1, -1, -1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+    tetra.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+    ASSERT_EQ(tetra.bounds().min, box.min);
+    ASSERT_EQ(tetra.bounds().max, box.max);
+    const Camera by_vertices = s.frame(tetra);
+    const Camera want_vertices = frame_camera(box, r.camera, 2.0f, tetra.positions);
+    EXPECT_EQ(by_vertices.eye, want_vertices.eye);
+    EXPECT_LT(glm::length(by_vertices.eye - by_vertices.target), glm::length(cam.eye - cam.target));
     Light want = default_light(box, cam);
     apply_style_light(s.style, want);
     const Light got = s.light(box, cam);
