@@ -1,5 +1,7 @@
 #include "render/frame.hpp"
 
+#include <algorithm>
+
 namespace inkshade::render {
 
 const LineSettings* Frame::line(const std::string& type) const {
@@ -16,7 +18,7 @@ void Frame::set_vertex_scalar(std::vector<float> per_mesh_vertex) {
         vertex_scalar = std::move(per_mesh_vertex);
 }
 
-std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines) {
+std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines, bool may_have_borders) {
     std::vector<LineSettings> out;
     const LineSettings* hull = nullptr;
     bool border = false;
@@ -27,12 +29,15 @@ std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines
     }
     // An open border has no back face behind it for the hull to outline: the hull's `borders`
     // draws it as the object-space `border` type in the hull's stroke, with hidden parts removed.
-    if (hull && !border && line_param(*hull, "borders").at(0) != 0.0f) {
+    // Rims shorter than a few line widths are left out: a scan's sub-pixel folds and flaps have
+    // borders too, and outlined they would be the specks the back-face rule keeps out.
+    if (may_have_borders && hull && !border && line_param(*hull, "borders").at(0) != 0.0f) {
         const Stroke stroke = stroke_of(*hull);
         LineSettings b{.type = "border", .params = {}};
         b.params["color"] = {stroke.color.r, stroke.color.g, stroke.color.b};
         b.params["opacity"] = {stroke.opacity};
         b.params["width"] = {stroke.width};
+        b.params["min-length"] = {std::max(4.0f * stroke.width, 16.0f)};
         out.push_back(std::move(b));
     }
     return out;

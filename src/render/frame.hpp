@@ -47,10 +47,11 @@ struct Frame {
     float aspect() const { return float(options.width) / float(options.height); }
 };
 
-// The object-space lines of `lines`, in order, then `border` in the hull's stroke when `lines`
-// has a hull with `borders` on and no border of its own. Throws InputError for an unknown line
-// type.
-std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines);
+// The object-space lines of `lines`, in order, then `border` in the hull's stroke (rims shorter
+// than max(4 widths, 16 px) dropped) when `lines` has a hull with `borders` on and no border of
+// its own and the mesh `may_have_borders` (it is not closed). Throws InputError for an unknown
+// line type.
+std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines, bool may_have_borders);
 
 // Back faces may be culled only when none can be seen: a closed outward surface with the
 // whole bounding box in front of the near plane (the camera outside, nothing clipped open).

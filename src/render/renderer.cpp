@@ -134,7 +134,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
                        std::vector<PassTiming>* timings) {
     if (!impl_->cpu_mesh) throw RuntimeError("no mesh to render (set_mesh first)");
     check_bit_depth(options);
-    std::vector<LineSettings> object_lines = render::object_lines_of(lines);  // checks every type
+    std::vector<LineSettings> object_lines = render::object_lines_of(lines, !impl_->closed);  // checks every type
     impl_->context->make_current();
     render::Frame frame{
         .camera = camera,
