@@ -7,17 +7,12 @@
 #include "io/gltf_files.hpp"
 #include "io/readers.hpp"
 #include "support/temp_dir.hpp"
+#include "support/expect_near.hpp"
 
 namespace inkshade::test {
 namespace {
 
 using nlohmann::json;
-
-void expect_near(glm::vec3 a, glm::vec3 b, float eps = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, eps) << "x";
-    EXPECT_NEAR(a.y, b.y, eps) << "y";
-    EXPECT_NEAR(a.z, b.z, eps) << "z";
-}
 
 bool has_warning(const Mesh& m, const std::string& phrase) {
     for (const std::string& w : m.warnings)

@@ -10,17 +10,12 @@
 #include "io/mesh_files.hpp"
 #include "io/readers.hpp"
 #include "support/temp_dir.hpp"
+#include "support/expect_near.hpp"
 
 namespace inkshade::test {
 namespace {
 
 using nlohmann::json;
-
-void expect_near(glm::vec3 a, glm::vec3 b, float eps = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, eps) << "x";
-    EXPECT_NEAR(a.y, b.y, eps) << "y";
-    EXPECT_NEAR(a.z, b.z, eps) << "z";
-}
 
 glm::vec3 face_normal(const Mesh& m, size_t t) {
     const glm::uvec3 f = m.triangles[t];

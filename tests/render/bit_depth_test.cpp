@@ -9,14 +9,6 @@
 namespace inkshade::test {
 namespace {
 
-// Lit only by ambient A = 1 (E = 0): a lambert pixel is exactly C, the vertex colour.
-Light ambient_only() {
-    Light l;
-    l.color = glm::vec3(0);
-    l.ambient = glm::vec3(1);
-    return l;
-}
-
 // A square wider than the test camera's view in the z = 0 plane, its vertex colours rising from
 // kLeft at x = -2 to kRight at x = 2: in the image, a gradient along x of 16 8-bit levels.
 constexpr float kLeft = 100.0f / 255.0f, kRight = 116.0f / 255.0f;

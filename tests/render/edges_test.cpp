@@ -19,7 +19,6 @@ ShadingSelection flat_green() {
     s.base_color = glm::vec3(0, 1, 0);
     return s;
 }
-Light ambient_only() { return directional_light(glm::vec3(0, 0, 1), glm::vec3(0), glm::vec3(1)); }
 
 // Axis-aligned box [lo, hi], 8 shared vertices, outward counter-clockwise faces.
 void add_box(Mesh& m, glm::vec3 lo, glm::vec3 hi, uint32_t material = 0) {

@@ -9,14 +9,6 @@
 namespace inkshade::test {
 namespace {
 
-// Lit only by ambient A = 1 (E = 0): a lambert pixel is exactly C.
-Light ambient_only() {
-    Light l;
-    l.color = glm::vec3(0);
-    l.ambient = glm::vec3(1);
-    return l;
-}
-
 RenderOptions small() {
     RenderOptions o;
     o.width = o.height = 64;

@@ -66,6 +66,10 @@ inline Light directional_light(const glm::vec3& direction, const glm::vec3& colo
 
 // World-space ray through image point (x, y) in pixels (top-left origin, y down) for the
 // orthographic camera above: origin on the near plane, direction -z.
+// Lit only by ambient A = 1 (E = 0): a lambert pixel is exactly C (base colour times the
+// vertex, material or texture colour).
+inline Light ambient_only() { return directional_light({0, 0, 1}, glm::vec3(0), glm::vec3(1)); }
+
 inline glm::vec3 ray_origin(const Camera& c, float x, float y, int w = kSize, int h = kSize) {
     float half_h = 0.5f * c.ortho_height, half_w = half_h * float(w) / float(h);
     float wx = (x / float(w) * 2.0f - 1.0f) * half_w;

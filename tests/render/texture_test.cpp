@@ -24,7 +24,6 @@ float srgb_decode(uint8_t byte) {
 float srgb_encode(float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 // Lit only by ambient A = 1 (E = 0): lambert, flat and mtoon all output exactly C.
-Light ambient_only() { return directional_light({0, 0, 1}, glm::vec3(0), glm::vec3(1)); }
 
 RenderOptions single_sample(int size = kSize, bool srgb_output = false) {
     RenderOptions o;
