@@ -30,8 +30,20 @@ TEST(RenderCommand, WritesPngOfRequestedSize) {
 TEST(RenderCommand, RepeatedSetBeforeModelTakesOneValueEach) {
     TempDir dir;
     auto r = run_cli("render --shading phong --set shininess=3 --set specular=1,0,0 builtin:sphere --size 32x32 -o " +
-                     dir.file("a.png"));
-    EXPECT_EQ(r.status, 0) << r.err;
+                     dir.file("a.png") + " --save-style " + dir.file("s.toml"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    // Each --set took its own value (not "3 --set specular=1,0,0 builtin:sphere" as one), and
+    // MODEL after them is still the model.
+    const std::string style = slurp(dir.file("s.toml"));
+    EXPECT_NE(style.find("\nshininess = 3 "), std::string::npos) << style;
+    EXPECT_NE(style.find("\nspecular = '1,0,0' "), std::string::npos) << style;
+    // And they reach the pixels: the red-only highlight of exponent 3 is wide, so somewhere on
+    // the grey sphere red exceeds green by far (white and grey pixels have them equal).
+    const Image img = read_png(dir.file("a.png"));
+    int most = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) most = std::max(most, int(img.pixel(x, y)[0]) - int(img.pixel(x, y)[1]));
+    EXPECT_GT(most, 60);
 }
 
 TEST(RenderCommand, TransparentBackgroundGivesAlphaZero) {

@@ -139,11 +139,16 @@ TEST(LineDrawing, BadSizeAndUnknownTypeAreInputErrors) {
     EXPECT_THROW(extractor.draw(camera, 10, 10, {{"scribbles", {}}}), InputError);
 }
 
-TEST(LineDrawing, EmptyAndDegenerateMeshesGiveEmptyLayers) {
+TEST(LineDrawing, EmptyMeshGivesEmptyLayersAndBrokenFacesOnlyFiniteLines) {
     Mesh empty;
     LineExtractor e(empty);
     const Camera camera = looking_at_origin({0.0f, 0.0f, 4.0f}, false);
-    EXPECT_TRUE(e.draw(camera, 64, 64, {{"contour", {}}, {"border", {}}}).layers.at(0).visible.empty());
+    const LineDrawing none = e.draw(camera, 64, 64, {{"contour", {}}, {"border", {}}});
+    ASSERT_EQ(none.layers.size(), 2u);
+    for (const LineLayer& layer : none.layers) {
+        EXPECT_TRUE(layer.visible.empty()) << layer.settings.type;
+        EXPECT_TRUE(layer.hidden.empty()) << layer.settings.type;
+    }
 
     // Repeated indices, a zero-area face, an out-of-range index and a non-manifold fan.
     Mesh bad;
@@ -152,7 +157,16 @@ TEST(LineDrawing, EmptyAndDegenerateMeshesGiveEmptyLayers) {
     LineExtractor b(bad);
     const LineDrawing d =
         b.draw(camera, 64, 64, {{"contour", {{"silhouette-edges", {1.0f}}}}, {"crease", {}}, {"border", {}}});
-    EXPECT_EQ(d.layers.size(), 3u);
+    ASSERT_EQ(d.layers.size(), 3u);
+    const char* types[] = {"contour", "crease", "border"};
+    for (size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(d.layers[i].settings.type, types[i]);
+        for (const LinePath& p : d.layers[i].visible)
+            for (const glm::vec2& q : p.points) EXPECT_TRUE(std::isfinite(q.x) && std::isfinite(q.y)) << types[i];
+    }
+    // The faces that are triangles still have their open edges: (1, 2), (2, 0) of the first
+    // face and the lone face (3, 4, 5) face the camera.
+    EXPECT_FALSE(d.layers[2].visible.empty());
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "inkshade/error.hpp"
+#include "inkshade/image.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "support/temp_dir.hpp"
 
@@ -175,7 +176,25 @@ TEST(SvgWriter, RsvgConvertRasterisesIt) {
     write_svg(svg, sample_drawing(), glm::vec4(1.0f));
     const int status = std::system(("rsvg-convert " + svg + " -o " + png + " 2>" + dir.file("err")).c_str());
     ASSERT_EQ(status, 0) << "rsvg-convert (librsvg2-bin, installed by scripts/setup) failed";
-    EXPECT_GT(std::filesystem::file_size(png), 0u);
+    // The picture the SVG describes: its size, the orange contour rectangle (2.5 px) where it
+    // runs, its dashed hidden line (orange, lighter) and white away from every line.
+    const Image img = read_png(png);
+    ASSERT_EQ(img.width, 200);
+    ASSERT_EQ(img.height, 100);
+    for (glm::ivec2 p : {glm::ivec2(100, 10), glm::ivec2(190, 40), glm::ivec2(60, 90), glm::ivec2(10, 70)}) {
+        const uint8_t* c = img.pixel(p.x, p.y - (p.y == 10 || p.y == 90 ? 1 : 0));
+        EXPECT_GT(int(c[0]), 200) << p.x << "," << p.y;  // orange (1, 0.5, 0) over white
+        EXPECT_LT(int(c[2]), 60) << p.x << "," << p.y;
+    }
+    int dashed_on = 0, dashed_off = 0;
+    for (int x = 110; x < 170; ++x) {  // right of the crease, which also runs along y = 50
+        const uint8_t* c = img.pixel(x, 50);
+        (c[2] < 200 ? dashed_on : dashed_off)++;
+    }
+    EXPECT_GT(dashed_on, 20) << "the hidden layer is drawn";
+    EXPECT_GT(dashed_off, 5) << "and dashed";
+    for (glm::ivec2 p : {glm::ivec2(100, 30), glm::ivec2(150, 75), glm::ivec2(195, 97)})
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(int(img.pixel(p.x, p.y)[k]), 255) << p.x << "," << p.y;
 }
 
 TEST(SvgWriter, WriteFailsCleanlyInMissingDirectory) {
