@@ -388,7 +388,12 @@ void Viewer::draw_gui() {
         }
         const ShadingModel& model = shading_model(scene_.style.shading.model);
         ImGui::TextWrapped("%s", model.summary.c_str());
-        dirty_ |= ImGui::ColorEdit3("base colour", &scene_.style.shading.base_color.x);
+        // A colour picked here multiplies the model's own colours and textures, as --base-color
+        // does (a style's base colour only tints meshes without them).
+        if (ImGui::ColorEdit3("base colour", &scene_.style.shading.base_color.x)) {
+            scene_.style.shading.base_color_use = BaseColorUse::Multiply;
+            dirty_ = true;
+        }
         dirty_ |= param_widgets(model.params, scene_.style.shading.params);
         dirty_ |= ImGui::ColorEdit4("background", &scene_.style.background.x);
     }
