@@ -16,10 +16,9 @@ uniform int u_srgb_output;
 uniform vec2 u_light_cone;     // spot (INKSHADE_SPOT_LIGHT): cos(outer angle), cos(inner angle)
 uniform float u_light_range;   // INKSHADE_INVERSE_SQUARE: zero light from this distance on (0: none)
 // With INKSHADE_UNLIT (a mesh with glTF KHR_materials_unlit materials), per draw: the material
-// is drawn as C without lighting, in the model's output encoding (u_unlit_srgb: the model
-// writes sRGB, three.js's convention).
+// is drawn as C without lighting, in the frame's output encoding (encode_output: sRGB in the
+// linear convention, render/color_convention.hpp).
 uniform int u_unlit;
-uniform int u_unlit_srgb;
 
 vec3 to_light(vec3 p) {
     vec3 d = (u_light_type == 0) ? (u_light_pos - u_light_target) : (u_light_pos - p);

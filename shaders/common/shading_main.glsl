@@ -12,7 +12,7 @@ void main() {
 #ifdef INKSHADE_UNLIT
     if (u_unlit == 1) {
         vec3 c = clamp(surface().albedo, 0.0, 1.0);
-        o_color = u_unlit_srgb == 1 ? vec4(srgb_encode(c), 1.0) : encode_output(c);
+        o_color = encode_output(c);
     }
 #endif
 #ifdef INKSHADE_RIM_CONTOUR

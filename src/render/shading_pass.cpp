@@ -114,7 +114,6 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame, const A
     program.set("u_light_color", light.color);
     program.set("u_light_cone", glm::vec2(light.cos_outer, light.cos_inner));
     program.set("u_light_range", light.range);
-    program.set("u_unlit_srgb", convention == ColorConvention::Linear ? 1 : 0);
     program.set("u_ambient", light.ambient);
     program.set("u_base_color", albedo.base);
     program.set("u_srgb_output", convention == ColorConvention::Linear ? 1 : 0);
