@@ -18,12 +18,6 @@ namespace {
 
 constexpr size_t kGrain = 4096;  // vertices per TBB task
 
-// Interior angle between edges u and v (atan2: accurate near 0 and π).
-float corner_angle(const glm::vec3& u, const glm::vec3& v) {
-    const float a = std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
-    return std::isfinite(a) ? a : 0.0f;
-}
-
 // The faces around each vertex, in face order: faces[offsets[v] .. offsets[v + 1]).
 struct VertexFaces {
     std::vector<uint32_t> offsets, faces;
@@ -141,7 +135,7 @@ void auto_smooth(Mesh& mesh, float angle_degrees) {
                 ids[f][c] = id;  // each (face, corner) is written by its vertex's task only
                 const glm::vec3 p = mesh.positions[v];
                 sums[id] +=
-                    corner_angle(mesh.positions[t[(c + 1) % 3]] - p, mesh.positions[t[(c + 2) % 3]] - p) * fn[f];
+                    angle_between(mesh.positions[t[(c + 1) % 3]] - p, mesh.positions[t[(c + 2) % 3]] - p) * fn[f];
             }
         }
     });

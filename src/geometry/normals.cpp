@@ -16,13 +16,6 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 bool valid(const glm::uvec3& t, size_t n) { return t.x < n && t.y < n && t.z < n; }
 
-// Interior angle between edges u and v; atan2 stays accurate for nearly flat angles where
-// acos of the normalised dot product loses precision.
-float angle_between(const glm::vec3& u, const glm::vec3& v) {
-    const float a = std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
-    return std::isfinite(a) ? a : 0.0f;
-}
-
 }  // namespace
 
 std::vector<glm::vec3> face_normals(const Mesh& mesh) {

@@ -16,6 +16,13 @@ inline glm::vec3 unit_normal(const glm::vec3& a, const glm::vec3& b, const glm::
     return glm::vec3(n / len);
 }
 
+// Interior angle between edges u and v in radians, 0 when undefined; atan2 stays accurate for
+// nearly flat angles where acos of the normalised dot product loses precision.
+inline float angle_between(const glm::vec3& u, const glm::vec3& v) {
+    const float a = std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+    return std::isfinite(a) ? a : 0.0f;
+}
+
 // unit_normal per triangle; zero for degenerate faces and ones with an out-of-range index.
 std::vector<glm::vec3> face_normals(const Mesh& mesh);
 
