@@ -20,6 +20,9 @@ struct LinePath {
     std::vector<float> depth;       // per point: window depth in [0, 1] as in the GL depth buffer
     std::vector<float> strength;    // per point in [0, 1]: fading and taper (1 = full stroke)
     bool closed = false;
+    // Occlusion level (quantitative invisibility, Appel 1967): how many surfaces lie between
+    // the viewer and this path; 0 = visible.
+    int level = 0;
 };
 
 struct LineLayer {

@@ -25,6 +25,14 @@ constexpr uint64_t vertex_key(uint32_t v) { return edge_key(v, v); }
 // edge and vertex keys never do, so such an end meets no other segment and ends its chain.
 constexpr uint64_t face_interior_key(uint32_t f, uint32_t end) { return (uint64_t(0xffffffffu - end) << 32) | f; }
 
+// Key of the point where a mesh edge pierces a face (line type `intersection`): `id` numbers
+// the distinct (edge, pierced face) pairs of one extraction. High word 0xfffffffc: no edge,
+// vertex or face-interior key has it (nor split points, 0xfffffffd, visibility.cpp).
+constexpr uint64_t pierce_key(uint32_t id) { return (uint64_t(0xfffffffcu) << 32) | id; }
+
+// No face (LineSegment::face_b of a line that lies on one surface only).
+constexpr uint32_t kNoFace = 0xffffffffu;
+
 // One straight piece of a line, shared by every line type (contour, suggestive, crease,
 // border, ridge) so one chainer and one visibility test serve them all. The ends carry node
 // keys: for isolines (contour, suggestive, ridge) the mesh edge the end lies on, computed from
@@ -38,6 +46,8 @@ struct LineSegment {
     uint64_t edge_a = 0, edge_b = 0;             // node keys of a and b (edge_a != edge_b)
     uint32_t face = 0;                           // the face the segment crosses (edge lines: lowest incident face)
     float strength_a = 1.0f, strength_b = 1.0f;  // in [0, 1], for fading; contours and creases 1
+    // The second face an intersection line lies on (the other surface), else kNoFace.
+    uint32_t face_b = kNoFace;
 };
 
 // The contour's name for the shared segment type.
