@@ -144,6 +144,7 @@ py::list to_python(const LineDrawing& drawing) {
         d["strength"] = py::array_t<float>(py::ssize_t(path.strength.size()), path.strength.data());
         d["closed"] = path.closed;
         d["hidden"] = hidden;
+        d["level"] = path.level;
         out.append(d);
     };
     for (const auto& layer : drawing.layers) {
@@ -197,10 +198,12 @@ private:
 
 // The scene of lines() and svg(): the object-space types given, else the style's.
 Scene line_scene(std::optional<std::vector<std::string>> types, const std::string& style,
-                 const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
+                 const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
+                 const py::kwargs& kwargs) {
     SceneRequest r = request_of(style, set, kwargs, {.image = false, .line_drawing = true});
     r.vector_lines = std::move(types);
     r.hidden = hidden;
+    if (levels) r.occlusion_levels = parse_occlusion_levels(*levels);
     return make_scene(r);
 }
 
@@ -368,20 +371,23 @@ PYBIND11_MODULE(inkshade, m) {
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
-               const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
-        return to_python(r.lines(line_scene(std::move(types), style, set, hidden, kwargs)));
+               const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
+               const py::kwargs& kwargs) {
+        return to_python(r.lines(line_scene(std::move(types), style, set, hidden, levels, kwargs)));
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
-            py::arg("hidden") = false,
+            py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
             "Object-space polylines, as `inkshade lines` draws them: a list of {type, points (n,2) pixels, depth, "
-            "strength, closed, hidden}.")
+            "strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels.")
         .def(
             "svg",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
-               const std::vector<std::string>& set, bool hidden, const py::kwargs& kwargs) {
-        const Scene scene = line_scene(std::move(types), style, set, hidden, kwargs);
+               const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
+               const py::kwargs& kwargs) {
+        const Scene scene = line_scene(std::move(types), style, set, hidden, levels, kwargs);
         return format_svg(r.lines(scene), scene.style.background);
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
-            py::arg("hidden") = false, "The SVG text `inkshade lines` writes.");
+            py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
+            "The SVG text `inkshade lines` writes.");
 }

@@ -35,6 +35,7 @@ struct LinesArgs {
     std::string lines;  // --lines a,b,c
     std::string lines_json;
     bool hidden = false;
+    std::string occlusion_levels;  // --occlusion-levels A-B
     int timing = 0;
     ImageOutputOptions image;  // --quality, --bit-depth
 };
@@ -84,6 +85,8 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") {
         image_file = image_output(args.output, args.image);
         if (args.hidden) throw InputError("--hidden: hidden lines are drawn (dashed) in SVG only; write .svg");
+        if (!args.occlusion_levels.empty() && parse_occlusion_levels(args.occlusion_levels).max > 0)
+            throw InputError("--occlusion-levels: hidden levels are drawn (dashed) in SVG only; write .svg");
     } else {
         throw InputError(args.output, "cannot write " +
                                           (ext.empty() ? std::string("line drawings without an extension")
@@ -95,6 +98,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
+    if (!args.occlusion_levels.empty()) request.occlusion_levels = parse_occlusion_levels(args.occlusion_levels);
     if (image_file) request.bit_depth = image_file->bit_depth;
     Scene scene = make_scene(request);
     if (image_file) check_background(*image_file, scene.options.background);
@@ -154,7 +158,11 @@ Command add_lines_command(CLI::App& app) {
                     "object-space line types to draw, comma-separated (default: the style's, else "
                     "contour,suggestive,crease,border)");
     cmd->add_option("--lines-json", args->lines_json, "also write the polylines as JSON (docs/lines.md)");
-    cmd->add_flag("--hidden", args->hidden, "also draw hidden lines, dashed, in layers TYPE-hidden (SVG only)");
+    cmd->add_flag("--hidden", args->hidden,
+                  "also draw every hidden line, dashed, in layers TYPE-hidden-N by occlusion level N (SVG only)");
+    cmd->add_option("--occlusion-levels", args->occlusion_levels,
+                    "occlusion levels drawn, A-B (how many surfaces lie in front; default 0-0 = visible only; "
+                    "1-1: lines behind one surface; 0-: all); levels above 0 are dashed layers TYPE-hidden-N (SVG only)");
     args->image.add_to(*cmd);
     cmd->add_option("--timing", args->timing, "extract N extra views and print median ms per stage and total")
         ->check(CLI::Range(0, 100000));

@@ -28,6 +28,15 @@ struct SceneOutputs {
     bool line_drawing = false;  // LineExtractor::draw: object-space lines (SVG, JSON, Python)
 };
 
+// Occlusion levels a line drawing draws (quantitative invisibility: how many surfaces lie in
+// front of a line; 0 = visible), from `min` to `max`.
+struct OcclusionLevels {
+    int min = 0, max = 0;
+};
+constexpr int kMaxOcclusionLevel = 253;  // the deepest level counted
+// "A-B" (0 ≤ A ≤ B ≤ 253), "A" (A only) or "A-" (A and every deeper level). InputError else.
+OcclusionLevels parse_occlusion_levels(const std::string& text);
+
 struct SceneRequest {
     std::string model;  // mesh file or builtin:NAME (load_mesh)
     // The look: a style (built-in name or .toml file) or a shading model with its default
@@ -42,6 +51,8 @@ struct SceneRequest {
     // default_vector_lines() when the style draws none.
     std::optional<std::vector<std::string>> vector_lines;
     bool hidden = false;  // the line drawing also has the hidden parts (dashed layers)
+    // Every line type of the line drawing draws these levels (its min-level and max-level).
+    std::optional<OcclusionLevels> occlusion_levels;
     // Line types added to an image's style (raster or object-space; `render --lines`), in
     // order after the style's; a type the style draws keeps its parameters.
     std::vector<std::string> added_lines;

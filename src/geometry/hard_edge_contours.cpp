@@ -124,6 +124,7 @@ void hard_edge_pieces(const Mesh& mesh, const std::vector<float>& g, const HalfE
         const bool forward = front.from.vertex == i;
         LineSegment seg;
         seg.face = std::min(A.face, B.face);
+        seg.face_b = std::max(A.face, B.face);  // it lies on both (visibility: PointOn)
         seg.a = forward ? lo.p : hi.p;
         seg.b = forward ? hi.p : lo.p;
         seg.edge_a = forward ? lo.key : hi.key;

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <map>
 
+#include <algorithm>
+
 #include "geometry/chaining.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
@@ -104,6 +106,21 @@ std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImagePr
     return paths;
 }
 
+// Occlusion levels a layer draws: [min-level, max-level], every level with `hidden`.
+struct LevelRange {
+    int min = 0, max = 0;
+};
+constexpr int kMaxLevel = 253;  // the deepest level counted (VisibilityOptions::count_levels_to)
+
+LevelRange drawn_levels(const LineSettings& settings) {
+    LevelRange r{int(line_number(settings, "min-level")), int(line_number(settings, "max-level"))};
+    if (line_number(settings, "hidden") != 0.0f) r.max = kMaxLevel;
+    if (r.min > r.max)
+        throw InputError(settings.type + ": min-level " + std::to_string(r.min) + " is above max-level " +
+                         std::to_string(r.max));
+    return r;
+}
+
 }  // namespace
 
 LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
@@ -127,6 +144,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         object_lines.push_back(&settings);
     }
     if (object_lines.empty()) return drawing;
+    for (const LineSettings* settings : object_lines) drawn_levels(*settings);  // InputError when inverted
 
     Impl& m = *impl_;
     const ImageProjection view(camera, width, height);
@@ -166,22 +184,34 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         timer.add("extract", extract_ms);
     }
 
-    // One scan of the triangles for the two-ring tests of every line type of this view.
-    const IncidentFaces incident = timer("visibility", [&] {
-        std::vector<const std::vector<LineSegment>*> lists;
-        for (const auto& segments : segments_per_type) lists.push_back(&segments);
-        return incident_faces_of(m.data.mesh(), lists);
+    // The faces around the contours, where the cap walks of their visibility test go
+    // (RayScene::occlusion_levels), gathered once per view for every contour list.
+    const IncidentFaces around = timer("visibility", [&] {
+        std::vector<LineSegment> contours;
+        for (size_t i = 0; i < object_lines.size(); ++i)
+            if (object_lines[i]->type == "contour")
+                contours.insert(contours.end(), segments_per_type[i].begin(), segments_per_type[i].end());
+        return contours.empty() ? IncidentFaces() : contour_surroundings(m.data.mesh(), contours);
     });
     for (size_t i = 0; i < object_lines.size(); ++i) {
         const LineSettings* settings = object_lines[i];
         const std::vector<LineSegment>& segments = segments_per_type[i];
-        const bool want_hidden = line_number(*settings, "hidden") != 0.0f;
-        VisibilitySplit split = timer(
-            "visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, {}, &incident); });
+        const LevelRange levels = drawn_levels(*settings);
+        VisibilityOptions options;
+        options.count_levels_to = std::min(levels.max + 1, kMaxLevel);
+        options.contour = settings->type == "contour";
+        const VisibilitySplit split =
+            timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, options, &around); });
+        // Chains per level: a change of level ends a chain.
         auto chained = timer("chain", [&] {
-            std::pair<std::vector<Polyline>, std::vector<Polyline>> out;
-            out.first = chain_segments(split.visible);
-            if (want_hidden) out.second = chain_segments(split.hidden);
+            std::vector<std::pair<int, std::vector<Polyline>>> out;
+            if (levels.min == 0) out.emplace_back(0, chain_segments(split.visible));
+            std::map<int, std::vector<LineSegment>> by_level;
+            for (size_t k = 0; k < split.hidden.size(); ++k) {
+                const int level = split.hidden_levels[k];
+                if (level >= levels.min && level <= levels.max) by_level[level].push_back(split.hidden[k]);
+            }
+            for (const auto& [level, parts] : by_level) out.emplace_back(level, chain_segments(parts));
             return out;
         });
         LineLayer layer;
@@ -189,8 +219,12 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         timer("finish", [&] {
             const float min_length = line_number(*settings, "min-length");
             const int smooth = int(line_number(*settings, "smooth"));
-            layer.visible = to_image(chained.first, view, min_length, smooth);
-            if (want_hidden) layer.hidden = to_image(chained.second, view, min_length, smooth);
+            for (const auto& [level, polylines] : chained) {
+                std::vector<LinePath> paths = to_image(polylines, view, min_length, smooth);
+                for (LinePath& p : paths) p.level = level;
+                auto& into = level == 0 ? layer.visible : layer.hidden;
+                into.insert(into.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
+            }
             return 0;
         });
         drawing.layers.push_back(std::move(layer));

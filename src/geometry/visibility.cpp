@@ -46,39 +46,143 @@ bool ImageProjection::clipped(const glm::vec3& p) const {
 
 namespace {
 
-// rtcOccluded1's context, extended with the sample's near vertices (Embree's documented way to
-// hand per-ray data to a filter function: the context is passed through unchanged).
-struct OcclusionContext {
-    RTCIntersectContext rtc;
-    const glm::uvec3* triangles = nullptr;
-    const IncidentFaces* incident = nullptr;  // faces of the two-ring queries' near vertices
-    const OcclusionQuery* queries = nullptr;  // indexed by the ray's id
+bool has_vertex(const glm::uvec3& t, uint32_t v) { return t.x == v || t.y == v || t.z == v; }
+
+int shared_vertices(const glm::uvec3& t, const glm::uvec3& u) {
+    return int(has_vertex(t, u.x)) + int(has_vertex(t, u.y)) + int(has_vertex(t, u.z));
+}
+
+// Hits recorded per ray for counting each crossing once (levels past this are rare and are
+// counted without that check).
+constexpr int kRecordedHits = 16;
+constexpr int kFoldFaces = 32;  // fold faces kept per contour sample
+
+// What one ray has met so far (the filter's running count).
+struct RayState {
+    uint8_t level = 0;
+    uint8_t recorded = 0;
+    bool fold_known = false;
+    uint8_t fold_count = 0;
+    uint32_t fold[kFoldFaces];  // a contour point's fold faces, once walked
+    float same_point = 0.0f;      // two hits closer than this in t are at one point of the ray
+    float t[kRecordedHits];
+    uint32_t prim[kRecordedHits];
 };
 
-bool shares_vertex(const glm::uvec3& t, uint32_t v) { return t.x == v || t.y == v || t.z == v; }
+// rtcOccluded1M's context, extended with what the filter reads (Embree's documented way to hand
+// per-ray data to a filter function: the context is passed through unchanged).
+struct OcclusionContext {
+    RTCIntersectContext rtc;
+    const Mesh* mesh = nullptr;
+    const glm::uvec3* triangles = nullptr;
+    const IncidentFaces* around = nullptr;
+    const OcclusionQuery* queries = nullptr;  // indexed by the ray's id
+    RayState* states = nullptr;               // likewise
+    int cap = 1;
+    glm::dvec3 eye{0.0}, forward{0.0, 0.0, -1.0};
+    bool orthographic = false;
+};
 
-// Is triangle t within `rings` (1 or 2) face rings of the query's near vertices?
-bool near_face(const OcclusionContext& ctx, const OcclusionQuery& q, const glm::uvec3& t) {
-    for (int k = 0; k < q.near_count; ++k)
-        if (shares_vertex(t, q.near[k])) return true;
-    if (q.rings < 2) return false;
-    for (int k = 0; k < q.near_count; ++k) {
-        const auto [first, last] = ctx.incident->faces(q.near[k]);
-        for (const uint32_t* f = first; f != last; ++f) {
-            const glm::uvec3 u = ctx.triangles[*f];
-            if (shares_vertex(t, u.x) || shares_vertex(t, u.y) || shares_vertex(t, u.z)) return true;
-        }
+// Does triangle `prim` contain the point (by topology)?
+bool contains_point(const OcclusionContext& ctx, const PointOn& on, uint32_t prim, const glm::uvec3& t) {
+    if (prim == on.face || prim == on.face_b) return true;
+    switch (on.kind) {
+        case PointOn::Faces: return false;
+        case PointOn::Edge: return has_vertex(t, on.u) && has_vertex(t, on.v);
+        case PointOn::Vertex: return has_vertex(t, on.u);
+        case PointOn::FaceNeighbours:
+            for (uint32_t f : {on.face, on.face_b})
+                if (f != kNoFace && shared_vertices(t, ctx.triangles[f]) >= 2) return true;
+            return false;
     }
     return false;
 }
 
-// Rejects hits on faces near the tested point: the ray continues past them.
-void skip_near_faces(const RTCFilterFunctionNArguments* args) {
+// The faces of a contour point's fold (RayScene::occlusion_levels): walking the mesh's
+// cross-section in the plane through the ray and the point's normal, both ways from the point,
+// as long as the section stays within `fold_band` of the ray's line, the faces where it meets
+// that line. Writes up to kFoldFaces faces; returns how many.
+int fold_faces(const OcclusionContext& ctx, const OcclusionQuery& q, uint32_t* out) {
+    if (!ctx.around || q.on.face == kNoFace || !(q.fold_band > 0.0f)) return 0;
+    const Mesh& mesh = *ctx.mesh;
+    const glm::dvec3 p(q.point);
+    const glm::dvec3 d = ctx.orthographic ? ctx.forward : glm::normalize(p - ctx.eye);
+    glm::dvec3 up = glm::dvec3(q.normal) - glm::dot(glm::dvec3(q.normal), d) * d;  // in the plane, ⟂ ray
+    const double up_len = glm::length(up);
+    if (!(up_len > 1e-12)) return 0;
+    up /= up_len;
+    const glm::dvec3 m = glm::cross(d, up);  // the plane's normal
+    const double band = double(q.fold_band);
+    auto side = [&](uint32_t v) { return glm::dot(glm::dvec3(mesh.positions[v]) - p, m) >= 0.0; };
+    // Where the plane cuts edge (a, b) (sides differ), from the ordered pair so that both faces
+    // of the edge get the same point; its height above the ray's line.
+    auto height = [&](uint32_t a, uint32_t b) {
+        if (a > b) std::swap(a, b);
+        const glm::dvec3 pa(mesh.positions[a]), pb(mesh.positions[b]);
+        const double sa = glm::dot(pa - p, m), sb = glm::dot(pb - p, m);
+        const double t = sa / (sa - sb);
+        return glm::dot(pa + t * (pb - pa) - p, up);
+    };
+    int n = 0;
+    // One way: from `face` (entered by edge (in_a, in_b); kNoFace when p is inside it and
+    // `rising` picks the way), out by its other cut edge, until the section leaves the band.
+    auto walk = [&](uint32_t face, uint32_t in_a, uint32_t in_b, bool rising) {
+        double h_in = 0.0;
+        for (int step = 0; step < 256 && face != kNoFace; ++step) {
+            const glm::uvec3 t = ctx.triangles[face];
+            uint32_t exit_a = kNoFace, exit_b = kNoFace;
+            double h_out = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t a = t[k], b = t[(k + 1) % 3];
+                if (side(a) == side(b) || (a == in_a && b == in_b) || (a == in_b && b == in_a)) continue;
+                const double h = height(a, b);
+                if (step == 0 && in_a == kNoFace && (h > 0.0) != rising) continue;  // the other way
+                exit_a = a, exit_b = b, h_out = h;
+                break;
+            }
+            if (exit_a == kNoFace) return;
+            // The section meets the ray's line inside this face (p's own face aside).
+            if (step > 0 && (h_in <= 0.0) != (h_out <= 0.0) && n < kFoldFaces) out[n++] = face;
+            if (!(std::abs(h_out) <= band)) return;
+            in_a = exit_a, in_b = exit_b, h_in = h_out;
+            face = ctx.around->across(mesh, face, exit_a, exit_b);
+        }
+    };
+    if (q.on.kind == PointOn::Edge) {
+        // p on an edge: one way through each of its two faces.
+        walk(q.on.face, q.on.u, q.on.v, true);
+        walk(ctx.around->across(mesh, q.on.face, q.on.u, q.on.v), q.on.u, q.on.v, true);
+    } else {
+        walk(q.on.face, kNoFace, kNoFace, true);
+        walk(q.on.face, kNoFace, kNoFace, false);
+    }
+    return n;
+}
+
+// Counts each crossing once and lets the ray go on until the cap is reached.
+void count_crossings(const RTCFilterFunctionNArguments* args) {
     const auto* ctx = reinterpret_cast<const OcclusionContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        const OcclusionQuery& q = ctx->queries[RTCRayN_id(args->ray, args->N, i)];
-        if (near_face(*ctx, q, ctx->triangles[RTCHitN_primID(args->hit, args->N, i)])) args->valid[i] = 0;
+        const unsigned id = RTCRayN_id(args->ray, args->N, i);
+        const OcclusionQuery& q = ctx->queries[id];
+        RayState& st = ctx->states[id];
+        const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+        const glm::uvec3 tri = ctx->triangles[prim];
+        args->valid[i] = 0;  // rejected unless it completes the count
+        if (contains_point(*ctx, q.on, prim, tri)) continue;
+        if (q.fold_band > 0.0f) {
+            if (!st.fold_known) st.fold_count = uint8_t(fold_faces(*ctx, q, st.fold)), st.fold_known = true;
+            if (std::find(st.fold, st.fold + st.fold_count, prim) != st.fold + st.fold_count) continue;
+        }
+        const float t = RTCRayN_tfar(args->ray, args->N, i);
+        bool seen = false;
+        for (int k = 0; k < st.recorded && !seen; ++k)
+            seen = st.prim[k] == prim ||
+                   (std::abs(st.t[k] - t) <= st.same_point && shared_vertices(tri, ctx->triangles[st.prim[k]]) > 0);
+        if (seen) continue;
+        if (st.recorded < kRecordedHits) st.t[st.recorded] = t, st.prim[st.recorded] = prim, ++st.recorded;
+        if (++st.level >= ctx->cap) args->valid[i] = -1;  // enough: the ray stops here
     }
 }
 
@@ -109,7 +213,7 @@ struct RayScene::Impl {
 
 RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
-    tolerance_ = 1e-4 * std::max(double(mesh.bounds().diagonal()), 1e-30);
+    tolerance_ = 1e-5 * std::max(double(mesh.bounds().diagonal()), 1e-30);
     // AVX2 at most: Debian's Embree 3.13.5 loops forever inside rtcOccluded1M on its AVX-512
     // kernels (seen on an AVX-512 Xeon with the line-drawing tests; the same rays finish at once
     // with max_isa=avx2 or sse4.2). CPUs without AVX2 still get their best ISA.
@@ -146,7 +250,7 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
         // Indices are shared (12-byte stride, no padding needed).
         rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.triangles, 0, sizeof(glm::uvec3),
                                    nf);
-        rtcSetGeometryOccludedFilterFunction(geom, skip_near_faces);
+        rtcSetGeometryOccludedFilterFunction(geom, count_crossings);
         rtcCommitGeometry(geom);
         rtcAttachGeometry(m.scene, geom);
         rtcReleaseGeometry(geom);
@@ -206,52 +310,60 @@ std::pair<const uint32_t*, const uint32_t*> IncidentFaces::faces(uint32_t v) con
     return {faces_.data() + offset_[slot_[v]], faces_.data() + offset_[slot_[v] + 1]};
 }
 
-// ---- RayScene queries ----------------------------------------------------------------------
-
-bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices, int near_count,
-                        int rings, double clearance, const IncidentFaces* incident) const {
-    const OcclusionQuery query{p, near_vertices, near_count, rings, clearance};
-    uint8_t hidden = 0;
-    occluded(view, &query, 1, &hidden, incident);
-    return hidden != 0;
+uint32_t IncidentFaces::across(const Mesh& mesh, uint32_t face, uint32_t a, uint32_t b) const {
+    if (a == b) return kNoFace;
+    const auto [first, last] = faces(a);
+    uint32_t found = kNoFace;
+    for (const uint32_t* f = first; f != last; ++f) {
+        if (*f == face || !has_vertex(mesh.triangles[*f], b)) continue;
+        if (found != kNoFace && found != *f) return kNoFace;  // non-manifold: no one neighbour
+        found = *f;
+    }
+    return found;
 }
 
-void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* hidden,
-                        const IncidentFaces* incident) const {
-    IncidentFaces own;
-    if (!incident) {
-        std::vector<uint32_t> ring_vertices;
-        for (size_t i = 0; i < count; ++i)
-            if (queries[i].rings >= 2)
-                ring_vertices.insert(ring_vertices.end(), queries[i].near, queries[i].near + queries[i].near_count);
-        own = IncidentFaces(*impl_->mesh, ring_vertices);
-        incident = &own;
-    }
+// ---- RayScene queries ----------------------------------------------------------------------
+
+bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const PointOn& on) const {
+    OcclusionQuery query;
+    query.point = p;
+    query.on = on;
+    uint8_t level = 0;
+    occlusion_levels(view, &query, 1, &level, 1);
+    return level != 0;
+}
+
+void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuery* queries, size_t count,
+                                uint8_t* levels, int cap, const IncidentFaces* around) const {
+    cap = std::clamp(cap, 1, 255);
     const Camera& cam = view.camera();
     const double near = double(cam.near_plane);
     const glm::dvec3 eye(cam.eye);
     const glm::dvec3 forward = glm::normalize(glm::dvec3(cam.target) - eye);
     std::vector<RTCRay> rays(count);
+    std::vector<RayState> states(count);
     for (size_t i = 0; i < count; ++i) {
         const OcclusionQuery& q = queries[i];
-        const double tolerance = std::max(tolerance_, q.clearance);
         const double z = view.view_depth(q.point);
         glm::dvec3 org, dir;
-        double tnear = 0.0, tfar = 0.0;
+        double tnear = 0.0, tfar = 0.0, same_point = 0.0;
         if (cam.orthographic) {
             // From the near plane along the view direction, unit speed: t is a distance.
             const double s = z - near;
             org = glm::dvec3(q.point) - s * forward;
             dir = forward;
-            tfar = s - tolerance;
+            tfar = s - tolerance_;
+            same_point = 1e-6 * std::abs(s);
         } else {
             // From the eye, t = 1 at p; starts where the ray crosses the near plane.
             org = eye;
             dir = glm::dvec3(q.point) - org;
             const double len = glm::length(dir);
             tnear = z > 0.0 ? near / z : 1.0;
-            tfar = len > 0.0 ? 1.0 - tolerance / len : 0.0;
+            tfar = len > 0.0 ? 1.0 - tolerance_ / len : 0.0;
+            same_point = 1e-6;
         }
+        states[i].same_point = float(same_point);
         RTCRay& ray = rays[i];
         ray.org_x = float(org.x), ray.org_y = float(org.y), ray.org_z = float(org.z);
         ray.dir_x = float(dir.x), ray.dir_y = float(dir.y), ray.dir_z = float(dir.z);
@@ -269,54 +381,128 @@ void RayScene::occluded(const ImageProjection& view, const OcclusionQuery* queri
     // Samples come in mesh order (sorted by node key): neighbouring rays are nearly parallel,
     // so Embree traces them as packets (about 15 % less time than one rtcOccluded1 each).
     ctx.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    ctx.mesh = impl_->mesh;
     ctx.triangles = impl_->triangles;
-    ctx.incident = incident;
+    ctx.around = around;
     ctx.queries = queries;
+    ctx.states = states.data();
+    ctx.cap = cap;
+    ctx.eye = eye;
+    ctx.forward = forward;
+    ctx.orthographic = cam.orthographic;
     if (count == 1)
         rtcOccluded1(impl_->scene, &ctx.rtc, &rays[0]);
     else if (count > 1)
         rtcOccluded1M(impl_->scene, &ctx.rtc, rays.data(), unsigned(count), sizeof(RTCRay));
-    for (size_t i = 0; i < count; ++i) hidden[i] = rays[i].tfar < 0.0f;  // −inf on a hit
+    for (size_t i = 0; i < count; ++i) levels[i] = states[i].level;
 }
 
 // ---- split_by_visibility -----------------------------------------------------------------
 
 namespace {
 
-enum class Sight : uint8_t { Visible, Hidden, Clipped };
+constexpr uint8_t kClipped = 0xff;  // a sample outside the near/far range (levels are ≤ 255 − 1)
 
-// Vertices whose faces a sample ignores, from a node key (see contours.hpp for the key kinds).
-struct NearSet {
-    uint32_t v[8];
-    int n = 0;
-    void add(uint32_t x) {
-        for (int i = 0; i < n; ++i)
-            if (v[i] == x) return;
-        if (n < 8) v[n++] = x;
-    }
-};
+bool is_vertex_key(uint64_t key) { return uint32_t(key >> 32) == uint32_t(key); }
+bool is_edge_key(uint64_t key) { return uint32_t(key >> 32) < uint32_t(key); }
+bool is_pierce_key(uint64_t key) { return uint32_t(key >> 32) == 0xfffffffcu; }
 
-void add_face(NearSet& s, const Mesh& mesh, uint32_t face) {
-    if (face >= mesh.triangles.size()) return;
-    const glm::uvec3 t = mesh.triangles[face];
-    s.add(t.x), s.add(t.y), s.add(t.z);
+// A segment along a mesh edge (crease, border, silhouette edge): vertex keys at both ends.
+bool along_edge(const LineSegment& s) { return is_vertex_key(s.edge_a) && is_vertex_key(s.edge_b); }
+
+bool valid_face(const Mesh& mesh, uint32_t f) {
+    if (f >= mesh.triangles.size()) return false;
+    const glm::uvec3 t = mesh.triangles[f];
+    const size_t nv = mesh.positions.size();
+    return t.x < nv && t.y < nv && t.z < nv;
 }
 
-NearSet near_of_key(const Mesh& mesh, uint64_t key, uint32_t face) {
-    NearSet s;
-    const uint32_t hi = uint32_t(key >> 32), lo = uint32_t(key);
-    if (hi < lo)
-        s.add(hi), s.add(lo);  // mesh edge
-    else if (hi == lo)
-        s.add(hi);  // mesh vertex
-    else
-        add_face(s, mesh, face);  // inside a face
-    return s;
+// What the points strictly inside a segment lie on.
+PointOn interior_on(const Mesh& mesh, const LineSegment& s) {
+    PointOn on;
+    if (valid_face(mesh, s.face)) on.face = s.face;
+    if (valid_face(mesh, s.face_b)) on.face_b = s.face_b;
+    if (s.face_b == kNoFace && along_edge(s)) {
+        on.kind = PointOn::Edge;
+        on.u = uint32_t(s.edge_a), on.v = uint32_t(s.edge_b);
+    }
+    return on;
+}
+
+// What a segment end with node key `key` lies on (key kinds: contours.hpp).
+PointOn end_on(const Mesh& mesh, const LineSegment& s, uint64_t key) {
+    PointOn on = interior_on(mesh, s);
+    if (is_vertex_key(key)) {
+        on.kind = PointOn::Vertex;
+        on.u = uint32_t(key), on.v = kNoFace;
+    } else if (is_edge_key(key)) {
+        uint32_t a = uint32_t(key >> 32), b = uint32_t(key);
+        if (on.face != kNoFace && on.face_b == kNoFace) {
+            // An isoline's end on an edge of its face: the key names the edge by vertices, or on
+            // a mesh with hard edges by the corners' shading normals (hard_edge_contours.hpp).
+            const glm::uvec3 t = mesh.triangles[on.face];
+            if (!(has_vertex(t, a) && has_vertex(t, b)) && mesh.has_hard_edges()) {
+                const glm::uvec3 n = mesh.shading_normal_ids[on.face];
+                uint32_t found[2], k_found = 0;
+                for (int k = 0; k < 3; ++k)
+                    if ((n[k] == a || n[k] == b) && k_found < 2) found[k_found++] = t[k];
+                if (k_found == 2) a = found[0], b = found[1];
+            }
+            if (has_vertex(t, a) && has_vertex(t, b) && a != b) on.kind = PointOn::Edge, on.u = a, on.v = b;
+        } else if (on.face == kNoFace && a < mesh.positions.size() && b < mesh.positions.size()) {
+            on.kind = PointOn::Edge, on.u = a, on.v = b;
+        }
+        // A hard edge's piece (face and face_b: the edge's two faces) keeps its two faces.
+    } else if (is_pierce_key(key)) {
+        on.kind = PointOn::FaceNeighbours;
+    }
+    return on;
+}
+
+// The interpolated unit normal at p in face f (vertex normals, or the corners' shading normals
+// on a mesh with hard edges, as the contour itself takes them); zero when undefined.
+glm::vec3 interpolated_normal(const Mesh& mesh, uint32_t f, const glm::vec3& point) {
+    const glm::uvec3 t = mesh.triangles[f];
+    glm::dvec3 n[3];
+    for (int k = 0; k < 3; ++k)
+        n[k] = glm::dvec3(mesh.has_hard_edges() ? mesh.shading_normals[mesh.shading_normal_ids[f][k]]
+                                                : mesh.normals[t[k]]);
+    const glm::dvec3 P0(mesh.positions[t.x]), e1 = glm::dvec3(mesh.positions[t.y]) - P0,
+        e2 = glm::dvec3(mesh.positions[t.z]) - P0;
+    // Barycentric coordinates from the Gram matrix of (e1, e2).
+    const double g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
+    const double det = g11 * g22 - g12 * g12;
+    if (!(std::abs(det) > 0.0)) return glm::vec3(0.0f);
+    const glm::dvec3 x = glm::dvec3(point) - P0;
+    const double r1 = glm::dot(x, e1), r2 = glm::dot(x, e2);
+    const double b1 = (g22 * r1 - g12 * r2) / det, b2 = (g11 * r2 - g12 * r1) / det;
+    const glm::dvec3 ni = (1.0 - b1 - b2) * n[0] + b1 * n[1] + b2 * n[2];
+    const double len = glm::length(ni);
+    return len > 0.0 ? glm::vec3(ni / len) : glm::vec3(0.0f);
+}
+
+// World size of a pixel at p's depth.
+double pixel_size_at(const ImageProjection& view, const glm::vec3& p) {
+    const Camera& cam = view.camera();
+    if (cam.orthographic) return double(cam.ortho_height) / view.height();
+    return view.view_depth(p) * 2.0 * std::tan(0.5 * glm::radians(double(cam.fov_degrees))) / view.height();
+}
+
+OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm::vec3& p, const PointOn& on,
+                        float fold_px) {
+    OcclusionQuery q;
+    q.point = p;
+    q.on = on;
+    if (fold_px > 0.0f && on.face != kNoFace && on.face_b == kNoFace && on.kind != PointOn::Vertex) {
+        q.normal = interpolated_normal(mesh, on.face, p);
+        if (q.normal != glm::vec3(0.0f)) q.fold_band = float(fold_px * pixel_size_at(view, p));
+    }
+    return q;
 }
 
 struct Piece {
     double t0, t1;
-    Sight sight;
+    uint8_t level;
 };
 
 glm::vec3 lerp(const LineSegment& s, double t) {
@@ -329,46 +515,31 @@ double pixel_distance(const ImageProjection& view, const glm::vec3& a, const glm
 }
 
 // Key of a split point: high word 0xfffffffd, low word a counter below it — no edge key
-// (high < low), vertex key (high == low) or face_interior_key (high ≥ 0xfffffffe) has it.
+// (high < low), vertex key (high == low), face_interior_key (high ≥ 0xfffffffe) or pierce key
+// (0xfffffffc) has it.
 constexpr uint64_t split_key(uint32_t counter) { return (uint64_t(0xfffffffdu) << 32) | counter; }
 
-// How a segment's samples are tested: lines along mesh edges (vertex keys at both ends) lie
-// on their faces, one ring; isolines graze, two rings and a clearance of the face's size.
-struct SampleRule {
-    int rings = 1;
-    double clearance = 0.0;
+struct Tester {
+    const RayScene& scene;
+    const Mesh& mesh;
+    const ImageProjection& view;
+    const IncidentFaces* around;
+    int cap;
+    float fold_px;  // contour samples: the fold band in pixels, else 0
+
+    uint8_t level(const glm::vec3& p, const PointOn& on) const {
+        if (view.clipped(p)) return kClipped;
+        const OcclusionQuery q = query_at(mesh, view, p, on, fold_px);
+        uint8_t level = 0;
+        scene.occlusion_levels(view, &q, 1, &level, cap, around);
+        return level;
+    }
 };
 
-SampleRule rule_of(const Mesh& mesh, const LineSegment& s, const VisibilityOptions& options) {
-    const bool on_edges =
-        uint32_t(s.edge_a >> 32) == uint32_t(s.edge_a) && uint32_t(s.edge_b >> 32) == uint32_t(s.edge_b);
-    if (on_edges) return {1, 0.0};
-    SampleRule rule{options.exclusion_rings, 0.0};
-    if (s.face < mesh.triangles.size()) {
-        const glm::uvec3 t = mesh.triangles[s.face];
-        const size_t nv = mesh.positions.size();
-        if (t.x < nv && t.y < nv && t.z < nv) {
-            const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
-            rule.clearance = options.isoline_clearance *
-                             double(std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)}));
-        }
-    }
-    return rule;
-}
-
-Sight sight_of(const RayScene& scene, const ImageProjection& view, const glm::vec3& p, const NearSet& near,
-               const SampleRule& rule, const IncidentFaces& incident) {
-    if (view.clipped(p)) return Sight::Clipped;
-    return scene.occluded(view, p, near.v, near.n, rule.rings, rule.clearance, &incident) ? Sight::Hidden
-                                                                                          : Sight::Visible;
-}
-
-// Sight of every segment end, each shared node tested once: neighbouring segments of a chain
+// Level of every segment end, each shared node tested once: neighbouring segments of a chain
 // meet at bit-identical points with equal keys (contours.hpp), so about half the rays of a
 // per-segment test are saved, and both segments agree on the shared end by construction.
-std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
-                              const std::vector<LineSegment>& segments, const std::vector<SampleRule>& rules,
-                              const IncidentFaces& incident) {
+std::vector<uint8_t> end_levels(const Tester& tester, const std::vector<LineSegment>& segments) {
     struct End {
         uint64_t key;
         uint32_t px, py, pz;  // position bits: a node is one key at one point
@@ -397,10 +568,9 @@ std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const Ima
             ends[k].pz != ends[k - 1].pz)
             starts.push_back(uint32_t(k));
     starts.push_back(uint32_t(ends.size()));
-    std::vector<Sight> sights(2 * n);
+    std::vector<uint8_t> levels(2 * n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, starts.size() - 1, 64), [&](const tbb::blocked_range<size_t>& r) {
         // One stream of rays per block (rtcOccluded1M); clipped nodes need no ray.
-        std::vector<NearSet> near(r.size());
         std::vector<OcclusionQuery> queries;
         std::vector<size_t> query_group;
         queries.reserve(r.size());
@@ -408,126 +578,125 @@ std::vector<Sight> end_sights(const RayScene& scene, const Mesh& mesh, const Ima
             const End& first = ends[starts[g]];
             const LineSegment& s = segments[first.index / 2];
             const glm::vec3 p = (first.index & 1) ? s.b : s.a;
-            if (view.clipped(p)) {
-                for (uint32_t k = starts[g]; k < starts[g + 1]; ++k) sights[ends[k].index] = Sight::Clipped;
+            if (tester.view.clipped(p)) {
+                for (uint32_t k = starts[g]; k < starts[g + 1]; ++k) levels[ends[k].index] = kClipped;
                 continue;
             }
-            SampleRule rule;
-            for (uint32_t k = starts[g]; k < starts[g + 1]; ++k) {
-                const SampleRule& r2 = rules[ends[k].index / 2];
-                rule.rings = std::max(rule.rings, r2.rings);
-                rule.clearance = std::max(rule.clearance, r2.clearance);
-            }
-            NearSet& ns = near[g - r.begin()];
-            ns = near_of_key(mesh, first.key, s.face);
-            queries.push_back({p, ns.v, ns.n, rule.rings, rule.clearance});
+            queries.push_back(query_at(tester.mesh, tester.view, p, end_on(tester.mesh, s, first.key), tester.fold_px));
             query_group.push_back(g);
         }
-        std::vector<uint8_t> hidden(queries.size());
-        scene.occluded(view, queries.data(), queries.size(), hidden.data(), &incident);
+        std::vector<uint8_t> found(queries.size());
+        tester.scene.occlusion_levels(tester.view, queries.data(), queries.size(), found.data(), tester.cap,
+                                      tester.around);
         for (size_t q = 0; q < queries.size(); ++q) {
             const size_t g = query_group[q];
-            for (uint32_t k = starts[g]; k < starts[g + 1]; ++k)
-                sights[ends[k].index] = hidden[q] ? Sight::Hidden : Sight::Visible;
+            for (uint32_t k = starts[g]; k < starts[g + 1]; ++k) levels[ends[k].index] = found[q];
         }
     });
-    return sights;
+    return levels;
 }
 
 }  // namespace
 
-IncidentFaces incident_faces_of(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& lists,
-                                const VisibilityOptions& options) {
-    // Every near vertex of a two-ring sample: the segment's face and its end keys' vertices.
-    std::vector<uint32_t> ring_vertices;
-    for (const std::vector<LineSegment>* list : lists)
-        for (const LineSegment& s : *list) {
-            if (rule_of(mesh, s, options).rings < 2) continue;
-            for (const NearSet& e : {near_of_key(mesh, s.edge_a, s.face), near_of_key(mesh, s.edge_b, s.face)})
-                ring_vertices.insert(ring_vertices.end(), e.v, e.v + e.n);
-            if (s.face < mesh.triangles.size())
-                for (int k = 0; k < 3; ++k) ring_vertices.push_back(mesh.triangles[s.face][k]);
-        }
-    return IncidentFaces(mesh, ring_vertices);
+IncidentFaces contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours) {
+    std::vector<uint32_t> vertices;
+    vertices.reserve(3 * contours.size());
+    for (const LineSegment& s : contours)
+        for (uint32_t f : {s.face, s.face_b})
+            if (valid_face(mesh, f))
+                for (int k = 0; k < 3; ++k) vertices.push_back(mesh.triangles[f][k]);
+    if (vertices.empty()) return {};
+    // One ring out: the vertices of every face around those, then their faces.
+    const IncidentFaces first(mesh, vertices);
+    std::vector<uint32_t> grown = vertices;
+    for (uint32_t v : vertices) {
+        const auto [b, e] = first.faces(v);
+        for (const uint32_t* f = b; f != e; ++f)
+            for (int k = 0; k < 3; ++k) grown.push_back(mesh.triangles[*f][k]);
+    }
+    std::sort(grown.begin(), grown.end());
+    grown.erase(std::unique(grown.begin(), grown.end()), grown.end());
+    return IncidentFaces(mesh, grown);
 }
 
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
                                     const std::vector<LineSegment>& segments, const VisibilityOptions& options,
-                                    const IncidentFaces* incident) {
+                                    const IncidentFaces* around) {
     const size_t n = segments.size();
     const double spacing = std::max(double(options.sample_spacing_px), 1e-3);
     const double precision = std::max(double(options.transition_precision_px), 1e-4);
-    constexpr uint8_t kSplit = 0xff;
-    std::vector<uint8_t> whole(n, kSplit);      // Sight of an unsplit segment, else kSplit
-    std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
-    std::vector<SampleRule> rules(n);
-    tbb::parallel_for(size_t(0), n, [&](size_t i) { rules[i] = rule_of(mesh, segments[i], options); });
     IncidentFaces own;
-    if (!incident) {
-        own = incident_faces_of(mesh, {&segments}, options);
-        incident = &own;
+    if (!around && options.contour) {
+        own = contour_surroundings(mesh, segments);
+        around = &own;
     }
-    const std::vector<Sight> ends = end_sights(scene, mesh, view, segments, rules, *incident);
+    const Tester tester{scene, mesh, view, around, std::clamp(options.count_levels_to, 1, 253),
+                        options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f};
+    constexpr uint8_t kSplit = 0xfe;  // not a level (levels ≤ 253) nor kClipped
+    std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
+    std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
+    const std::vector<uint8_t> ends = end_levels(tester, segments);
 
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
-        std::vector<Sight> sights;
+        std::vector<uint8_t> levels;
         for (size_t i = r.begin(); i != r.end(); ++i) {
             const LineSegment& s = segments[i];
-            const SampleRule& rule = rules[i];
-            NearSet inside;  // samples strictly inside the segment
-            add_face(inside, mesh, s.face);
-            for (const NearSet& e : {near_of_key(mesh, s.edge_a, s.face), near_of_key(mesh, s.edge_b, s.face)})
-                for (int k = 0; k < e.n; ++k) inside.add(e.v[k]);
+            const PointOn inside = interior_on(mesh, s);
             int steps = 1;
             if (!view.clipped(s.a) && !view.clipped(s.b)) {
                 const double px = pixel_distance(view, s.a, s.b);
                 // NaN (a degenerate camera) keeps one step instead of an undefined conversion.
                 if (std::isfinite(px)) steps = int(std::clamp(std::ceil(px / spacing), 1.0, 16384.0));
             }
-            sights.resize(size_t(steps) + 1);
-            sights[0] = ends[2 * i];
-            sights[size_t(steps)] = ends[2 * i + 1];
-            for (int k = 1; k < steps; ++k)
-                sights[size_t(k)] = sight_of(scene, view, lerp(s, double(k) / steps), inside, rule, *incident);
-            if (std::all_of(sights.begin(), sights.end(), [&](Sight x) { return x == sights[0]; })) {
-                whole[i] = uint8_t(sights[0]);
+            levels.resize(size_t(steps) + 1);
+            levels[0] = ends[2 * i];
+            levels[size_t(steps)] = ends[2 * i + 1];
+            for (int k = 1; k < steps; ++k) levels[size_t(k)] = tester.level(lerp(s, double(k) / steps), inside);
+            if (std::all_of(levels.begin(), levels.end(), [&](uint8_t x) { return x == levels[0]; })) {
+                whole[i] = levels[0];
                 continue;
             }
-            // Runs of equal sight; each change bisected between its two samples.
+            // Runs of equal level; each change bisected between its two samples.
             std::vector<Piece>& out = pieces[i];
             double start = 0.0;
             for (int k = 0; k < steps; ++k) {
-                if (sights[size_t(k)] == sights[size_t(k) + 1]) continue;
+                if (levels[size_t(k)] == levels[size_t(k) + 1]) continue;
                 double lo = double(k) / steps, hi = double(k + 1) / steps;
                 for (int iter = 0; iter < 60; ++iter) {
                     const glm::vec3 plo = lerp(s, lo), phi = lerp(s, hi);
                     const bool measurable = !view.clipped(plo) && !view.clipped(phi);
                     if (measurable ? pixel_distance(view, plo, phi) <= precision : hi - lo < 1e-7) break;
                     const double mid = 0.5 * (lo + hi);
-                    (sight_of(scene, view, lerp(s, mid), inside, rule, *incident) == sights[size_t(k)] ? lo : hi) = mid;
+                    (tester.level(lerp(s, mid), inside) == levels[size_t(k)] ? lo : hi) = mid;
                 }
                 const double t = 0.5 * (lo + hi);
-                out.push_back({start, t, sights[size_t(k)]});
+                out.push_back({start, t, levels[size_t(k)]});
                 start = t;
             }
-            out.push_back({start, 1.0, sights[size_t(steps)]});
+            out.push_back({start, 1.0, levels[size_t(steps)]});
         }
     });
 
     // Serial gather in input order, so split keys and output order are deterministic.
     VisibilitySplit result;
+    auto emit = [&](const LineSegment& part, uint8_t level) {
+        if (level == kClipped) return;
+        if (level == 0) {
+            result.visible.push_back(part);
+        } else {
+            result.hidden.push_back(part);
+            result.hidden_levels.push_back(level);
+        }
+    };
     uint32_t counter = 0;
     for (size_t i = 0; i < n; ++i) {
         const LineSegment& s = segments[i];
         if (whole[i] != kSplit) {
-            if (Sight(whole[i]) == Sight::Visible)
-                result.visible.push_back(s);
-            else if (Sight(whole[i]) == Sight::Hidden)
-                result.hidden.push_back(s);
+            emit(s, whole[i]);
             continue;
         }
         for (const Piece& p : pieces[i]) {
-            if (p.sight == Sight::Clipped) continue;
+            if (p.level == kClipped) continue;
             LineSegment part = s;
             if (p.t0 > 0.0) {
                 part.a = lerp(s, p.t0);
@@ -539,7 +708,7 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
                 part.edge_b = split_key(counter++);
                 part.strength_b = float(s.strength_a + p.t1 * (s.strength_b - s.strength_a));
             }
-            (p.sight == Sight::Visible ? result.visible : result.hidden).push_back(part);
+            emit(part, p.level);
         }
     }
     return result;

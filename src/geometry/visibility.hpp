@@ -1,9 +1,10 @@
 // Hidden-line removal for object-space lines (vector lines get a visibility test per segment,
 // raster lines a depth test): each line segment is sampled densely enough in the image
-// (≤ 1 px apart), every sample is tested by a ray from the eye towards it against the mesh
-// (Embree 3), and segments are split where visibility changes, the transition found by
-// bisection to sub-pixel precision. This is the ray-cast counterpart of Freestyle's and rtsc's
-// tests, exact up to the sampling instead of limited by a depth buffer's resolution.
+// (≤ 1 px apart), every sample's occlusion level (how many surfaces lie in front of it) is
+// counted by a ray from the eye towards it against the mesh (Embree 3), and segments are split
+// where the level changes, the change found by bisection to sub-pixel precision. A line's own
+// faces are told apart by topology (PointOn), never by a distance; docs/lines.md has the method
+// and its limits.
 #pragma once
 #include <memory>
 #include <utility>
@@ -40,14 +41,31 @@ private:
     glm::dvec3 eye_, forward_;
 };
 
-// One point to test (RayScene::occluded): the faces within `rings` rings of `near` are
-// ignored, and hits closer than max(tolerance, clearance) to the point along the ray.
+// What a tested point lies on. The faces that contain the point can never lie in front of it,
+// and a grazing ray may graze them, so they are not occluders — decided by topology, never by
+// a distance: `face` and `face_b` always, plus the faces that contain the mesh edge (u, v)
+// (Edge), the vertex u (Vertex), or share an edge with `face` or `face_b` (FaceNeighbours: an
+// intersection line's end, where a mesh edge pierces a face).
+struct PointOn {
+    enum Kind : uint8_t { Faces, Edge, Vertex, FaceNeighbours };
+    Kind kind = Faces;
+    uint32_t face = kNoFace, face_b = kNoFace;
+    uint32_t u = kNoFace, v = kNoFace;
+
+    static PointOn in_face(uint32_t f, uint32_t g = kNoFace) { return {Faces, f, g}; }
+    static PointOn on_edge(uint32_t a, uint32_t b) { return {Edge, kNoFace, kNoFace, a, b}; }
+    static PointOn at_vertex(uint32_t a) { return {Vertex, kNoFace, kNoFace, a}; }
+};
+
+// One point to test (RayScene::occlusion_levels).
 struct OcclusionQuery {
     glm::vec3 point{0.0f};
-    const uint32_t* near = nullptr;
-    int near_count = 0;
-    int rings = 1;
-    double clearance = 0.0;
+    PointOn on;
+    // A sample of an occluding contour: its fold (RayScene::occlusion_levels) within this
+    // distance of the ray (world units; 0 = not a contour sample), and the interpolated unit
+    // normal at the point.
+    float fold_band = 0.0f;
+    glm::vec3 normal{0.0f};
 };
 
 // One spare vertex of capacity, written (zero) once, so that RayScene can share `positions`
@@ -55,9 +73,9 @@ struct OcclusionQuery {
 void reserve_embree_padding(std::vector<glm::vec3>& positions);
 
 // Faces incident to a chosen set of vertices (CSR over those vertices only), from one scan of
-// the triangles: what the two-ring test needs around the samples of one view, instead of a
-// mesh-wide vertex → face table (140 MB at 10 M triangles, issue 9's memory budget). Triangles
-// with an out-of-range index are left out.
+// the triangles: the neighbourhood of the contours of one view, which the cap walk of
+// RayScene::occlusion_levels crosses, instead of a mesh-wide vertex → face table (140 MB at
+// 10 M triangles). Triangles with an out-of-range index are left out.
 class IncidentFaces {
 public:
     IncidentFaces() = default;
@@ -66,6 +84,10 @@ public:
 
     // Faces incident to v, ascending ([first, last)); empty when v was not chosen.
     std::pair<const uint32_t*, const uint32_t*> faces(uint32_t v) const;
+
+    // The one face other than `face` that has both a and b as vertices; kNoFace on a border,
+    // a non-manifold edge, or when a or b was not chosen.
+    uint32_t across(const Mesh& mesh, uint32_t face, uint32_t a, uint32_t b) const;
 
 private:
     static constexpr uint32_t kNone = 0xffffffffu;
@@ -86,36 +108,38 @@ public:
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
-    // Ray-casting tolerance (world units): hits closer than this to the tested point along the
-    // ray do not occlude it. 1e-4 × the bounding-box diagonal — far below a pixel at any
-    // framing that shows the whole model (a 4096 px image of the model spans ~4e-4 of it per
-    // pixel), yet above float rounding of coordinates (~1e-7 relative), so coincident copies of
-    // a surface (z-fighting duplicates) do not hide each other's lines.
+    // Numerical tolerance (world units): a hit this close to the tested point along the ray is
+    // taken to be at the point. 1e-5 × the bounding-box diagonal: above float rounding of
+    // coordinates and ray parameters (~1e-7 relative), so a coincident copy of a surface (an
+    // unwelded seam, z-fighting duplicates) does not hide its lines, yet 100× below a plate
+    // 1e-3 of the model in front of another. It is not what keeps a line's own faces from
+    // hiding it: that is PointOn, by topology.
     double tolerance() const { return tolerance_; }
 
-    // True when the straight path from the viewer to `p` (from the eye, or from the near plane
-    // along the view direction when orthographic; starting at the near plane either way, as
-    // GL clips) crosses a triangle before reaching p − tolerance. Triangles within `rings`
-    // (1 or 2) face rings of the vertices `near_vertices` are ignored: 1 = faces incident to
-    // them (the faces the point lies on), 2 = also faces sharing a vertex with those.
-    //
-    // Why rings and not a larger distance: a contour point lies where the surface turns away
-    // from the ray, so the ray grazes the surface there and, on a piecewise-linear mesh, may
-    // cut a nearby face well before p (interpolated n·v = 0 is not where the faces' own
-    // normals flip; near the slivers at a UV sphere's pole the cut face is two rings away, at
-    // a depth up to an edge length before p). No distance tolerance small enough to keep real
-    // occluders catches that; excluding the point's neighbourhood does, and still lets thin
-    // features (the two sides of a sheet) hide each other's lines away from their rim.
-    // `clearance` (world units) raises the tolerance for this test: hits closer than that to p
-    // along the ray do not count. `incident`: as for the batch call below.
-    bool occluded(const ImageProjection& view, const glm::vec3& p, const uint32_t* near_vertices, int near_count,
-                  int rings = 1, double clearance = 0.0, const IncidentFaces* incident = nullptr) const;
-    // The same for `count` queries at once, as one ray stream (rtcOccluded1M); hidden[i] = 1
-    // where query i is occluded. Two-ring queries look up the faces of their near vertices in
-    // `incident`, which must cover them; without it, one is built for these queries (a scan
-    // of all triangles: pass one when testing many batches, as split_by_visibility does).
-    void occluded(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* hidden,
-                  const IncidentFaces* incident = nullptr) const;
+    // Occlusion levels (quantitative invisibility, Appel 1967): for each query, the number of
+    // surface crossings on the straight path from the viewer to the point (from the eye, or
+    // from the near plane along the view direction when orthographic; starting at the near
+    // plane either way, as GL clips), up to `cap` (a level ≥ cap is reported as cap, and the
+    // ray stops there: cap 1 answers "hidden or not" at the cost of one occlusion ray).
+    //   - Faces that contain the point (PointOn) do not count, nor hits within tolerance().
+    //   - Hits at one point of the ray on faces sharing a vertex count once (a ray through a
+    //     shared edge or vertex of an occluder crosses one surface, not two).
+    //   - A contour sample's own fold does not count either. An interpolated contour (n·v = 0
+    //     from vertex normals) is where the ray grazes the smooth surface the normals describe;
+    //     the polygon mesh deviates from that surface, so near the point the mesh's cross-section
+    //     in the plane of the ray and the normal wiggles across the ray's line (the contour often
+    //     lies on a back-facing face just inside the polygon outline, behind a thin cap). Those
+    //     crossings are found exactly: walking the cross-section both ways from the point while
+    //     it stays within `fold_band` of the ray's line (a quarter pixel: what the image cannot
+    //     tell from the line), the faces where it meets the line are the fold's. A surface that
+    //     comes back to the ray after leaving that band — the tube of a torus in front of its
+    //     inner contour, the sheet that hides a contour past a T-junction — counts. The walk
+    //     crosses edges through `around` (contour_surroundings) and stops after 256 faces or
+    //     where `around` has no neighbour (a border, a non-manifold edge).
+    void occlusion_levels(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* levels,
+                          int cap = 1, const IncidentFaces* around = nullptr) const;
+    // One query; true when its level is ≥ 1.
+    bool occluded(const ImageProjection& view, const glm::vec3& p, const PointOn& on = {}) const;
 
 private:
     struct Impl;
@@ -127,40 +151,40 @@ struct VisibilityOptions {
     // Largest image distance between two tested samples of a segment (pixels): a ~1 px gap
     // misses only occluders thinner than a pixel, which the PNG would not show either.
     float sample_spacing_px = 1.0f;
-    // Bisection of a visibility change stops when the bracket is this short (pixels).
+    // Bisection of a change of level stops when the bracket is this short (pixels).
     float transition_precision_px = 0.01f;
-    // Face rings ignored around each sample (RayScene::occluded) of isolines (contour,
-    // suggestive: contours graze the surface). Segments along mesh edges (vertex keys at both
-    // ends: creases, borders, silhouette edges) lie exactly on their faces and use one ring.
-    int exclusion_rings = 2;
-    // Isoline samples also ignore hits closer along the ray than this times the longest edge
-    // of the segment's face. Rings are not a metric: at the slivers around a UV sphere's pole
-    // a grazing ray cuts a face three narrow columns away, 0.4 edge lengths before the point.
-    // Real occluders that close are missed only within about an edge length of a T-junction.
-    float isoline_clearance = 1.0f;
+    // Levels are counted up to this (RayScene::occlusion_levels' cap, 1..255): 1 tells
+    // visible from hidden at the cost of one occlusion ray per sample (hidden parts then all
+    // have level 1).
+    int count_levels_to = 1;
+    // The segments are occluding contours (line type `contour`): their samples inside faces
+    // and on edges ignore their fold (RayScene::occlusion_levels) within this many pixels.
+    bool contour = false;
+    float contour_fold_px = 0.25f;
 };
 
-// The segments' parts, split where visibility changes. Parts keep the original node keys at
-// unsplit ends, so chain_segments joins them as before; a split point gets a node key of its
-// own (it ends a chain). Strength is interpolated linearly at split points. Parts outside the
-// near/far range are dropped (the renderer clips them too). Output order follows the input.
+// The segments' parts, split where the occlusion level changes. Parts keep the original node
+// keys at unsplit ends, so chain_segments joins them as before; a split point gets a node key
+// of its own (it ends a chain). Strength is interpolated linearly at split points. Parts
+// outside the near/far range are dropped (the renderer clips them too). Output order follows
+// the input.
 struct VisibilitySplit {
-    std::vector<LineSegment> visible;
-    std::vector<LineSegment> hidden;
+    std::vector<LineSegment> visible;    // level 0
+    std::vector<LineSegment> hidden;     // level ≥ 1
+    std::vector<uint8_t> hidden_levels;  // per hidden part: its level (≤ count_levels_to)
 };
 
 // Tests segments of `mesh` (the mesh of `scene`) seen through `view`; parallel over segments
-// (TBB), deterministic. The near vertices of a sample come from its node keys: the edge's two
-// vertices, the crease vertex, or the three vertices of the segment's face for points inside
-// a face. Two-ring samples look their near vertices up in `incident` (incident_faces_of these
-// segments, or of several lists that include them); without it, one is built here.
+// (TBB), deterministic. What each sample lies on (PointOn) comes from its segment and node
+// keys: the segment's face(s) inside it, the faces of the mesh edge or vertex at a keyed end,
+// the faces of the edge a crease or border runs along. `around`: contour_surroundings of these
+// segments or of a list that includes them; built here when null and options.contour is set.
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
                                     const std::vector<LineSegment>& segments, const VisibilityOptions& options = {},
-                                    const IncidentFaces* incident = nullptr);
+                                    const IncidentFaces* around = nullptr);
 
-// The faces around every near vertex of the two-ring samples of these segment lists (one scan
-// of the triangles, about 30 ms at 10 M): build it once per view for all line types.
-IncidentFaces incident_faces_of(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& lists,
-                                const VisibilityOptions& options = {});
+// The faces around the vertices of the contour segments' faces and of the faces next to them
+// (two scans of the triangles): where the cap walks of one view go.
+IncidentFaces contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours);
 
 }  // namespace inkshade::geometry

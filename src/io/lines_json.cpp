@@ -1,5 +1,5 @@
 // JSON form of a LineDrawing for scripts (--lines-json); schema in docs/lines.md:
-// {"width", "height", "layers": [{"type", "params", "stroke", "paths": [{"hidden", "closed",
+// {"width", "height", "layers": [{"type", "params", "stroke", "paths": [{"hidden", "level", "closed",
 // "points": [[x, y], ...], "depth": [...], "strength": [...]}]}]}.
 // Numbers are rounded (1e-3 px, 1e-7 depth, 1e-4 strength) so the text is short and stable.
 #include <cmath>
@@ -38,7 +38,7 @@ nlohmann::json path_json(const LinePath& p, bool hidden) {
     for (const glm::vec2& q : p.points) points.push_back({rounded(q.x, 1e-3), rounded(q.y, 1e-3)});
     for (float d : p.depth) depth.push_back(rounded(d, 1e-7));
     for (float s : p.strength) strength.push_back(rounded(s, 1e-4));
-    return {{"hidden", hidden}, {"closed", p.closed}, {"points", points}, {"depth", depth}, {"strength", strength}};
+    return {{"hidden", hidden}, {"level", p.level}, {"closed", p.closed}, {"points", points}, {"depth", depth}, {"strength", strength}};
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <map>
 #include <string>
 
 #include "inkshade/line_drawing.hpp"
@@ -147,10 +149,13 @@ std::string format_svg(const LineDrawing& drawing, glm::vec4 background) {
         out += "<rect id=\"background\" x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
                hex_color(glm::vec3(background)) + "\"" +
                (background.a < 1.0f ? " fill-opacity=\"" + number(background.a) + "\"" : std::string()) + "/>\n";
-    // Each type's hidden layer goes below its visible one.
+    // Each type's hidden layers (one per occlusion level that has paths, TYPE-hidden-N) go
+    // below its visible one, the deepest lowest.
     for (const LineLayer& layer : drawing.layers) {
-        if (line_param(layer.settings, "hidden").at(0) != 0.0f)
-            write_layer(out, layer.settings.type + "-hidden", layer, layer.hidden, true);
+        std::map<int, std::vector<LinePath>, std::greater<int>> by_level;
+        for (const LinePath& p : layer.hidden) by_level[std::max(p.level, 1)].push_back(p);
+        for (const auto& [level, paths] : by_level)
+            write_layer(out, layer.settings.type + "-hidden-" + std::to_string(level), layer, paths, true);
         write_layer(out, layer.settings.type, layer, layer.visible, false);
     }
     out += "</svg>\n";

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <functional>
 
 #include "inkshade/error.hpp"
@@ -179,6 +180,29 @@ void check_camera_options(const CameraOptions& o, OptionNames names) {
         throw InputError(name("margin") + ": expected a fraction of the image in [0, 0.5)");
 }
 
+OcclusionLevels parse_occlusion_levels(const std::string& text) {
+    auto fail = [&]() -> OcclusionLevels {
+        throw InputError("occlusion levels: expected A-B with 0 <= A <= B <= " + std::to_string(kMaxOcclusionLevel) +
+                         " (0 = visible), A, or A- for A and deeper; got '" + text + "'");
+    };
+    auto number = [&](const std::string& digits) {
+        if (digits.empty() || digits.size() > 3 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) fail();
+        const int v = std::stoi(digits);
+        if (v > kMaxOcclusionLevel) fail();
+        return v;
+    };
+    const size_t dash = text.find('-');
+    if (dash == std::string::npos) {
+        const int a = number(text);
+        return {a, a};
+    }
+    const int a = number(text.substr(0, dash));
+    const std::string rest = text.substr(dash + 1);
+    const int b = rest.empty() ? kMaxOcclusionLevel : number(rest);
+    if (b < a) fail();
+    return {a, b};
+}
+
 const std::vector<std::string>& default_vector_lines() {
     // The lines of a classic line drawing: outline, interior shape cues, sharp edges, open edges.
     static const std::vector<std::string> lines = {"contour", "suggestive", "crease", "border"};
@@ -218,6 +242,11 @@ Scene make_scene(const SceneRequest& r) {
         // Overrides after the selection, so TYPE.param=value reaches a type that --lines adds.
         Style lines_style = named;
         lines_style.lines = select_vector_lines(named, r);
+        if (r.occlusion_levels)
+            for (LineSettings& l : lines_style.lines) {
+                l.params["min-level"] = {float(r.occlusion_levels->min)};
+                l.params["max-level"] = {float(r.occlusion_levels->max)};
+            }
         if (r.hidden)
             for (LineSettings& l : lines_style.lines) l.params["hidden"] = {1.0f};
         apply_overrides(r, lines_style);  // hidden=0 given by --set wins over `hidden`

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,7 +79,7 @@ TEST(LinesCommand, DefaultLinesJsonAndSets) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << r.err;
     const std::string svg = slurp(dir.file("t.svg"));
-    for (const char* id : {"contour", "suggestive", "crease", "border", "contour-hidden"})
+    for (const char* id : {"contour", "suggestive", "crease", "border", "contour-hidden-1"})
         EXPECT_NE(svg.find("<g id=\"" + std::string(id) + "\""), std::string::npos) << id;
     EXPECT_NE(svg.find("viewBox=\"0 0 200 150\""), std::string::npos);
     const nlohmann::json j = nlohmann::json::parse(slurp(dir.file("t.json")));
@@ -88,8 +89,38 @@ TEST(LinesCommand, DefaultLinesJsonAndSets) {
     EXPECT_EQ(j.at("layers")[2].at("params").at("angle"), 45.0);
     EXPECT_FALSE(j.at("layers")[0].at("paths").empty());
     bool any_hidden = false;
-    for (const auto& p : j.at("layers")[0].at("paths")) any_hidden |= p.at("hidden").get<bool>();
+    for (const auto& p : j.at("layers")[0].at("paths")) {
+        any_hidden |= p.at("hidden").get<bool>();
+        EXPECT_EQ(p.at("hidden").get<bool>(), p.at("level").get<int>() > 0);
+    }
     EXPECT_TRUE(any_hidden) << "the teapot hides part of its own contour (--hidden)";
+}
+
+// Levels by --occlusion-levels: 0-1 adds the contour behind one surface (dashed layer
+// contour-hidden-1) and nothing deeper; 1- leaves the visible layer empty and keeps every hidden
+// level; the JSON's levels match the layers.
+TEST(LinesCommand, OcclusionLevelsSelectLayers) {
+    TempDir dir;
+    const std::string base = "lines builtin:torus --up-axis z --elevation 20 --size 240x180 --lines contour ";
+    auto r = run_cli(base + "--occlusion-levels 0-1 -o " + dir.file("a.svg") + " --lines-json " + dir.file("a.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string svg = slurp(dir.file("a.svg"));
+    EXPECT_NE(svg.find("<g id=\"contour\""), std::string::npos);
+    EXPECT_NE(svg.find("<g id=\"contour-hidden-1\""), std::string::npos) << "a torus hides its inner contour";
+    EXPECT_EQ(svg.find("<g id=\"contour-hidden-2\""), std::string::npos);
+    nlohmann::json j = nlohmann::json::parse(slurp(dir.file("a.json")));
+    std::set<int> levels;
+    for (const auto& p : j.at("layers")[0].at("paths")) levels.insert(p.at("level").get<int>());
+    EXPECT_EQ(levels, (std::set<int>{0, 1}));
+
+    r = run_cli(base + "--occlusion-levels 1- -o " + dir.file("b.svg") + " --lines-json " + dir.file("b.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    j = nlohmann::json::parse(slurp(dir.file("b.json")));
+    levels.clear();
+    for (const auto& p : j.at("layers")[0].at("paths")) levels.insert(p.at("level").get<int>());
+    ASSERT_FALSE(levels.empty());
+    EXPECT_GE(*levels.begin(), 1) << "no visible path";
+    EXPECT_GE(*levels.rbegin(), 2) << "the inner contour behind the whole tube crosses two surfaces";
 }
 
 TEST(LinesCommand, TimingPrintsStagesAndTotal) {
@@ -185,6 +216,14 @@ TEST(LinesCommand, ImageOutputsAndTheirLimits) {
              {"-o " + dir.file("x"),
               dir.file("x") + ": cannot write line drawings without an extension (write .svg, .png, .jpg or .jpeg)"},
              {"--hidden -o " + dir.file("x.png"), "--hidden: hidden lines are drawn (dashed) in SVG only; write .svg"},
+             {"--occlusion-levels 0-1 -o " + dir.file("x.png"),
+              "--occlusion-levels: hidden levels are drawn (dashed) in SVG only; write .svg"},
+             {"--occlusion-levels 2-1 -o " + dir.file("x.svg"),
+              "occlusion levels: expected A-B with 0 <= A <= B <= 253 (0 = visible), A, or A- for A and deeper; "
+              "got '2-1'"},
+             {"--occlusion-levels 0-999 -o " + dir.file("x.svg"),
+              "occlusion levels: expected A-B with 0 <= A <= B <= 253 (0 = visible), A, or A- for A and deeper; "
+              "got '0-999'"},
              {"--quality 50 -o " + dir.file("x.svg"), "--quality: applies to .jpg and .jpeg output only"},
              {"--quality 50 -o " + dir.file("x.png"), "--quality: applies to .jpg and .jpeg output only"},
              {"--bit-depth 16 -o " + dir.file("x.svg"), "--bit-depth: applies to .png output only"},

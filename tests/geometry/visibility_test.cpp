@@ -210,8 +210,8 @@ TEST(Visibility, PointsOnTheFrontSurfaceAreVisibleAndBehindAreHidden) {
         if (sphere.positions[v].z > sphere.positions[front].z) front = v;
         if (sphere.positions[v].z < sphere.positions[back].z) back = v;
     }
-    EXPECT_FALSE(scene.occluded(view, sphere.positions[front], &front, 1));
-    EXPECT_TRUE(scene.occluded(view, sphere.positions[back], &back, 1));
+    EXPECT_FALSE(scene.occluded(view, sphere.positions[front], PointOn::at_vertex(front)));
+    EXPECT_TRUE(scene.occluded(view, sphere.positions[back], PointOn::at_vertex(back)));
     EXPECT_GT(scene.tolerance(), 0.0);
     EXPECT_LT(scene.tolerance(), 1e-3);
 }
@@ -224,12 +224,12 @@ TEST(Visibility, DegenerateAndOutOfRangeTrianglesNeverOcclude) {
     const RayScene scene(m);
     const Camera camera = camera_at({0.0f, 0.0f, 5.0f}, {0, 1, 0});
     const ImageProjection view(camera, kWidth, kHeight);
-    EXPECT_FALSE(scene.occluded(view, {0.0f, -0.0f, -1.0f}, nullptr, 0));
-    EXPECT_FALSE(scene.occluded(view, {0.0f, -2.0f, -1.0f}, nullptr, 0));
+    EXPECT_FALSE(scene.occluded(view, {0.0f, -0.0f, -1.0f}));
+    EXPECT_FALSE(scene.occluded(view, {0.0f, -2.0f, -1.0f}));
     // A proper triangle does occlude.
     m.triangles.push_back({0, 4, 1});
     const RayScene with_wall(m);
-    EXPECT_TRUE(with_wall.occluded(view, {0.0f, -2.0f, -1.0f}, nullptr, 0));
+    EXPECT_TRUE(with_wall.occluded(view, {0.0f, -2.0f, -1.0f}));
 }
 
 TEST(Visibility, IncidentFacesListsTheChosenVerticesFacesAscending) {
@@ -262,8 +262,8 @@ TEST(Visibility, SharedAndCopiedVertexBuffersGiveTheSameAnswers) {
     const ImageProjection view(camera, kWidth, kHeight);
     int hidden = 0;
     for (uint32_t v = 0; v < copied.positions.size(); v += 7) {
-        const bool ha = a.occluded(view, copied.positions[v], &v, 1, 2);
-        EXPECT_EQ(ha, b.occluded(view, shared.positions[v], &v, 1, 2)) << "vertex " << v;
+        const bool ha = a.occluded(view, copied.positions[v], PointOn::at_vertex(v));
+        EXPECT_EQ(ha, b.occluded(view, shared.positions[v], PointOn::at_vertex(v))) << "vertex " << v;
         hidden += ha;
     }
     EXPECT_GT(hidden, 10);  // both sides of the question were asked

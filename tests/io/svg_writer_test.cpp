@@ -90,6 +90,9 @@ LineDrawing sample_drawing() {
     contour.settings = {"contour", {{"color", {1.0f, 0.5f, 0.0f}}, {"width", {2.5f}}, {"hidden", {1.0f}}}};
     contour.visible.push_back(path({{10, 10}, {190, 10}, {190, 90}, {10, 90}}, true));
     contour.hidden.push_back(path({{20.004f, 50}, {180.333f, 50.5f}}, false));
+    contour.hidden.back().level = 1;
+    contour.hidden.push_back(path({{20, 60}, {180, 60}}, false));  // behind two surfaces
+    contour.hidden.back().level = 2;
     LineLayer suggestive;
     suggestive.settings = {"suggestive", {{"opacity", {0.8f}}}};
     // Fades in: strength 0 → 1 along the path.
@@ -125,18 +128,22 @@ TEST(SvgWriter, WellFormedWithInkscapeLayersAndViewBox) {
             EXPECT_TRUE(e.attributes.count("stroke-width"));
             layers.push_back(e.attributes.at("id"));
         }
-    // Each hidden layer directly below its visible one.
-    EXPECT_EQ(layers, (std::vector<std::string>{"contour-hidden", "contour", "suggestive", "crease"}));
+    // Each hidden level its own layer below its visible one, the deepest lowest.
+    EXPECT_EQ(layers,
+              (std::vector<std::string>{"contour-hidden-2", "contour-hidden-1", "contour", "suggestive", "crease"}));
+    int dashed = 0;
     for (const Element& e : elements) {
         if (e.name == "g" && e.attributes.at("id") == "contour") {
             EXPECT_EQ(e.attributes.at("stroke"), "#ff8000");
             EXPECT_EQ(e.attributes.at("stroke-width"), "2.5");
             EXPECT_FALSE(e.attributes.count("stroke-dasharray"));
         }
-        if (e.name == "g" && e.attributes.at("id") == "contour-hidden") {
+        if (e.name == "g" && e.attributes.at("id").rfind("contour-hidden-", 0) == 0) {
             EXPECT_TRUE(e.attributes.count("stroke-dasharray"));
+            ++dashed;
         }
     }
+    EXPECT_EQ(dashed, 2);
     EXPECT_NE(svg.find("<rect id=\"background\""), std::string::npos);
     // Compact numbers, closed loops with Z.
     EXPECT_NE(svg.find("d=\"M10 10 L190 10 190 90 10 90 Z\""), std::string::npos) << svg;
@@ -214,7 +221,7 @@ TEST(LinesJson, RoundTripsLayersAndPaths) {
     EXPECT_EQ(contour.at("params").at("hidden"), true);
     EXPECT_EQ(contour.at("params").at("smooth"), 0);
     EXPECT_EQ(contour.at("stroke").at("color"), nlohmann::json::parse("[1, 0.5, 0]"));
-    ASSERT_EQ(contour.at("paths").size(), 2u);
+    ASSERT_EQ(contour.at("paths").size(), 3u);
     const auto& loop = contour.at("paths")[0];
     EXPECT_EQ(loop.at("closed"), true);
     EXPECT_EQ(loop.at("hidden"), false);
@@ -223,6 +230,9 @@ TEST(LinesJson, RoundTripsLayersAndPaths) {
     EXPECT_EQ(loop.at("depth")[0], 0.5);
     const auto& hidden = contour.at("paths")[1];
     EXPECT_EQ(hidden.at("hidden"), true);
+    EXPECT_EQ(hidden.at("level"), 1);
+    EXPECT_EQ(loop.at("level"), 0);
+    EXPECT_EQ(contour.at("paths")[2].at("level"), 2);
     EXPECT_NEAR(hidden.at("points")[0][0].get<double>(), 20.004, 1e-9);
     const auto& fade = j.at("layers")[1].at("paths")[0].at("strength");
     EXPECT_EQ(fade, nlohmann::json::parse("[0, 0.25, 0.5, 1, 1]"));
