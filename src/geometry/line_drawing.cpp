@@ -186,12 +186,12 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
 
     // The faces around the contours, where the cap walks of their visibility test go
     // (RayScene::occlusion_levels), gathered once per view for every contour list.
-    const IncidentFaces around = timer("visibility", [&] {
+    const EdgeNeighbours around = timer("visibility", [&] {
         std::vector<LineSegment> contours;
         for (size_t i = 0; i < object_lines.size(); ++i)
             if (object_lines[i]->type == "contour")
                 contours.insert(contours.end(), segments_per_type[i].begin(), segments_per_type[i].end());
-        return contours.empty() ? IncidentFaces() : contour_surroundings(m.data.mesh(), contours);
+        return contours.empty() ? EdgeNeighbours() : contour_surroundings(m.data.mesh(), contours);
     });
     for (size_t i = 0; i < object_lines.size(); ++i) {
         const LineSettings* settings = object_lines[i];

@@ -75,7 +75,7 @@ struct OcclusionContext {
     RTCIntersectContext rtc;
     const Mesh* mesh = nullptr;
     const glm::uvec3* triangles = nullptr;
-    const IncidentFaces* around = nullptr;
+    const EdgeNeighbours* around = nullptr;
     const OcclusionQuery* queries = nullptr;  // indexed by the ray's id
     RayState* states = nullptr;               // likewise
     int cap = 1;
@@ -145,13 +145,13 @@ int fold_faces(const OcclusionContext& ctx, const OcclusionQuery& q, uint32_t* o
             if (step > 0 && (h_in <= 0.0) != (h_out <= 0.0) && n < kFoldFaces) out[n++] = face;
             if (!(std::abs(h_out) <= band)) return;
             in_a = exit_a, in_b = exit_b, h_in = h_out;
-            face = ctx.around->across(mesh, face, exit_a, exit_b);
+            face = ctx.around->across(face, exit_a, exit_b);
         }
     };
     if (q.on.kind == PointOn::Edge) {
         // p on an edge: one way through each of its two faces.
         walk(q.on.face, q.on.u, q.on.v, true);
-        walk(ctx.around->across(mesh, q.on.face, q.on.u, q.on.v), q.on.u, q.on.v, true);
+        walk(ctx.around->across(q.on.face, q.on.u, q.on.v), q.on.u, q.on.v, true);
     } else {
         walk(q.on.face, kNoFace, kNoFace, true);
         walk(q.on.face, kNoFace, kNoFace, false);
@@ -268,58 +268,45 @@ void reserve_embree_padding(std::vector<glm::vec3>& positions) {
     positions.pop_back();
 }
 
-// ---- IncidentFaces -----------------------------------------------------------------------
+// ---- EdgeNeighbours ----------------------------------------------------------------------
 
-IncidentFaces::IncidentFaces(const Mesh& mesh, const std::vector<uint32_t>& vertices) {
+EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& vertices) {
     const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
     if (vertices.empty()) return;
-    // Dense slots (4 B a vertex for the view's duration) make a lookup one load; the scan tests
-    // a bitmap first (600 kB at 5 M vertices: it stays in cache, the slots would not).
-    slot_.assign(nv, kNone);
-    std::vector<uint64_t> chosen((nv + 63) / 64, 0);
-    uint32_t count = 0;
+    std::vector<uint64_t> chosen((nv + 63) / 64, 0);  // a bitmap stays in cache during the scan
     for (uint32_t v : vertices)
-        if (v < nv && slot_[v] == kNone) {
-            slot_[v] = count++;
-            chosen[v / 64] |= uint64_t(1) << (v % 64);
-        }
-    // Blocks of faces in parallel, each listing (slot, face) for its chosen vertices; blocks are
-    // concatenated in order, so each vertex's faces come out ascending.
+        if (v < nv) chosen[v / 64] |= uint64_t(1) << (v % 64);
+    // Blocks of faces in parallel, each listing the edges of its faces that touch a chosen vertex.
     constexpr size_t kBlock = size_t(1) << 16;
-    std::vector<std::vector<glm::uvec2>> found((nf + kBlock - 1) / kBlock);
+    std::vector<std::vector<std::pair<uint64_t, uint32_t>>> found((nf + kBlock - 1) / kBlock);
     tbb::parallel_for(size_t(0), found.size(), [&](size_t b) {
         for (size_t f = b * kBlock, end = std::min(nf, f + kBlock); f < end; ++f) {
             const glm::uvec3 t = mesh.triangles[f];
             if (t.x >= nv || t.y >= nv || t.z >= nv) continue;
-            for (uint32_t v : {t.x, t.y, t.z})
-                if ((chosen[v / 64] >> (v % 64)) & 1) found[b].emplace_back(slot_[v], uint32_t(f));
+            bool near = false;
+            for (uint32_t v : {t.x, t.y, t.z}) near |= ((chosen[v / 64] >> (v % 64)) & 1) != 0;
+            if (!near) continue;
+            for (int k = 0; k < 3; ++k)
+                if (t[k] != t[(k + 1) % 3]) found[b].emplace_back(edge_key(t[k], t[(k + 1) % 3]), uint32_t(f));
         }
     });
-    offset_.assign(size_t(count) + 1, 0);
-    for (const auto& list : found)
-        for (const glm::uvec2& x : list) ++offset_[x.x + 1];
-    for (size_t i = 0; i < count; ++i) offset_[i + 1] += offset_[i];
-    faces_.resize(offset_.back());
-    std::vector<uint32_t> fill(offset_.begin(), offset_.end() - 1);
-    for (const auto& list : found)
-        for (const glm::uvec2& x : list) faces_[fill[x.x]++] = x.y;
+    size_t total = 0;
+    for (const auto& list : found) total += list.size();
+    edges_.reserve(total);
+    for (const auto& list : found) edges_.insert(edges_.end(), list.begin(), list.end());
+    tbb::parallel_sort(edges_.begin(), edges_.end());
+    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());  // a face with a repeated edge
 }
 
-std::pair<const uint32_t*, const uint32_t*> IncidentFaces::faces(uint32_t v) const {
-    if (v >= slot_.size() || slot_[v] == kNone) return {nullptr, nullptr};
-    return {faces_.data() + offset_[slot_[v]], faces_.data() + offset_[slot_[v] + 1]};
-}
-
-uint32_t IncidentFaces::across(const Mesh& mesh, uint32_t face, uint32_t a, uint32_t b) const {
+uint32_t EdgeNeighbours::across(uint32_t face, uint32_t a, uint32_t b) const {
     if (a == b) return kNoFace;
-    const auto [first, last] = faces(a);
+    const uint64_t key = edge_key(a, b);
+    auto it = std::lower_bound(edges_.begin(), edges_.end(), std::make_pair(key, uint32_t(0)));
     uint32_t found = kNoFace;
-    for (const uint32_t* f = first; f != last; ++f) {
-        if (*f == face || !has_vertex(mesh.triangles[*f], b)) continue;
-        if (found != kNoFace && found != *f) return kNoFace;  // non-manifold: no one neighbour
-        found = *f;
-    }
-    return found;
+    int count = 0;
+    for (; it != edges_.end() && it->first == key; ++it, ++count)
+        if (it->second != face) found = it->second;
+    return count == 2 ? found : kNoFace;  // a border (1) or non-manifold edge (3+): no one neighbour
 }
 
 // ---- RayScene queries ----------------------------------------------------------------------
@@ -334,7 +321,7 @@ bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const P
 }
 
 void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuery* queries, size_t count,
-                                uint8_t* levels, int cap, const IncidentFaces* around) const {
+                                uint8_t* levels, int cap, const EdgeNeighbours* around) const {
     cap = std::clamp(cap, 1, 255);
     const Camera& cam = view.camera();
     const double near = double(cam.near_plane);
@@ -523,7 +510,7 @@ struct Tester {
     const RayScene& scene;
     const Mesh& mesh;
     const ImageProjection& view;
-    const IncidentFaces* around;
+    const EdgeNeighbours* around;
     int cap;
     float fold_px;  // contour samples: the fold band in pixels, else 0
 
@@ -598,34 +585,23 @@ std::vector<uint8_t> end_levels(const Tester& tester, const std::vector<LineSegm
 
 }  // namespace
 
-IncidentFaces contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours) {
+EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours) {
     std::vector<uint32_t> vertices;
     vertices.reserve(3 * contours.size());
     for (const LineSegment& s : contours)
         for (uint32_t f : {s.face, s.face_b})
             if (valid_face(mesh, f))
                 for (int k = 0; k < 3; ++k) vertices.push_back(mesh.triangles[f][k]);
-    if (vertices.empty()) return {};
-    // One ring out: the vertices of every face around those, then their faces.
-    const IncidentFaces first(mesh, vertices);
-    std::vector<uint32_t> grown = vertices;
-    for (uint32_t v : vertices) {
-        const auto [b, e] = first.faces(v);
-        for (const uint32_t* f = b; f != e; ++f)
-            for (int k = 0; k < 3; ++k) grown.push_back(mesh.triangles[*f][k]);
-    }
-    std::sort(grown.begin(), grown.end());
-    grown.erase(std::unique(grown.begin(), grown.end()), grown.end());
-    return IncidentFaces(mesh, grown);
+    return EdgeNeighbours(mesh, vertices);
 }
 
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
                                     const std::vector<LineSegment>& segments, const VisibilityOptions& options,
-                                    const IncidentFaces* around) {
+                                    const EdgeNeighbours* around) {
     const size_t n = segments.size();
     const double spacing = std::max(double(options.sample_spacing_px), 1e-3);
     const double precision = std::max(double(options.transition_precision_px), 1e-4);
-    IncidentFaces own;
+    EdgeNeighbours own;
     if (!around && options.contour) {
         own = contour_surroundings(mesh, segments);
         around = &own;

@@ -72,27 +72,23 @@ struct OcclusionQuery {
 // with Embree (which reads the last vertex with a 16-byte load) instead of copying them.
 void reserve_embree_padding(std::vector<glm::vec3>& positions);
 
-// Faces incident to a chosen set of vertices (CSR over those vertices only), from one scan of
-// the triangles: the neighbourhood of the contours of one view, which the cap walk of
-// RayScene::occlusion_levels crosses, instead of a mesh-wide vertex → face table (140 MB at
-// 10 M triangles). Triangles with an out-of-range index are left out.
-class IncidentFaces {
+// The faces on either side of the edges of the faces around a chosen set of vertices, from
+// one scan of the triangles: what the fold walks of one view's contours cross
+// (RayScene::occlusion_levels), instead of a mesh-wide edge table (500 MB at 10 M triangles).
+// Triangles with an out-of-range index are left out.
+class EdgeNeighbours {
 public:
-    IncidentFaces() = default;
-    // `vertices` in any order, duplicates allowed; parallel scan (TBB).
-    IncidentFaces(const Mesh& mesh, const std::vector<uint32_t>& vertices);
+    EdgeNeighbours() = default;
+    // `vertices` in any order, duplicates allowed; parallel scan and sort (TBB).
+    EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& vertices);
 
-    // Faces incident to v, ascending ([first, last)); empty when v was not chosen.
-    std::pair<const uint32_t*, const uint32_t*> faces(uint32_t v) const;
-
-    // The one face other than `face` that has both a and b as vertices; kNoFace on a border,
-    // a non-manifold edge, or when a or b was not chosen.
-    uint32_t across(const Mesh& mesh, uint32_t face, uint32_t a, uint32_t b) const;
+    // The one face other than `face` that has the edge (a, b); kNoFace on a border, a
+    // non-manifold edge, or an edge of no face around the chosen vertices.
+    uint32_t across(uint32_t face, uint32_t a, uint32_t b) const;
+    size_t size() const { return edges_.size(); }
 
 private:
-    static constexpr uint32_t kNone = 0xffffffffu;
-    std::vector<uint32_t> slot_;            // per mesh vertex: its index among the chosen, or kNone
-    std::vector<uint32_t> offset_, faces_;  // faces_[offset_[i] .. offset_[i + 1]) of chosen vertex i
+    std::vector<std::pair<uint64_t, uint32_t>> edges_;  // (edge_key, face), sorted
 };
 
 // An Embree scene of one mesh, built once (BVH of all triangles) and queried by many views.
@@ -135,9 +131,9 @@ public:
     //     comes back to the ray after leaving that band — the tube of a torus in front of its
     //     inner contour, the sheet that hides a contour past a T-junction — counts. The walk
     //     crosses edges through `around` (contour_surroundings) and stops after 256 faces or
-    //     where `around` has no neighbour (a border, a non-manifold edge).
+    //     where `around` has no neighbour (a border, a non-manifold edge, outside it).
     void occlusion_levels(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* levels,
-                          int cap = 1, const IncidentFaces* around = nullptr) const;
+                          int cap = 1, const EdgeNeighbours* around = nullptr) const;
     // One query; true when its level is ≥ 1.
     bool occluded(const ImageProjection& view, const glm::vec3& p, const PointOn& on = {}) const;
 
@@ -181,10 +177,10 @@ struct VisibilitySplit {
 // segments or of a list that includes them; built here when null and options.contour is set.
 VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
                                     const std::vector<LineSegment>& segments, const VisibilityOptions& options = {},
-                                    const IncidentFaces* around = nullptr);
+                                    const EdgeNeighbours* around = nullptr);
 
-// The faces around the vertices of the contour segments' faces and of the faces next to them
-// (two scans of the triangles): where the cap walks of one view go.
-IncidentFaces contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours);
+// The edges of the faces that share a vertex with a contour segment's face (one scan of the
+// triangles): where the fold walks of one view go.
+EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours);
 
 }  // namespace inkshade::geometry

@@ -232,21 +232,23 @@ TEST(Visibility, DegenerateAndOutOfRangeTrianglesNeverOcclude) {
     EXPECT_TRUE(with_wall.occluded(view, {0.0f, -2.0f, -1.0f}));
 }
 
-TEST(Visibility, IncidentFacesListsTheChosenVerticesFacesAscending) {
-    // A fan of four triangles around vertex 0, a separate triangle, and one out of range.
+TEST(Visibility, EdgeNeighboursCrossManifoldEdgesAroundTheChosenVertices) {
+    // A fan of four triangles around vertex 0 (one with an index out of range) and, apart, three
+    // faces on the edge (5, 7) plus one on (6, 7) that touches no chosen vertex.
     Mesh m;
-    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {5, 5, 0}, {6, 5, 0}, {5, 6, 0}};
-    m.triangles = {{0, 1, 2}, {5, 6, 7}, {0, 2, 3}, {0, 3, 4}, {0, 4, 99}, {0, 4, 1}};
-    const IncidentFaces incident(m, {3, 0, 3, 42});  // duplicates and an out-of-range vertex
-    auto list = [&](uint32_t v) {
-        const auto [first, last] = incident.faces(v);
-        return std::vector<uint32_t>(first, last);
-    };
-    EXPECT_EQ(list(0), (std::vector<uint32_t>{0, 2, 3, 5}));  // face 4 has an index out of range
-    EXPECT_EQ(list(3), (std::vector<uint32_t>{2, 3}));
-    EXPECT_TRUE(list(1).empty());   // not chosen
-    EXPECT_TRUE(list(42).empty());  // not a vertex
-    EXPECT_TRUE(IncidentFaces().faces(0).first == IncidentFaces().faces(0).second);
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0},
+                   {5, 5, 0}, {6, 5, 0}, {5, 6, 0}, {6, 6, 0}, {5, 5, 1}};
+    m.triangles = {{0, 1, 2}, {5, 6, 7}, {0, 2, 3}, {0, 3, 4}, {0, 4, 99}, {0, 4, 1}, {6, 8, 7}, {5, 7, 9}, {7, 5, 8}};
+    const EdgeNeighbours around(m, {3, 0, 3, 42, 5});  // duplicates and an out-of-range vertex
+    EXPECT_EQ(around.across(0, 0, 2), 2u);  // fan: face 0 and face 2 share edge (0, 2)
+    EXPECT_EQ(around.across(2, 2, 0), 0u);  // either order of the edge's vertices
+    EXPECT_EQ(around.across(5, 0, 1), 0u);
+    EXPECT_EQ(around.across(3, 0, 4), 5u);  // face 4 has an index out of range: not a neighbour
+    EXPECT_EQ(around.across(0, 1, 2), kNoFace);  // a border
+    EXPECT_EQ(around.across(1, 5, 7), kNoFace);  // three faces on (5, 7): no one neighbour
+    EXPECT_EQ(around.across(1, 6, 7), kNoFace);  // (6, 7) touches no chosen vertex: not covered
+    EXPECT_EQ(around.across(0, 0, 0), kNoFace);
+    EXPECT_EQ(EdgeNeighbours().across(0, 0, 2), kNoFace);
 }
 
 TEST(Visibility, SharedAndCopiedVertexBuffersGiveTheSameAnswers) {
