@@ -9,7 +9,7 @@
 
 namespace inkshade::geometry {
 
-std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
+std::vector<Chain> chain_order(const std::vector<LineSegment>& segments) {
     const size_t n = segments.size();
     std::unordered_map<uint64_t, uint32_t> node_of;
     node_of.reserve(2 * n);
@@ -41,52 +41,73 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
         for (uint8_t e = 0; e < 2; ++e) incidence[fill[seg_node[s][e]]++] = {uint32_t(s), e};
     }
 
-    auto add = [&](Polyline& line, uint32_t s, uint8_t e) {
-        line.points.push_back(e == 0 ? segments[s].a : segments[s].b);
-        line.strength.push_back(e == 0 ? segments[s].strength_a : segments[s].strength_b);
-    };
-
     // Walks from segment s's end e through nodes of degree two until a chain end or a used
-    // segment (back at the start of a loop).
+    // segment (back at the start of a loop). Leaving s by its end `other`, s is walked
+    // a → b when it was entered at a (e = 0).
     auto walk = [&](uint32_t s, uint8_t e) {
-        Polyline line;
+        Chain chain;
         const uint32_t start = seg_node[s][e];
-        add(line, s, e);
         for (;;) {
             used[s] = 1;
+            chain.segments.push_back(s);
+            chain.reversed.push_back(e == 1);
             const uint8_t other = uint8_t(1 - e);
             const uint32_t v = seg_node[s][other];
-            add(line, s, other);
             if (degree[v] != 2) break;
             auto next = incidence[first[v]];
             if (next.first == s && next.second == other) next = incidence[first[v] + 1];
             if (used[next.first]) {
-                if (v == start) {
-                    line.closed = true;
-                    line.points.pop_back();  // the start point is not repeated
-                    line.strength.pop_back();
-                }
+                chain.closed = v == start;
                 break;
             }
             s = next.first;
             e = next.second;
         }
-        return line;
+        return chain;
     };
 
-    std::vector<Polyline> out;
+    std::vector<Chain> out;
     for (uint32_t s = 0; s < n; ++s)
         for (uint8_t e = 0; e < 2; ++e)
             if (!used[s] && degree[seg_node[s][e]] != 2) {
-                Polyline line = walk(s, e);
+                Chain chain = walk(s, e);
                 if (e == 1) {
-                    std::reverse(line.points.begin(), line.points.end());
-                    std::reverse(line.strength.begin(), line.strength.end());
+                    // Walked from s's b end: turned round, so the chain runs along s's a → b.
+                    std::reverse(chain.segments.begin(), chain.segments.end());
+                    std::reverse(chain.reversed.begin(), chain.reversed.end());
+                    for (auto& r : chain.reversed) r = !r;
                 }
-                out.push_back(std::move(line));
+                out.push_back(std::move(chain));
             }
     for (uint32_t s = 0; s < n; ++s)
         if (!used[s]) out.push_back(walk(s, 0));
+    return out;
+}
+
+std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
+    const std::vector<Chain> chains = chain_order(segments);
+    std::vector<Polyline> out;
+    out.reserve(chains.size());
+    for (const Chain& chain : chains) {
+        Polyline line;
+        line.closed = chain.closed;
+        const size_t k = chain.segments.size();
+        line.points.reserve(k + 1);
+        line.strength.reserve(k + 1);
+        for (size_t i = 0; i < k; ++i) {
+            const LineSegment& s = segments[chain.segments[i]];
+            const bool r = chain.reversed[i];
+            if (i == 0) {
+                line.points.push_back(r ? s.b : s.a);
+                line.strength.push_back(r ? s.strength_b : s.strength_a);
+            }
+            if (i + 1 < k || !chain.closed) {  // a loop does not repeat its start point
+                line.points.push_back(r ? s.a : s.b);
+                line.strength.push_back(r ? s.strength_a : s.strength_b);
+            }
+        }
+        out.push_back(std::move(line));
+    }
     return out;
 }
 

@@ -14,6 +14,18 @@ struct Polyline {
     bool closed = false;
 };
 
+// A chain of segments, in walking order: segment `segments[i]` is walked b → a when
+// `reversed[i]`. A closed chain comes back to the node it starts from.
+struct Chain {
+    std::vector<uint32_t> segments;
+    std::vector<uint8_t> reversed;
+    bool closed = false;
+};
+
+// The chains chain_segments makes (same order, same directions), as segment indices. Segments
+// whose two ends share a key are left out.
+std::vector<Chain> chain_order(const std::vector<LineSegment>& segments);
+
 // Joins segments that share a node key into polylines, in O(n) (hash map from key to segment
 // ends). A node with one segment end, or more than two (non-manifold, crease junction), ends a
 // chain; chains through nodes of degree two only are closed loops. Output order is
