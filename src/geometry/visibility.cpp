@@ -100,8 +100,8 @@ bool contains_point(const OcclusionContext& ctx, const PointOn& on, uint32_t pri
 
 // The faces of a contour point's fold (RayScene::occlusion_levels): walking the mesh's
 // cross-section in the plane through the ray and the point's normal, both ways from the point,
-// as long as the section stays within `fold_band` of the ray's line, the faces where it meets
-// that line. Writes up to kFoldFaces faces; returns how many.
+// the faces where it stays within `fold_band` of the ray's line, and the one where it meets
+// that line on leaving the band. Writes up to kFoldFaces faces; returns how many.
 int fold_faces(const OcclusionContext& ctx, const OcclusionQuery& q, uint32_t* out) {
     if (!ctx.around || q.on.face == kNoFace || !(q.fold_band > 0.0f)) return 0;
     const Mesh& mesh = *ctx.mesh;
@@ -136,14 +136,19 @@ int fold_faces(const OcclusionContext& ctx, const OcclusionQuery& q, uint32_t* o
                 const uint32_t a = t[k], b = t[(k + 1) % 3];
                 if (side(a) == side(b) || (a == in_a && b == in_b) || (a == in_b && b == in_a)) continue;
                 const double h = height(a, b);
-                if (step == 0 && in_a == kNoFace && (h > 0.0) != rising) continue;  // the other way
+                // Inside p's face the section runs both ways: the rising way leaves by the higher
+                // cut (by comparison, not sign: p lies on the face only up to float rounding).
+                if (step == 0 && in_a == kNoFace && exit_a != kNoFace && (h > h_out) != rising) continue;
                 exit_a = a, exit_b = b, h_out = h;
-                break;
+                if (step > 0 || in_a != kNoFace) break;
             }
             if (exit_a == kNoFace) return;
-            // The section meets the ray's line inside this face (p's own face aside).
-            if (step > 0 && (h_in <= 0.0) != (h_out <= 0.0) && n < kFoldFaces) out[n++] = face;
-            if (!(std::abs(h_out) <= band)) return;
+            // Inside this face the section stays within the band (a ray can only meet the face
+            // on it: float rounding may make it do so where the exact section just misses),
+            // or it meets the ray's line before leaving the band. p's own face aside.
+            const bool inside = std::abs(h_out) <= band;
+            if (step > 0 && (inside || (h_in <= 0.0) != (h_out <= 0.0)) && n < kFoldFaces) out[n++] = face;
+            if (!inside) return;
             in_a = exit_a, in_b = exit_b, h_in = h_out;
             face = ctx.around->across(face, exit_a, exit_b);
         }

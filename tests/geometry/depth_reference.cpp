@@ -128,7 +128,7 @@ VisibilityErrors& VisibilityErrors::operator+=(const VisibilityErrors& other) {
     hidden_length += other.hidden_length;
     wrongly_visible_length += other.wrongly_visible_length;
     wrongly_hidden_length += other.wrongly_hidden_length;
-    clearly_wrongly_hidden_length += other.clearly_wrongly_hidden_length;
+    hidden_near_outline_length += other.hidden_near_outline_length;
     outside_length += other.outside_length;
     level_mismatch_length += other.level_mismatch_length;
     for (const glm::vec2& p : other.wrongly_visible_at)
@@ -151,7 +151,7 @@ std::ostream& operator<<(std::ostream& out, const VisibilityErrors& e) {
         points(e.wrongly_visible_at);
     }
     out << "), wrongly hidden " << 100.0 * e.wrongly_hidden_fraction() << " % (" << e.wrongly_hidden_length << " of "
-        << e.hidden_length << " px, " << e.clearly_wrongly_hidden_length << " px with nothing in front in the window";
+        << e.hidden_length << " px; " << e.hidden_near_outline_length << " px hidden along an outline";
     if (!e.wrongly_hidden_at.empty()) {
         out << "; at";
         points(e.wrongly_hidden_at);
@@ -183,7 +183,7 @@ void judge_samples(const DepthReference& reference, const std::vector<LinePath>&
         int nearer = 0;
         for (int dj = -1; dj <= 1; ++dj)
             for (int di = -1; di <= 1; ++di) nearer += reference.depth(ci + di, cj + dj) < z - eps;
-        f(p, length, path, hidden ? nearer < 9 : nearer == 9, nearer);
+        f(p, length, path, hidden ? nearer == 0 : nearer == 9, nearer);
     });
 }
 
@@ -196,9 +196,10 @@ VisibilityErrors check_paths(const DepthReference& reference, const std::vector<
                   [&](const glm::dvec2& p, double length, const LinePath& path, bool wrong, int nearer) {
         (hidden ? e.hidden_length : e.visible_length) += length;
         if (hidden ? path.level < 1 : path.level != 0) e.level_mismatch_length += length;
+        if (hidden && nearer > 0 && nearer < 9) e.hidden_near_outline_length += length;
         if (!wrong) return;
         (hidden ? e.wrongly_hidden_length : e.wrongly_visible_length) += length;
-        if (hidden && nearer == 0) e.clearly_wrongly_hidden_length += length;
+
         std::vector<glm::vec2>& at = hidden ? e.wrongly_hidden_at : e.wrongly_visible_at;
         if (at.size() < kExamples) at.emplace_back(p);
     });

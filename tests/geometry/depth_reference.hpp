@@ -67,12 +67,12 @@ struct VisibilityErrors {
     double visible_length = 0.0;          // length of the paths checked as visible
     double hidden_length = 0.0;           // ... as hidden
     double wrongly_visible_length = 0.0;  // visible, but a nearer surface covers all of it
-    double wrongly_hidden_length = 0.0;   // hidden, but nothing is in front of it
-    // The part of wrongly_hidden_length with nothing in front in the whole 3 x 3 window; the
-    // rest is within 1.5 high-resolution pixels of an occluder's outline (or in front by less
-    // than eps), where a line that meets an outline at a grazing angle or a cusp of a contour
-    // counts as wrong for a pixel or two even when right.
-    double clearly_wrongly_hidden_length = 0.0;
+    double wrongly_hidden_length = 0.0;   // hidden, but nothing is in front of any of it
+    // Hidden samples with something in front in part of the 3 x 3 window only: within 1.5
+    // high-resolution pixels of an occluder's outline (or in front by less than eps), where a
+    // hidden line running along an outline, meeting it at a grazing angle or at a contour's
+    // cusp is right or wrong by less than the window. Reported, not judged.
+    double hidden_near_outline_length = 0.0;
     double outside_length = 0.0;         // samples outside the image (not checked)
     double level_mismatch_length = 0.0;  // visible paths with level != 0, hidden with level < 1
     std::vector<glm::vec2> wrongly_visible_at, wrongly_hidden_at;  // the first few, for messages
@@ -89,11 +89,10 @@ std::ostream& operator<<(std::ostream& out, const VisibilityErrors& errors);
 // points (exact for a straight 3D segment: window depth is affine in screen space along it),
 // then converted to view depth z. With the 3 x 3 high-resolution pixels around the sample:
 //   a visible sample is wrong ("hidden by a nearer surface") when all 9 depths are < z − eps;
-//   a hidden sample is wrong ("actually in front") when any of the 9 depths is ≥ z − eps.
+//   a hidden sample is wrong ("actually in front") when none of the 9 depths is < z − eps.
 // The 3 x 3 window lets a line on an outline or on a crease sit on either side of the pixel
-// centres without failing; it costs 1.5 high-resolution pixels (0.375 px at scale 4) on each
-// side of an occluder's outline where either answer is accepted for visible samples and a
-// hidden sample counts as wrong.
+// centres without failing: within 1.5 high-resolution pixels (0.375 px at scale 4) of an
+// occluder's outline either answer is accepted, for visible and hidden samples alike.
 VisibilityErrors check_paths(const DepthReference& reference, const std::vector<LinePath>& paths, bool hidden,
                              double spacing_px = 0.25);
 // Both lists of a layer (visible with hidden = false, hidden with hidden = true).
