@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <tuple>
 #include <string>
 
+#include "geometry/chaining.hpp"
 #include "inkshade/error.hpp"
 
 namespace inkshade::geometry {
@@ -55,19 +57,8 @@ int shared_vertices(const glm::uvec3& t, const glm::uvec3& u) {
 // Hits recorded per ray for counting each crossing once (levels past this are rare and are
 // counted without that check).
 constexpr int kRecordedHits = 16;
-constexpr int kFoldFaces = 32;  // fold faces kept per contour sample
 
-// What one ray has met so far (the filter's running count).
-struct RayState {
-    uint8_t level = 0;
-    uint8_t recorded = 0;
-    bool fold_known = false;
-    uint8_t fold_count = 0;
-    uint32_t fold[kFoldFaces];  // a contour point's fold faces, once walked
-    float same_point = 0.0f;      // two hits closer than this in t are at one point of the ray
-    float t[kRecordedHits];
-    uint32_t prim[kRecordedHits];
-};
+struct RayState;
 
 // rtcOccluded1M's context, extended with what the filter reads (Embree's documented way to hand
 // per-ray data to a filter function: the context is passed through unchanged).
@@ -98,71 +89,128 @@ bool contains_point(const OcclusionContext& ctx, const PointOn& on, uint32_t pri
     return false;
 }
 
-// The faces of a contour point's fold (RayScene::occlusion_levels): walking the mesh's
-// cross-section in the plane through the ray and the point's normal, both ways from the point,
-// the faces where it stays within `fold_band` of the ray's line, and the one where it meets
-// that line on leaving the band. Writes up to kFoldFaces faces; returns how many.
-int fold_faces(const OcclusionContext& ctx, const OcclusionQuery& q, uint32_t* out) {
-    if (!ctx.around || q.on.face == kNoFace || !(q.fold_band > 0.0f)) return 0;
-    const Mesh& mesh = *ctx.mesh;
-    const glm::dvec3 p(q.point);
-    const glm::dvec3 d = ctx.orthographic ? ctx.forward : glm::normalize(p - ctx.eye);
-    glm::dvec3 up = glm::dvec3(q.normal) - glm::dot(glm::dvec3(q.normal), d) * d;  // in the plane, ⟂ ray
-    const double up_len = glm::length(up);
-    if (!(up_len > 1e-12)) return 0;
-    up /= up_len;
-    const glm::dvec3 m = glm::cross(d, up);  // the plane's normal
-    const double band = double(q.fold_band);
-    auto side = [&](uint32_t v) { return glm::dot(glm::dvec3(mesh.positions[v]) - p, m) >= 0.0; };
+// A contour point's fold (RayScene::occlusion_levels): walking the mesh's cross-section in the
+// plane through the ray and the point's normal, both ways from the point, the faces where the
+// section stays within `fold_band` of the ray's line, and the one where it meets that line on
+// leaving the band. Walked lazily, one step of each way in turn (a fold hit is usually next to
+// the point), and kept: a ray's later hits continue the same walk.
+class FoldWalk {
+public:
+    // Is face `target` in q's fold?
+    bool contains(const OcclusionContext& ctx, const OcclusionQuery& q, uint32_t target) {
+        if (!started_) start(ctx, q);
+        if (std::find(seen_.begin(), seen_.end(), target) != seen_.end()) return true;
+        while (!ways_[0].done || !ways_[1].done)
+            for (Way& w : ways_) {
+                if (w.done) continue;
+                const uint32_t face = advance(ctx, w);
+                if (face == kNoFace) continue;
+                seen_.push_back(face);
+                if (face == target) return true;
+            }
+        return false;
+    }
+
+private:
+    // One way from p: from `face` (entered by edge (in_a, in_b); kNoFace when p is inside it
+    // and `rising` picks the way), out by its other cut edge, until the section leaves the band.
+    struct Way {
+        uint32_t face = kNoFace, in_a = kNoFace, in_b = kNoFace;
+        bool rising = true;
+        double h_in = 0.0;
+        int step = 0;
+        bool done = true;
+    };
+
+    void start(const OcclusionContext& ctx, const OcclusionQuery& q) {
+        started_ = true;
+        if (!ctx.around || q.on.face == kNoFace || !(q.fold_band > 0.0f)) return;
+        p_ = glm::dvec3(q.point);
+        const glm::dvec3 d = ctx.orthographic ? ctx.forward : glm::normalize(p_ - ctx.eye);
+        up_ = glm::dvec3(q.normal) - glm::dot(glm::dvec3(q.normal), d) * d;  // in the plane, ⟂ ray
+        const double up_len = glm::length(up_);
+        if (!(up_len > 1e-12)) return;
+        up_ /= up_len;
+        m_ = glm::cross(d, up_);  // the plane's normal
+        band_ = double(q.fold_band);
+        if (q.on.kind == PointOn::Edge) {  // p on an edge: one way through each of its two faces
+            ways_[0] = {q.on.face, q.on.u, q.on.v, true, 0.0, 1, false};
+            ways_[1] = {ctx.around->across(q.on.face, q.on.u, q.on.v), q.on.u, q.on.v, true, 0.0, 1, false};
+        } else {
+            ways_[0] = {q.on.face, kNoFace, kNoFace, true, 0.0, 0, false};
+            ways_[1] = {q.on.face, kNoFace, kNoFace, false, 0.0, 0, false};
+        }
+    }
+
+    bool side(const Mesh& mesh, uint32_t v) const { return glm::dot(glm::dvec3(mesh.positions[v]) - p_, m_) >= 0.0; }
+
     // Where the plane cuts edge (a, b) (sides differ), from the ordered pair so that both faces
     // of the edge get the same point; its height above the ray's line.
-    auto height = [&](uint32_t a, uint32_t b) {
+    double height(const Mesh& mesh, uint32_t a, uint32_t b) const {
         if (a > b) std::swap(a, b);
         const glm::dvec3 pa(mesh.positions[a]), pb(mesh.positions[b]);
-        const double sa = glm::dot(pa - p, m), sb = glm::dot(pb - p, m);
+        const double sa = glm::dot(pa - p_, m_), sb = glm::dot(pb - p_, m_);
         const double t = sa / (sa - sb);
-        return glm::dot(pa + t * (pb - pa) - p, up);
-    };
-    int n = 0;
-    // One way: from `face` (entered by edge (in_a, in_b); kNoFace when p is inside it and
-    // `rising` picks the way), out by its other cut edge, until the section leaves the band.
-    auto walk = [&](uint32_t face, uint32_t in_a, uint32_t in_b, bool rising) {
-        double h_in = 0.0;
-        for (int step = 0; step < 256 && face != kNoFace; ++step) {
-            const glm::uvec3 t = ctx.triangles[face];
-            uint32_t exit_a = kNoFace, exit_b = kNoFace;
-            double h_out = 0.0;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t a = t[k], b = t[(k + 1) % 3];
-                if (side(a) == side(b) || (a == in_a && b == in_b) || (a == in_b && b == in_a)) continue;
-                const double h = height(a, b);
-                // Inside p's face the section runs both ways: the rising way leaves by the higher
-                // cut (by comparison, not sign: p lies on the face only up to float rounding).
-                if (step == 0 && in_a == kNoFace && exit_a != kNoFace && (h > h_out) != rising) continue;
-                exit_a = a, exit_b = b, h_out = h;
-                if (step > 0 || in_a != kNoFace) break;
-            }
-            if (exit_a == kNoFace) return;
-            // Inside this face the section stays within the band (a ray can only meet the face
-            // on it: float rounding may make it do so where the exact section just misses),
-            // or it meets the ray's line before leaving the band. p's own face aside.
-            const bool inside = std::abs(h_out) <= band;
-            if (step > 0 && (inside || (h_in <= 0.0) != (h_out <= 0.0)) && n < kFoldFaces) out[n++] = face;
-            if (!inside) return;
-            in_a = exit_a, in_b = exit_b, h_in = h_out;
-            face = ctx.around->across(face, exit_a, exit_b);
-        }
-    };
-    if (q.on.kind == PointOn::Edge) {
-        // p on an edge: one way through each of its two faces.
-        walk(q.on.face, q.on.u, q.on.v, true);
-        walk(ctx.around->across(q.on.face, q.on.u, q.on.v), q.on.u, q.on.v, true);
-    } else {
-        walk(q.on.face, kNoFace, kNoFace, true);
-        walk(q.on.face, kNoFace, kNoFace, false);
+        return glm::dot(pa + t * (pb - pa) - p_, up_);
     }
-    return n;
-}
+
+    // One step of a way: the face it was in when that face belongs to the fold, else kNoFace.
+    uint32_t advance(const OcclusionContext& ctx, Way& w) {
+        if (w.face == kNoFace || w.step >= 256) {
+            w.done = true;
+            return kNoFace;
+        }
+        const Mesh& mesh = *ctx.mesh;
+        const glm::uvec3 t = ctx.triangles[w.face];
+        const bool first = w.step == 0 && w.in_a == kNoFace;
+        uint32_t exit_a = kNoFace, exit_b = kNoFace;
+        double h_out = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            if (side(mesh, a) == side(mesh, b) || (a == w.in_a && b == w.in_b) || (a == w.in_b && b == w.in_a))
+                continue;
+            const double h = height(mesh, a, b);
+            // Inside p's face the section runs both ways: the rising way leaves by the higher
+            // cut (by comparison, not sign: p lies on the face only up to float rounding).
+            if (first && exit_a != kNoFace && (h > h_out) != w.rising) continue;
+            exit_a = a, exit_b = b, h_out = h;
+            if (!first) break;
+        }
+        if (exit_a == kNoFace) {
+            w.done = true;
+            return kNoFace;
+        }
+        // Inside this face the section stays within the band (a ray can only meet the face on
+        // it: float rounding may make it do so where the exact section just misses), or it
+        // meets the ray's line before leaving the band. p's own face aside.
+        const bool inside = std::abs(h_out) <= band_;
+        const uint32_t fold = w.step > 0 && (inside || (w.h_in <= 0.0) != (h_out <= 0.0)) ? w.face : kNoFace;
+        if (!inside) {
+            w.done = true;
+        } else {
+            w.in_a = exit_a, w.in_b = exit_b, w.h_in = h_out;
+            w.face = ctx.around->across(w.face, exit_a, exit_b);
+            ++w.step;
+        }
+        return fold;
+    }
+
+    bool started_ = false;
+    glm::dvec3 p_{0.0}, up_{0.0}, m_{0.0};
+    double band_ = 0.0;
+    Way ways_[2];
+    std::vector<uint32_t> seen_;  // fold faces walked so far
+};
+
+// What one ray has met so far (the filter's running count).
+struct RayState {
+    uint8_t level = 0;
+    uint8_t recorded = 0;
+    float same_point = 0.0f;  // two hits closer than this in t are at one point of the ray
+    float t[kRecordedHits];
+    uint32_t prim[kRecordedHits];
+    FoldWalk fold;  // contour samples
+};
 
 // Counts each crossing once and lets the ray go on until the cap is reached.
 void count_crossings(const RTCFilterFunctionNArguments* args) {
@@ -176,10 +224,7 @@ void count_crossings(const RTCFilterFunctionNArguments* args) {
         const glm::uvec3 tri = ctx->triangles[prim];
         args->valid[i] = 0;  // rejected unless it completes the count
         if (contains_point(*ctx, q.on, prim, tri)) continue;
-        if (q.fold_band > 0.0f) {
-            if (!st.fold_known) st.fold_count = uint8_t(fold_faces(*ctx, q, st.fold)), st.fold_known = true;
-            if (std::find(st.fold, st.fold + st.fold_count, prim) != st.fold + st.fold_count) continue;
-        }
+        if (q.fold_band > 0.0f && st.fold.contains(*ctx, q, prim)) continue;
         const float t = RTCRayN_tfar(args->ray, args->N, i);
         bool seen = false;
         for (int k = 0; k < st.recorded && !seen; ++k)
@@ -275,6 +320,16 @@ void reserve_embree_padding(std::vector<glm::vec3>& positions) {
 
 // ---- EdgeNeighbours ----------------------------------------------------------------------
 
+namespace {
+
+// Slot of an edge key in a table of `capacity` (a power of two): Fibonacci hashing, since
+// neighbouring edges have neighbouring keys.
+size_t slot_of(uint64_t key, size_t capacity) {
+    return size_t((key * 0x9e3779b97f4a7c15ull) >> 32) & (capacity - 1);
+}
+
+}  // namespace
+
 EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& vertices) {
     const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
     if (vertices.empty()) return;
@@ -297,21 +352,43 @@ EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& ve
     });
     size_t total = 0;
     for (const auto& list : found) total += list.size();
-    edges_.reserve(total);
-    for (const auto& list : found) edges_.insert(edges_.end(), list.begin(), list.end());
-    tbb::parallel_sort(edges_.begin(), edges_.end());
-    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());  // a face with a repeated edge
+    std::vector<std::pair<uint64_t, uint32_t>> edges;
+    edges.reserve(total);
+    for (const auto& list : found) edges.insert(edges.end(), list.begin(), list.end());
+    tbb::parallel_sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());  // a face with a repeated edge
+    size_t distinct = 0;
+    for (size_t i = 0; i < edges.size(); ++i) distinct += i == 0 || edges[i].first != edges[i - 1].first;
+    size_t capacity = 16;
+    while (capacity < 2 * distinct) capacity *= 2;
+    slots_.assign(capacity, Slot{});
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+        size_t h = slot_of(edges[i].first, capacity);
+        while (slots_[h].key != kEmpty) h = (h + 1) & (capacity - 1);
+        Slot& slot = slots_[h];
+        slot.key = edges[i].first;
+        if (j - i <= 2) {  // one face (a border) or two; more: no one neighbour
+            slot.face[0] = edges[i].second;
+            if (j - i == 2) slot.face[1] = edges[i + 1].second;
+        }
+        i = j;
+    }
+    size_ = distinct;
 }
 
 uint32_t EdgeNeighbours::across(uint32_t face, uint32_t a, uint32_t b) const {
-    if (a == b) return kNoFace;
+    if (a == b || slots_.empty()) return kNoFace;
     const uint64_t key = edge_key(a, b);
-    auto it = std::lower_bound(edges_.begin(), edges_.end(), std::make_pair(key, uint32_t(0)));
-    uint32_t found = kNoFace;
-    int count = 0;
-    for (; it != edges_.end() && it->first == key; ++it, ++count)
-        if (it->second != face) found = it->second;
-    return count == 2 ? found : kNoFace;  // a border (1) or non-manifold edge (3+): no one neighbour
+    const size_t mask = slots_.size() - 1;
+    for (size_t h = slot_of(key, slots_.size());; h = (h + 1) & mask) {
+        const Slot& slot = slots_[h];
+        if (slot.key == kEmpty) return kNoFace;
+        if (slot.key != key) continue;
+        if (slot.face[1] == kNoFace) return kNoFace;  // a border, or non-manifold
+        return slot.face[0] == face ? slot.face[1] : slot.face[1] == face ? slot.face[0] : kNoFace;
+    }
 }
 
 // ---- RayScene queries ----------------------------------------------------------------------
@@ -332,8 +409,13 @@ void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuer
     const double near = double(cam.near_plane);
     const glm::dvec3 eye(cam.eye);
     const glm::dvec3 forward = glm::normalize(glm::dvec3(cam.target) - eye);
-    std::vector<RTCRay> rays(count);
-    std::vector<RayState> states(count);
+    // One query (the bisection's many single samples) needs no allocation.
+    RTCRay one_ray;
+    RayState one_state;
+    std::vector<RTCRay> many_rays(count > 1 ? count : 0);
+    std::vector<RayState> many_states(count > 1 ? count : 0);
+    RTCRay* rays = count > 1 ? many_rays.data() : &one_ray;
+    RayState* states = count > 1 ? many_states.data() : &one_state;
     for (size_t i = 0; i < count; ++i) {
         const OcclusionQuery& q = queries[i];
         const double z = view.view_depth(q.point);
@@ -377,15 +459,15 @@ void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuer
     ctx.triangles = impl_->triangles;
     ctx.around = around;
     ctx.queries = queries;
-    ctx.states = states.data();
+    ctx.states = states;
     ctx.cap = cap;
     ctx.eye = eye;
     ctx.forward = forward;
     ctx.orthographic = cam.orthographic;
     if (count == 1)
-        rtcOccluded1(impl_->scene, &ctx.rtc, &rays[0]);
+        rtcOccluded1(impl_->scene, &ctx.rtc, rays);
     else if (count > 1)
-        rtcOccluded1M(impl_->scene, &ctx.rtc, rays.data(), unsigned(count), sizeof(RTCRay));
+        rtcOccluded1M(impl_->scene, &ctx.rtc, rays, unsigned(count), sizeof(RTCRay));
     for (size_t i = 0; i < count; ++i) levels[i] = states[i].level;
 }
 
@@ -528,64 +610,79 @@ struct Tester {
     }
 };
 
-// Level of every segment end, each shared node tested once: neighbouring segments of a chain
-// meet at bit-identical points with equal keys (contours.hpp), so about half the rays of a
-// per-segment test are saved, and both segments agree on the shared end by construction.
-std::vector<uint8_t> end_levels(const Tester& tester, const std::vector<LineSegment>& segments) {
-    struct End {
-        uint64_t key;
-        uint32_t px, py, pz;  // position bits: a node is one key at one point
-        uint32_t index;       // 2 × segment + (0 for a, 1 for b)
-        bool operator<(const End& o) const {
-            return std::tie(key, px, py, pz, index) < std::tie(o.key, o.px, o.py, o.pz, o.index);
+// A segment's level given the levels of its two ends (a, b): one level, or pieces split where
+// interior samples (≤ spacing apart in the image) differ, each change bisected.
+struct SegmentLevels {
+    uint8_t whole = 0;
+    std::vector<Piece> pieces;  // empty: `whole`
+};
+
+SegmentLevels resolve_segment(const Tester& tester, const LineSegment& s, uint8_t level_a, uint8_t level_b,
+                              double spacing, double precision) {
+    const ImageProjection& view = tester.view;
+    const PointOn inside = interior_on(tester.mesh, s);
+    int steps = 1;
+    if (!view.clipped(s.a) && !view.clipped(s.b)) {
+        const double px = pixel_distance(view, s.a, s.b);
+        // NaN (a degenerate camera) keeps one step instead of an undefined conversion.
+        if (std::isfinite(px)) steps = int(std::clamp(std::ceil(px / spacing), 1.0, 16384.0));
+    }
+    std::vector<uint8_t> levels(size_t(steps) + 1);
+    levels[0] = level_a;
+    levels[size_t(steps)] = level_b;
+    for (int k = 1; k < steps; ++k) levels[size_t(k)] = tester.level(lerp(s, double(k) / steps), inside);
+    SegmentLevels out;
+    if (std::all_of(levels.begin(), levels.end(), [&](uint8_t x) { return x == levels[0]; })) {
+        out.whole = levels[0];
+        return out;
+    }
+    // Runs of equal level; each change bisected between its two samples.
+    double start = 0.0;
+    for (int k = 0; k < steps; ++k) {
+        if (levels[size_t(k)] == levels[size_t(k) + 1]) continue;
+        double lo = double(k) / steps, hi = double(k + 1) / steps;
+        for (int iter = 0; iter < 60; ++iter) {
+            const glm::vec3 plo = lerp(s, lo), phi = lerp(s, hi);
+            const bool measurable = !view.clipped(plo) && !view.clipped(phi);
+            if (measurable ? pixel_distance(view, plo, phi) <= precision : hi - lo < 1e-7) break;
+            const double mid = 0.5 * (lo + hi);
+            (tester.level(lerp(s, mid), inside) == levels[size_t(k)] ? lo : hi) = mid;
         }
-    };
-    const size_t n = segments.size();
-    std::vector<End> ends(2 * n);
-    tbb::parallel_for(size_t(0), n, [&](size_t i) {
-        const LineSegment& s = segments[i];
-        for (int e = 0; e < 2; ++e) {
-            const glm::vec3 p = e ? s.b : s.a;
-            End& x = ends[2 * i + size_t(e)];
-            x.key = e ? s.edge_b : s.edge_a;
-            std::memcpy(&x.px, &p.x, 4), std::memcpy(&x.py, &p.y, 4), std::memcpy(&x.pz, &p.z, 4);
-            x.index = uint32_t(2 * i + size_t(e));
-        }
-    });
-    tbb::parallel_sort(ends.begin(), ends.end());
-    // Group starts: one test per run of equal (key, point).
-    std::vector<uint32_t> starts;
-    for (size_t k = 0; k < ends.size(); ++k)
-        if (k == 0 || ends[k].key != ends[k - 1].key || ends[k].px != ends[k - 1].px || ends[k].py != ends[k - 1].py ||
-            ends[k].pz != ends[k - 1].pz)
-            starts.push_back(uint32_t(k));
-    starts.push_back(uint32_t(ends.size()));
-    std::vector<uint8_t> levels(2 * n);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, starts.size() - 1, 64), [&](const tbb::blocked_range<size_t>& r) {
-        // One stream of rays per block (rtcOccluded1M); clipped nodes need no ray.
-        std::vector<OcclusionQuery> queries;
-        std::vector<size_t> query_group;
-        queries.reserve(r.size());
-        for (size_t g = r.begin(); g != r.end(); ++g) {
-            const End& first = ends[starts[g]];
-            const LineSegment& s = segments[first.index / 2];
-            const glm::vec3 p = (first.index & 1) ? s.b : s.a;
-            if (tester.view.clipped(p)) {
-                for (uint32_t k = starts[g]; k < starts[g + 1]; ++k) levels[ends[k].index] = kClipped;
-                continue;
-            }
-            queries.push_back(query_at(tester.mesh, tester.view, p, end_on(tester.mesh, s, first.key), tester.fold_px));
-            query_group.push_back(g);
-        }
-        std::vector<uint8_t> found(queries.size());
-        tester.scene.occlusion_levels(tester.view, queries.data(), queries.size(), found.data(), tester.cap,
-                                      tester.around);
-        for (size_t q = 0; q < queries.size(); ++q) {
-            const size_t g = query_group[q];
-            for (uint32_t k = starts[g]; k < starts[g + 1]; ++k) levels[ends[k].index] = found[q];
-        }
-    });
-    return levels;
+        const double t = 0.5 * (lo + hi);
+        out.pieces.push_back({start, t, levels[size_t(k)]});
+        start = t;
+    }
+    out.pieces.push_back({start, 1.0, levels[size_t(steps)]});
+    return out;
+}
+
+// One node of a chain (chaining.hpp): node i is where segment i starts in walking order, node
+// k (k segments) where the last one ends. Its point and what it lies on come from the segment
+// end there.
+struct ChainNode {
+    const LineSegment* segment;
+    bool at_b;  // the node is the segment's b end
+};
+
+ChainNode chain_node(const std::vector<LineSegment>& segments, const Chain& chain, size_t i) {
+    const size_t k = chain.segments.size();
+    if (i < k) return {&segments[chain.segments[i]], chain.reversed[i] != 0};
+    return {&segments[chain.segments[k - 1]], chain.reversed[k - 1] == 0};
+}
+
+glm::vec3 node_point(const ChainNode& n) { return n.at_b ? n.segment->b : n.segment->a; }
+
+OcclusionQuery node_query(const Tester& t, const ChainNode& n) {
+    return query_at(t.mesh, t.view, node_point(n), end_on(t.mesh, *n.segment, n.at_b ? n.segment->edge_b : n.segment->edge_a),
+                    t.fold_px);
+}
+
+uint8_t node_level(const Tester& t, const ChainNode& n) {
+    if (t.view.clipped(node_point(n))) return kClipped;
+    const OcclusionQuery q = node_query(t, n);
+    uint8_t level = 0;
+    t.scene.occlusion_levels(t.view, &q, 1, &level, t.cap, t.around);
+    return level;
 }
 
 }  // namespace
@@ -616,45 +713,123 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
     constexpr uint8_t kSplit = 0xfe;  // not a level (levels ≤ 253) nor kClipped
     std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
-    const std::vector<uint8_t> ends = end_levels(tester, segments);
 
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
-        std::vector<uint8_t> levels;
-        for (size_t i = r.begin(); i != r.end(); ++i) {
-            const LineSegment& s = segments[i];
-            const PointOn inside = interior_on(mesh, s);
-            int steps = 1;
-            if (!view.clipped(s.a) && !view.clipped(s.b)) {
-                const double px = pixel_distance(view, s.a, s.b);
-                // NaN (a degenerate camera) keeps one step instead of an undefined conversion.
-                if (std::isfinite(px)) steps = int(std::clamp(std::ceil(px / spacing), 1.0, 16384.0));
-            }
-            levels.resize(size_t(steps) + 1);
-            levels[0] = ends[2 * i];
-            levels[size_t(steps)] = ends[2 * i + 1];
-            for (int k = 1; k < steps; ++k) levels[size_t(k)] = tester.level(lerp(s, double(k) / steps), inside);
-            if (std::all_of(levels.begin(), levels.end(), [&](uint8_t x) { return x == levels[0]; })) {
-                whole[i] = levels[0];
+    // Samples go along chains, not segments: on a fine mesh a segment is a fraction of a pixel,
+    // and testing each node would cost several rays a pixel. A chain is sampled at nodes no
+    // more than `spacing` apart in the image (and inside segments longer than that); between
+    // two samples of one level the segments take it, between two of different levels the
+    // nodes in between are searched for the change, then the segment with it is bisected.
+    std::vector<Chain> chains = chain_order(segments);
+    {
+        std::vector<char> chained(n, 0);
+        for (const Chain& c : chains)
+            for (uint32_t s : c.segments) chained[s] = 1;
+        for (uint32_t s = 0; s < n; ++s)  // left out of chains (both ends one key): alone
+            if (!chained[s]) chains.push_back({{s}, {0}, false});
+    }
+    // The sampled nodes of every chain, chosen in parallel.
+    std::vector<std::vector<uint32_t>> sampled(chains.size());
+    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
+        const Chain& chain = chains[c];
+        const size_t k = chain.segments.size();
+        // Image length of each segment; infinite where an end is clipped (or the camera is
+        // degenerate), which makes both its nodes samples.
+        std::vector<double> step(k, std::numeric_limits<double>::infinity());
+        const glm::vec3 p0 = node_point(chain_node(segments, chain, 0));
+        bool prev_ok = !view.clipped(p0);
+        glm::dvec3 prev = prev_ok ? view.project(p0) : glm::dvec3(0.0);
+        for (size_t i = 0; i < k; ++i) {
+            const glm::vec3 p = node_point(chain_node(segments, chain, i + 1));
+            const bool ok = !view.clipped(p);
+            const glm::dvec3 q = ok ? view.project(p) : glm::dvec3(0.0);
+            const double d = std::hypot(q.x - prev.x, q.y - prev.y);
+            if (ok && prev_ok && std::isfinite(d)) step[i] = d;
+            prev = q, prev_ok = ok;
+        }
+        // Greedy: from each sample, the farthest node within `spacing`, or the next node.
+        std::vector<uint32_t>& out = sampled[c];
+        out.push_back(0);
+        for (size_t i = 0; i < k;) {
+            size_t j = i + 1;
+            double length = step[i];
+            while (j < k && length + step[j] <= spacing) length += step[j++];
+            out.push_back(uint32_t(j));
+            i = j;
+        }
+    });
+    // Their levels, as ray streams in blocks (rtcOccluded1M); clipped nodes need no ray.
+    std::vector<size_t> first(chains.size() + 1, 0);
+    for (size_t c = 0; c < chains.size(); ++c) first[c + 1] = first[c] + sampled[c].size();
+    std::vector<uint8_t> node_levels(first.back(), 0);
+    std::vector<std::pair<uint32_t, uint32_t>> flat(first.back());  // (chain, node)
+    for (size_t c = 0; c < chains.size(); ++c)
+        for (size_t s = 0; s < sampled[c].size(); ++s) flat[first[c] + s] = {uint32_t(c), sampled[c][s]};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, flat.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+        std::vector<OcclusionQuery> queries;
+        std::vector<size_t> where;
+        queries.reserve(r.size());
+        for (size_t f = r.begin(); f != r.end(); ++f) {
+            const ChainNode node = chain_node(segments, chains[flat[f].first], flat[f].second);
+            if (view.clipped(node_point(node))) {
+                node_levels[f] = kClipped;
                 continue;
             }
-            // Runs of equal level; each change bisected between its two samples.
-            std::vector<Piece>& out = pieces[i];
-            double start = 0.0;
-            for (int k = 0; k < steps; ++k) {
-                if (levels[size_t(k)] == levels[size_t(k) + 1]) continue;
-                double lo = double(k) / steps, hi = double(k + 1) / steps;
-                for (int iter = 0; iter < 60; ++iter) {
-                    const glm::vec3 plo = lerp(s, lo), phi = lerp(s, hi);
-                    const bool measurable = !view.clipped(plo) && !view.clipped(phi);
-                    if (measurable ? pixel_distance(view, plo, phi) <= precision : hi - lo < 1e-7) break;
-                    const double mid = 0.5 * (lo + hi);
-                    (tester.level(lerp(s, mid), inside) == levels[size_t(k)] ? lo : hi) = mid;
-                }
-                const double t = 0.5 * (lo + hi);
-                out.push_back({start, t, levels[size_t(k)]});
-                start = t;
+            queries.push_back(node_query(tester, node));
+            where.push_back(f);
+        }
+        std::vector<uint8_t> found(queries.size());
+        scene.occlusion_levels(view, queries.data(), queries.size(), found.data(), tester.cap, around);
+        for (size_t q = 0; q < queries.size(); ++q) node_levels[where[q]] = found[q];
+    });
+
+    // Between consecutive samples: whole levels, or the change searched and bisected.
+    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
+        const Chain& chain = chains[c];
+        auto set_segment = [&](size_t i, uint8_t level_start, uint8_t level_end) {
+            // Levels at the segment's start and end in walking order, to its a and b ends.
+            const uint32_t s = chain.segments[i];
+            const bool rev = chain.reversed[i] != 0;
+            const uint8_t la = rev ? level_end : level_start, lb = rev ? level_start : level_end;
+            if (la == lb && pixel_distance(view, segments[s].a, segments[s].b) <= spacing) {
+                whole[s] = la;
+                return;
             }
-            out.push_back({start, 1.0, levels[size_t(steps)]});
+            SegmentLevels r = resolve_segment(tester, segments[s], la, lb, spacing, precision);
+            if (r.pieces.empty())
+                whole[s] = r.whole;
+            else
+                pieces[s] = std::move(r.pieces);
+        };
+        const std::vector<uint32_t>& nodes = sampled[c];
+        for (size_t m = 0; m + 1 < nodes.size(); ++m) {
+            size_t lo = nodes[m];
+            const size_t end = nodes[m + 1];
+            uint8_t level_lo = node_levels[first[c] + m];
+            const uint8_t level_end = node_levels[first[c] + m + 1];
+            while (lo < end) {
+                if (level_lo == level_end || end - lo == 1) {
+                    if (end - lo == 1) {
+                        set_segment(lo, level_lo, level_end);
+                    } else {
+                        for (size_t i = lo; i < end; ++i) whole[chain.segments[i]] = level_lo;
+                    }
+                    break;
+                }
+                // The last node of level level_lo before `end`, by bisection over nodes.
+                size_t a = lo, b = end;
+                uint8_t level_b = level_end;
+                while (b - a > 1) {
+                    const size_t mid = (a + b) / 2;
+                    const uint8_t level_mid = node_level(tester, chain_node(segments, chain, mid));
+                    if (level_mid == level_lo)
+                        a = mid;
+                    else
+                        b = mid, level_b = level_mid;
+                }
+                for (size_t i = lo; i < a; ++i) whole[chain.segments[i]] = level_lo;
+                set_segment(a, level_lo, level_b);
+                lo = b, level_lo = level_b;
+            }
         }
     });
 

@@ -85,10 +85,17 @@ public:
     // The one face other than `face` that has the edge (a, b); kNoFace on a border, a
     // non-manifold edge, or an edge of no face around the chosen vertices.
     uint32_t across(uint32_t face, uint32_t a, uint32_t b) const;
-    size_t size() const { return edges_.size(); }
+    size_t size() const { return size_; }  // edges
 
 private:
-    std::vector<std::pair<uint64_t, uint32_t>> edges_;  // (edge_key, face), sorted
+    // Open addressing (linear probing) on the edge key: a walk step is one or two loads.
+    struct Slot {
+        uint64_t key = kEmpty;
+        uint32_t face[2] = {kNoFace, kNoFace};  // both kNoFace on a non-manifold edge
+    };
+    static constexpr uint64_t kEmpty = ~uint64_t(0);  // no edge key (high word > low word)
+    std::vector<Slot> slots_;
+    size_t size_ = 0;
 };
 
 // An Embree scene of one mesh, built once (BVH of all triangles) and queried by many views.
