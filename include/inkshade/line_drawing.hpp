@@ -1,7 +1,8 @@
 // Object-space line drawings: the vector line types of a style (contour, suggestive, crease,
-// border, ridge, valley — LineSpace::Object) extracted from the mesh for one view, with hidden
-// parts removed, chained into polylines in image coordinates. The same drawing is written as
-// SVG (`inkshade lines`), as JSON (--lines-json) and drawn as GPU strokes by the renderer.
+// border, ridge, valley, intersection — LineSpace::Object) extracted from the mesh for one
+// view, with hidden parts removed, chained into polylines in image coordinates. The same
+// drawing is written as SVG (`inkshade lines`), as JSON (--lines-json) and drawn as GPU
+// strokes by the renderer.
 #pragma once
 #include <memory>
 #include <string>

@@ -250,23 +250,25 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "border, contour, crease, ridge, suggestive, valley)\n");
-    // All six object-space types at once: each has its layer, in the order given, and the torus
-    // seen from 45° above (closed, smooth, no sharp edges) has contours, suggestive contours on
-    // its inner side and ridges, but no creases and no borders (its valleys stay under the
-    // threshold).
+              "border, contour, crease, intersection, ridge, suggestive, valley)\n");
+    // All seven object-space types at once: each has its layer, in the order given, and the
+    // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has
+    // contours, suggestive contours on its inner side and ridges, but no creases, no borders
+    // and no intersections (its valleys stay under the threshold).
     r = run_cli(
-        "lines builtin:torus --lines contour,suggestive,crease,border,ridge,valley --size 256x256 "
+        "lines builtin:torus --lines contour,suggestive,crease,border,ridge,valley,intersection --size 256x256 "
         "--elevation 45 -o " +
         dir.file("all.svg") + " --lines-json " + dir.file("all.json"));
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(slurp(dir.file("all.json")));
-    const std::vector<std::string> types = {"contour", "suggestive", "crease", "border", "ridge", "valley"};
+    const std::vector<std::string> types = {"contour", "suggestive", "crease",      "border",
+                                            "ridge",   "valley",     "intersection"};
     ASSERT_EQ(j.at("layers").size(), types.size());
     for (size_t i = 0; i < types.size(); ++i) {
         const auto& layer = j.at("layers")[i];
         EXPECT_EQ(layer.at("type"), types[i]);
-        const bool expect_lines = types[i] != "crease" && types[i] != "border" && types[i] != "valley";
+        const bool expect_lines =
+            types[i] != "crease" && types[i] != "border" && types[i] != "valley" && types[i] != "intersection";
         EXPECT_EQ(!layer.at("paths").empty(), expect_lines) << types[i];
     }
 }

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "geometry/intersection_lines.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/visibility.hpp"
 
@@ -71,6 +72,7 @@ void MeshLineData::release_derived() {
     curvature_.reset();
     creases_.reset();
     ridges_.reset();
+    intersections_.reset();
 }
 
 void MeshLineData::prepare(MeshLineNeeds needs, const std::function<void()>& then) {
@@ -126,6 +128,12 @@ const RidgeLines& MeshLineData::ridges(const RidgeOptions& options) {
         ridge_options_ = options;
     }
     return *ridges_;
+}
+
+const std::vector<LineSegment>& MeshLineData::intersections() {
+    if (!intersections_)
+        intersections_ = timed(setup_timings_, "intersections", [&] { return extract_intersections(*mesh_); });
+    return *intersections_;
 }
 
 std::vector<std::pair<std::string, double>> MeshLineData::take_setup_timings() {

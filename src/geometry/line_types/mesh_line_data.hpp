@@ -1,8 +1,9 @@
 // What object-space line types extract from: one mesh (positions, triangles, unit vertex
-// normals) and what is derived from it alone — edge adjacency, curvature, creases — computed
-// on first use and kept, so later views of the same mesh pay only per-view work. The one
-// exception is a large adjacency (over kKeepAdjacencyBytes): only creases and borders read it,
-// so it is dropped once they are classified and rebuilt if another crease angle is asked for.
+// normals) and what is derived from it alone — edge adjacency, curvature, creases,
+// intersections — computed on first use and kept, so later views of the same mesh pay only
+// per-view work. The one exception is a large adjacency (over kKeepAdjacencyBytes): only
+// creases and borders read it, so it is dropped once they are classified and rebuilt if
+// another crease angle is asked for.
 #pragma once
 #include <functional>
 #include <memory>
@@ -63,6 +64,8 @@ public:
     const std::vector<LineSegment>& borders();
     // Ridges and valleys with these options (the last options asked for are kept).
     const RidgeLines& ridges(const RidgeOptions& options);
+    // Where two surfaces of the mesh cross (extract_intersections; view-independent).
+    const std::vector<LineSegment>& intersections();
 
     // Names and milliseconds of the lazy computations done since the last call (for
     // LineExtractor's timings), then cleared.
@@ -81,6 +84,7 @@ private:
     float crease_angle_ = 0.0f;
     std::optional<RidgeLines> ridges_;
     RidgeOptions ridge_options_;
+    std::optional<std::vector<LineSegment>> intersections_;
     TimingLog setup_timings_;
 };
 
