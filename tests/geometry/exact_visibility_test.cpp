@@ -341,6 +341,24 @@ TEST(ExactVisibility, InterpenetratingCubes) {
     expect_drawn(m, "crease", 500.0, 200.0);
 }
 
+TEST(ExactVisibility, IntersectionLinesOfCrossingParts) {
+    // The two cubes above (their crossing is a closed polygon), and two spheres crossing in a
+    // circle whose far half the spheres hide: intersection lines, creases and contours.
+    Mesh mesh = cube(1.0f);
+    glm::mat4 placement = glm::translate(glm::mat4(1.0f), {0.9f, 0.6f, 0.5f});
+    placement = glm::rotate(placement, glm::radians(35.0f), glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)));
+    append(mesh, transformed(cube(0.6f), placement));
+    const Measured boxes = measure(mesh, orbit(35.0f, 25.0f, 9.0f, {0.3f, 0.2f, 0.2f}), {"intersection", "crease"});
+    expect_correct(boxes);
+    expect_drawn(boxes, "intersection", 150.0, 40.0);
+
+    Mesh spheres = transformed(builtin::sphere(64, 128, 1.0f), glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 0.0f}));
+    append(spheres, transformed(builtin::sphere(64, 128, 1.0f), glm::translate(glm::mat4(1.0f), {0.5f, 0.1f, 0.0f})));
+    const Measured balls = measure(spheres, orbit(10.0f, 20.0f, 7.0f), {"intersection", "contour"});
+    expect_correct(balls);
+    expect_drawn(balls, "intersection", 100.0, 100.0);
+}
+
 // A 64 x 32 UV sphere (32 latitude bands, slivers around the poles) at the given elevation:
 // its whole outline is visible, nothing hidden.
 void expect_uv_sphere_outline_visible(float elevation) {
