@@ -155,6 +155,22 @@ class ModuleTest(unittest.TestCase):
             np.testing.assert_allclose(got["points"], np.array(exp["points"]), atol=1e-3)
             self.assertEqual(got["closed"], exp["closed"])
 
+    def test_lines_carry_occlusion_levels(self):
+        # A torus from 20 degrees above its plane: its inner contour passes behind the tube (two
+        # surfaces in front) and runs on behind its own sheet past the cusps (one).
+        view = dict(size=(160, 120), up_axis="z", elevation=20)
+        lines = self.renderer.lines(["contour"], occlusion_levels="0-", **view)
+        self.assertEqual({l["level"] for l in lines}, {0, 1, 2})
+        self.assertTrue(all(l["hidden"] == (l["level"] > 0) for l in lines))
+        only_one = self.renderer.lines(["contour"], occlusion_levels="1", **view)
+        self.assertTrue(only_one)
+        self.assertEqual({l["level"] for l in only_one}, {1})
+        svg = self.renderer.svg(["contour"], occlusion_levels="0-1", **view)
+        self.assertIn('id="contour-hidden-1"', svg)
+        self.assertNotIn('id="contour-hidden-2"', svg)
+        with self.assertRaisesRegex(ValueError, "occlusion levels: expected A-B"):
+            self.renderer.lines(["contour"], occlusion_levels="3-1", **view)
+
     def test_svg_has_layers(self):
         svg = self.renderer.svg(["contour", "crease"], size=(64, 64))
         self.assertIn('id="contour"', svg)
