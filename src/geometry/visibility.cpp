@@ -3,11 +3,14 @@
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <tuple>
 #include <string>
@@ -322,72 +325,81 @@ void reserve_embree_padding(std::vector<glm::vec3>& positions) {
 
 namespace {
 
-// Slot of an edge key in a table of `capacity` (a power of two): Fibonacci hashing, since
-// neighbouring edges have neighbouring keys.
+// Slot of an edge key in a table of `capacity` slots: a Fibonacci hash (neighbouring edges
+// have neighbouring keys) scaled to the capacity by a multiply-high (any capacity, no modulo).
 size_t slot_of(uint64_t key, size_t capacity) {
-    return size_t((key * 0x9e3779b97f4a7c15ull) >> 32) & (capacity - 1);
+    const uint64_t hash = key * 0x9e3779b97f4a7c15ull;
+    return size_t((static_cast<unsigned __int128>(hash ^ (hash >> 29)) * capacity) >> 64);
 }
+
+size_t next_slot(size_t h, size_t capacity) { return h + 1 == capacity ? 0 : h + 1; }
 
 }  // namespace
 
 EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& vertices) {
     const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
     if (vertices.empty()) return;
-    std::vector<uint64_t> chosen((nv + 63) / 64, 0);  // a bitmap stays in cache during the scan
+    std::vector<uint64_t> chosen((nv + 63) / 64, 0);  // a bitmap stays in cache during the scans
     for (uint32_t v : vertices)
         if (v < nv) chosen[v / 64] |= uint64_t(1) << (v % 64);
-    // Blocks of faces in parallel, each listing the edges of its faces that touch a chosen vertex.
-    constexpr size_t kBlock = size_t(1) << 16;
-    std::vector<std::vector<std::pair<uint64_t, uint32_t>>> found((nf + kBlock - 1) / kBlock);
-    tbb::parallel_for(size_t(0), found.size(), [&](size_t b) {
-        for (size_t f = b * kBlock, end = std::min(nf, f + kBlock); f < end; ++f) {
+    auto near = [&](const glm::uvec3& t) {
+        if (t.x >= nv || t.y >= nv || t.z >= nv) return false;
+        bool hit = false;
+        for (uint32_t v : {t.x, t.y, t.z}) hit |= ((chosen[v / 64] >> (v % 64)) & 1) != 0;
+        return hit;
+    };
+    // Two parallel scans: count the faces around the chosen vertices (at most three edges each:
+    // the table is at most three quarters full), then insert their edges with compare-and-swap.
+    // Which slot an edge lands in depends on the threads; what a lookup finds does not.
+    const size_t faces = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, nf, size_t(1) << 16), size_t(0),
+        [&](const tbb::blocked_range<size_t>& r, size_t n) {
+            for (size_t f = r.begin(); f != r.end(); ++f) n += near(mesh.triangles[f]);
+            return n;
+        },
+        std::plus<size_t>());
+    capacity_ = 4 * faces + 16;  // ≤ 3 edges a face: at most three quarters full
+    slots_ = std::make_unique<Slot[]>(capacity_);
+    std::atomic<size_t> distinct{0};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, nf, size_t(1) << 16), [&](const tbb::blocked_range<size_t>& r) {
+        size_t added = 0;
+        for (size_t f = r.begin(); f != r.end(); ++f) {
             const glm::uvec3 t = mesh.triangles[f];
-            if (t.x >= nv || t.y >= nv || t.z >= nv) continue;
-            bool near = false;
-            for (uint32_t v : {t.x, t.y, t.z}) near |= ((chosen[v / 64] >> (v % 64)) & 1) != 0;
-            if (!near) continue;
-            for (int k = 0; k < 3; ++k)
-                if (t[k] != t[(k + 1) % 3]) found[b].emplace_back(edge_key(t[k], t[(k + 1) % 3]), uint32_t(f));
+            if (!near(t)) continue;
+            for (int k = 0; k < 3; ++k) {
+                if (t[k] == t[(k + 1) % 3]) continue;
+                const uint64_t key = edge_key(t[k], t[(k + 1) % 3]);
+                for (size_t h = slot_of(key, capacity_);; h = next_slot(h, capacity_)) {
+                    Slot& slot = slots_[h];
+                    uint64_t found = slot.key.load(std::memory_order_acquire);
+                    if (found == kEmpty && slot.key.compare_exchange_strong(found, key)) found = key, ++added;
+                    if (found != key) continue;
+                    // Its faces: the first two, then "many" (a non-manifold edge).
+                    uint32_t face = kNoFace;
+                    if (slot.face[0].compare_exchange_strong(face, uint32_t(f)) || face == f) break;
+                    face = kNoFace;
+                    if (slot.face[1].compare_exchange_strong(face, uint32_t(f)) || face == f) break;
+                    slot.face[1].store(kMany);
+                    break;
+                }
+            }
         }
+        distinct += added;
     });
-    size_t total = 0;
-    for (const auto& list : found) total += list.size();
-    std::vector<std::pair<uint64_t, uint32_t>> edges;
-    edges.reserve(total);
-    for (const auto& list : found) edges.insert(edges.end(), list.begin(), list.end());
-    tbb::parallel_sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());  // a face with a repeated edge
-    size_t distinct = 0;
-    for (size_t i = 0; i < edges.size(); ++i) distinct += i == 0 || edges[i].first != edges[i - 1].first;
-    size_t capacity = 16;
-    while (capacity < 2 * distinct) capacity *= 2;
-    slots_.assign(capacity, Slot{});
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-        size_t h = slot_of(edges[i].first, capacity);
-        while (slots_[h].key != kEmpty) h = (h + 1) & (capacity - 1);
-        Slot& slot = slots_[h];
-        slot.key = edges[i].first;
-        if (j - i <= 2) {  // one face (a border) or two; more: no one neighbour
-            slot.face[0] = edges[i].second;
-            if (j - i == 2) slot.face[1] = edges[i + 1].second;
-        }
-        i = j;
-    }
-    size_ = distinct;
+    size_ = distinct.load();
 }
 
 uint32_t EdgeNeighbours::across(uint32_t face, uint32_t a, uint32_t b) const {
-    if (a == b || slots_.empty()) return kNoFace;
+    if (a == b || !slots_) return kNoFace;
     const uint64_t key = edge_key(a, b);
-    const size_t mask = slots_.size() - 1;
-    for (size_t h = slot_of(key, slots_.size());; h = (h + 1) & mask) {
+    for (size_t h = slot_of(key, capacity_);; h = next_slot(h, capacity_)) {
         const Slot& slot = slots_[h];
-        if (slot.key == kEmpty) return kNoFace;
-        if (slot.key != key) continue;
-        if (slot.face[1] == kNoFace) return kNoFace;  // a border, or non-manifold
-        return slot.face[0] == face ? slot.face[1] : slot.face[1] == face ? slot.face[0] : kNoFace;
+        const uint64_t found = slot.key.load(std::memory_order_relaxed);
+        if (found == kEmpty) return kNoFace;
+        if (found != key) continue;
+        const uint32_t f0 = slot.face[0].load(std::memory_order_relaxed), f1 = slot.face[1].load(std::memory_order_relaxed);
+        if (f1 == kNoFace || f1 == kMany) return kNoFace;  // a border, or non-manifold
+        return f0 == face ? f1 : f1 == face ? f0 : kNoFace;
     }
 }
 

@@ -6,6 +6,7 @@
 // faces are told apart by topology (PointOn), never by a distance; docs/lines.md has the method
 // and its limits.
 #pragma once
+#include <atomic>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -73,13 +74,13 @@ struct OcclusionQuery {
 void reserve_embree_padding(std::vector<glm::vec3>& positions);
 
 // The faces on either side of the edges of the faces around a chosen set of vertices, from
-// one scan of the triangles: what the fold walks of one view's contours cross
+// two scans of the triangles: what the fold walks of one view's contours cross
 // (RayScene::occlusion_levels), instead of a mesh-wide edge table (500 MB at 10 M triangles).
 // Triangles with an out-of-range index are left out.
 class EdgeNeighbours {
 public:
     EdgeNeighbours() = default;
-    // `vertices` in any order, duplicates allowed; parallel scan and sort (TBB).
+    // `vertices` in any order, duplicates allowed; parallel scans (TBB).
     EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& vertices);
 
     // The one face other than `face` that has the edge (a, b); kNoFace on a border, a
@@ -89,13 +90,14 @@ public:
 
 private:
     // Open addressing (linear probing) on the edge key: a walk step is one or two loads.
-    struct Slot {
-        uint64_t key = kEmpty;
-        uint32_t face[2] = {kNoFace, kNoFace};  // both kNoFace on a non-manifold edge
-    };
     static constexpr uint64_t kEmpty = ~uint64_t(0);  // no edge key (high word > low word)
-    std::vector<Slot> slots_;
-    size_t size_ = 0;
+    static constexpr uint32_t kMany = 0xfffffffeu;    // face[1] of a non-manifold edge
+    struct Slot {
+        std::atomic<uint64_t> key{kEmpty};
+        std::atomic<uint32_t> face[2] = {kNoFace, kNoFace};
+    };
+    std::unique_ptr<Slot[]> slots_;
+    size_t capacity_ = 0, size_ = 0;
 };
 
 // An Embree scene of one mesh, built once (BVH of all triangles) and queried by many views.
@@ -186,7 +188,7 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
                                     const std::vector<LineSegment>& segments, const VisibilityOptions& options = {},
                                     const EdgeNeighbours* around = nullptr);
 
-// The edges of the faces that share a vertex with a contour segment's face (one scan of the
+// The edges of the faces that share a vertex with a contour segment's face (two scans of the
 // triangles): where the fold walks of one view go.
 EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours);
 
