@@ -119,7 +119,8 @@ TEST(TextureCli, PresetBaseColourTintsOnlyMeshesWithoutColoursOfTheirOwn) {
     EXPECT_NEAR(int(now[1]), int(was[1]), 1);
     EXPECT_NEAR(int(now[2]), int(was[2]), 1);
     // A mesh without colours of its own takes the preset's tint: warm, not grey.
-    const uint8_t* tinted = render(dir, plain, "--style anime").pixel(32, 32);
+    const Image plain_image = render(dir, plain, "--style anime");  // kept: pixel() points into it
+    const uint8_t* tinted = plain_image.pixel(32, 32);
     EXPECT_GT(int(tinted[0]), int(tinted[1]) + 20);
     EXPECT_GT(int(tinted[1]), int(tinted[2]) + 20);
 }
