@@ -8,6 +8,35 @@
 
 namespace inkshade::test {
 
+// Two triangles for each cell of a grid of (nx + 1) x (ny + 1) vertices numbered row by row
+// (vertex (i, j) is j (nx + 1) + i), counter-clockwise seen from where x × y points.
+inline void add_grid_triangles(Mesh& m, int nx, int ny) {
+    const auto idx = [&](int i, int j) { return uint32_t(j * (nx + 1) + i); };
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            m.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
+            m.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
+        }
+}
+
+// z = A cos(k x) over [−1.2, 1.2] × [−0.5, 0.5] moved by `shift` along x, k = 2π, A k = 1,
+// analytic normals: crests (ridges, k1 = A k² = 2π) at integer x, troughs (valleys, k2 = −2π)
+// at half-integers.
+inline Mesh wave(float shift, int nx = 240, int ny = 50) {
+    constexpr float kPi = std::numbers::pi_v<float>;
+    const float k = 2.0f * kPi, A = 1.0f / k;
+    Mesh m;
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            const float x = -1.2f + shift + 2.4f * float(i) / float(nx);
+            const float y = -0.5f + float(j) / float(ny);
+            m.positions.emplace_back(x, y, A * std::cos(k * x));
+            m.normals.push_back(glm::normalize(glm::vec3(A * k * std::sin(k * x), 0.0f, 1.0f)));
+        }
+    add_grid_triangles(m, nx, ny);
+    return m;
+}
+
 // Open cylinder of radius r around the z axis: `around` segments, `rows` rings from z = 0 to
 // `height`, counter-clockwise seen from outside, analytic normals.
 inline Mesh cylinder(float r, int around, int rows, float height) {

@@ -90,12 +90,7 @@ Mesh grid_plate(glm::vec3 origin, glm::vec3 u, glm::vec3 v, int nu, int nv, bool
             m.positions.push_back(origin + u * (float(i) / float(nu)) + v * (float(j) / float(nv)));
             if (normals) m.normals.push_back(n);
         }
-    const auto idx = [&](int i, int j) { return uint32_t(j * (nu + 1) + i); };
-    for (int j = 0; j < nv; ++j)
-        for (int i = 0; i < nu; ++i) {
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
-        }
+    add_grid_triangles(m, nu, nv);
     return m;
 }
 
@@ -160,28 +155,10 @@ Mesh page_fan(const std::vector<float>& angles_degrees, float width) {
     return m;
 }
 
-// z = A cos(k x) over [−1.2, 1.2] × [−0.5, 0.5], k = 2π, A k = 1 (tests/geometry/ridges_test.cpp):
+// z = A cos(k x) over [−1.2, 1.2] × [−0.5, 0.5], k = 2π, A k = 1 (analytic_meshes.hpp):
 // ridges on the crests x = 0, ±1, valleys in the troughs x = ±0.5; the grid is shifted a
 // quarter step so that neither runs through vertex columns.
-Mesh wave() {
-    const int nx = 240, ny = 50;
-    const float k = 2.0f * kPi, A = 1.0f / k, shift = 0.0025f;
-    Mesh m;
-    for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i) {
-            const float x = -1.2f + shift + 2.4f * float(i) / float(nx);
-            const float y = -0.5f + float(j) / float(ny);
-            m.positions.emplace_back(x, y, A * std::cos(k * x));
-            m.normals.push_back(glm::normalize(glm::vec3(A * k * std::sin(k * x), 0.0f, 1.0f)));
-        }
-    const auto idx = [&](int i, int j) { return uint32_t(j * (nx + 1) + i); };
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
-        }
-    return m;
-}
+Mesh wave() { return test::wave(0.0025f); }
 
 // ---- measuring -------------------------------------------------------------------------------
 
@@ -329,13 +306,19 @@ TEST(ExactVisibility, PlatesOneThousandthApart) {
     expect_drawn(m, "border", 500.0, 100.0);
 }
 
-TEST(ExactVisibility, InterpenetratingCubes) {
-    // A cube pokes, rotated, through a corner of a larger one; no normals, so the cube edges
-    // are creases and the contours run across the faces (angle-weighted vertex normals).
+// A cube poking, rotated, through a corner of a larger one, without normals.
+Mesh crossing_cubes() {
     Mesh mesh = cube(1.0f);
     glm::mat4 placement = glm::translate(glm::mat4(1.0f), {0.9f, 0.6f, 0.5f});
     placement = glm::rotate(placement, glm::radians(35.0f), glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)));
     append(mesh, transformed(cube(0.6f), placement));
+    return mesh;
+}
+
+TEST(ExactVisibility, InterpenetratingCubes) {
+    // A cube pokes, rotated, through a corner of a larger one; no normals, so the cube edges
+    // are creases and the contours run across the faces (angle-weighted vertex normals).
+    const Mesh mesh = crossing_cubes();
     const Measured m = measure(mesh, orbit(35.0f, 25.0f, 9.0f, {0.3f, 0.2f, 0.2f}), {"crease", "contour"});
     expect_correct(m);
     expect_drawn(m, "crease", 500.0, 200.0);
@@ -344,10 +327,7 @@ TEST(ExactVisibility, InterpenetratingCubes) {
 TEST(ExactVisibility, IntersectionLinesOfCrossingParts) {
     // The two cubes above (their crossing is a closed polygon), and two spheres crossing in a
     // circle whose far half the spheres hide: intersection lines, creases and contours.
-    Mesh mesh = cube(1.0f);
-    glm::mat4 placement = glm::translate(glm::mat4(1.0f), {0.9f, 0.6f, 0.5f});
-    placement = glm::rotate(placement, glm::radians(35.0f), glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)));
-    append(mesh, transformed(cube(0.6f), placement));
+    const Mesh mesh = crossing_cubes();
     const Measured boxes = measure(mesh, orbit(35.0f, 25.0f, 9.0f, {0.3f, 0.2f, 0.2f}), {"intersection", "crease"});
     expect_correct(boxes);
     expect_drawn(boxes, "intersection", 150.0, 40.0);

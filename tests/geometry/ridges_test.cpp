@@ -9,6 +9,7 @@
 
 #include "geometry/builtin_models.hpp"
 #include "geometry/chaining.hpp"
+#include "geometry/analytic_meshes.hpp"
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {
@@ -16,27 +17,10 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-// z = A cos(k x) over [−1.2, 1.2] × [−0.5, 0.5], k = 2π, A k = 1: crests (ridges, k1 = A k² =
-// 2π) at integer x, troughs (valleys, k2 = −2π) at half-integers; the threshold at the default
-// feature size (1 % of the 2.6 diagonal) is 0.1 / 0.026 ≈ 3.8.
-Mesh wave(float shift, int nx = 240, int ny = 50) {
-    const float k = 2.0f * kPi, A = 1.0f / k;
-    Mesh m;
-    for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i) {
-            const float x = -1.2f + shift + 2.4f * float(i) / float(nx);
-            const float y = -0.5f + float(j) / float(ny);
-            m.positions.emplace_back(x, y, A * std::cos(k * x));
-            m.normals.push_back(glm::normalize(glm::vec3(A * k * std::sin(k * x), 0.0f, 1.0f)));
-        }
-    const auto idx = [&](int i, int j) { return uint32_t(j * (nx + 1) + i); };
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
-            m.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
-        }
-    return m;
-}
+// The wave (analytic_meshes.hpp): crests (ridges, k1 = 2π) at integer x, troughs (valleys,
+// k2 = −2π) at half-integers; the threshold at the default feature size (1 % of the 2.6
+// diagonal) is 0.1 / 0.026 ≈ 3.8.
+using test::wave;
 
 // Checks that every segment inside the margin lies within `tol` of x = n/2 for n of the given
 // parity, and returns the length drawn per such line.
