@@ -76,6 +76,8 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
 }
 
 int run_lines(const LinesArgs& args, const CLI::App& cmd) {
+    std::optional<OcclusionLevels> levels;
+    if (!args.occlusion_levels.empty()) levels = parse_occlusion_levels(args.occlusion_levels);
     // Every output checked before any work: a run that fails leaves no file.
     check_output_path("-o", args.output);
     const std::string ext = lower_ascii(std::filesystem::path(args.output).extension().string());
@@ -85,7 +87,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") {
         image_file = image_output(args.output, args.image);
         if (args.hidden) throw InputError("--hidden: hidden lines are drawn (dashed) in SVG only; write .svg");
-        if (!args.occlusion_levels.empty() && parse_occlusion_levels(args.occlusion_levels).max > 0)
+        if (levels && levels->max > 0)
             throw InputError("--occlusion-levels: hidden levels are drawn (dashed) in SVG only; write .svg");
     } else {
         throw InputError(args.output, "cannot write " +
@@ -98,7 +100,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
-    if (!args.occlusion_levels.empty()) request.occlusion_levels = parse_occlusion_levels(args.occlusion_levels);
+    request.occlusion_levels = levels;
     if (image_file) request.bit_depth = image_file->bit_depth;
     Scene scene = make_scene(request);
     if (image_file) check_background(*image_file, scene.options.background);

@@ -26,6 +26,11 @@ struct LineType {
 // The stroke parameters every line type has: "color", "opacity" and "width" (pixels).
 std::vector<ParamSpec> stroke_params(glm::vec3 color, float width_px);
 
+// The deepest occlusion level counted (how many surfaces lie in front of a line; 0 = visible):
+// an object-space type's min-level and max-level go up to it, a level of it means "this deep or
+// deeper".
+constexpr int kMaxOcclusionLevel = 253;
+
 // One line type of a style with its parameter values (missing names take the defaults).
 struct LineSettings {
     std::string type;

@@ -33,8 +33,8 @@ struct SceneOutputs {
 struct OcclusionLevels {
     int min = 0, max = 0;
 };
-constexpr int kMaxOcclusionLevel = 253;  // the deepest level counted
-// "A-B" (0 ≤ A ≤ B ≤ 253), "A" (A only) or "A-" (A and every deeper level). InputError else.
+// "A-B" (0 ≤ A ≤ B ≤ kMaxOcclusionLevel), "A" (A only) or "A-" (A and every deeper level).
+// InputError else.
 OcclusionLevels parse_occlusion_levels(const std::string& text);
 
 struct SceneRequest {

@@ -1,10 +1,9 @@
 // LineExtractor: per view, for each object-space line type of the style: extract segments
 // (world space) → split by visibility (ray casting, visibility.hpp) → chain into polylines →
 // project to image pixels → drop short chains and smooth (in pixels) → one layer.
+#include <algorithm>
 #include <chrono>
 #include <map>
-
-#include <algorithm>
 
 #include "geometry/chaining.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
@@ -110,11 +109,10 @@ std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImagePr
 struct LevelRange {
     int min = 0, max = 0;
 };
-constexpr int kMaxLevel = 253;  // the deepest level counted (VisibilityOptions::count_levels_to)
 
 LevelRange drawn_levels(const LineSettings& settings) {
     LevelRange r{int(line_number(settings, "min-level")), int(line_number(settings, "max-level"))};
-    if (line_number(settings, "hidden") != 0.0f) r.max = kMaxLevel;
+    if (line_number(settings, "hidden") != 0.0f) r.max = kMaxOcclusionLevel;
     if (r.min > r.max)
         throw InputError(settings.type + ": min-level " + std::to_string(r.min) + " is above max-level " +
                          std::to_string(r.max));
@@ -184,13 +182,12 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         timer.add("extract", extract_ms);
     }
 
-    // The faces around the contours, where the cap walks of their visibility test go
+    // The faces around the contours, where the fold walks of their visibility test go
     // (RayScene::occlusion_levels), gathered once per view for every contour list.
     const EdgeNeighbours around = timer("visibility", [&] {
-        std::vector<LineSegment> contours;
+        std::vector<const std::vector<LineSegment>*> contours;
         for (size_t i = 0; i < object_lines.size(); ++i)
-            if (object_lines[i]->type == "contour")
-                contours.insert(contours.end(), segments_per_type[i].begin(), segments_per_type[i].end());
+            if (object_lines[i]->type == "contour") contours.push_back(&segments_per_type[i]);
         return contours.empty() ? EdgeNeighbours() : contour_surroundings(m.data.mesh(), contours);
     });
     for (size_t i = 0; i < object_lines.size(); ++i) {
@@ -198,7 +195,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         const std::vector<LineSegment>& segments = segments_per_type[i];
         const LevelRange levels = drawn_levels(*settings);
         VisibilityOptions options;
-        options.count_levels_to = std::min(levels.max + 1, kMaxLevel);
+        options.count_levels_to = std::min(levels.max + 1, kMaxOcclusionLevel);
         options.contour = settings->type == "contour";
         const VisibilitySplit split =
             timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, options, &around); });

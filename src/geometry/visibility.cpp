@@ -17,6 +17,7 @@
 
 #include "geometry/chaining.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/lines.hpp"
 
 namespace inkshade::geometry {
 
@@ -52,6 +53,9 @@ bool ImageProjection::clipped(const glm::vec3& p) const {
 namespace {
 
 bool has_vertex(const glm::uvec3& t, uint32_t v) { return t.x == v || t.y == v || t.z == v; }
+
+// Does triangle t index only vertices below nv? (Other triangles are never hit nor walked.)
+bool in_range(const glm::uvec3& t, size_t nv) { return t.x < nv && t.y < nv && t.z < nv; }
 
 int shared_vertices(const glm::uvec3& t, const glm::uvec3& u) {
     return int(has_vertex(t, u.x)) + int(has_vertex(t, u.y)) + int(has_vertex(t, u.z));
@@ -281,11 +285,11 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     m.mesh = &mesh;
     m.triangles = mesh.triangles.data();
     if (std::any_of(mesh.triangles.begin(), mesh.triangles.end(),
-                    [&](const glm::uvec3& t) { return t.x >= nv || t.y >= nv || t.z >= nv; })) {
+                    [&](const glm::uvec3& t) { return !in_range(t, nv); })) {
         // Embree skips such triangles too, but a hit must never index out of range here.
         m.own_triangles = mesh.triangles;
         for (auto& t : m.own_triangles)
-            if (t.x >= nv || t.y >= nv || t.z >= nv) t = glm::uvec3(0);  // never hit
+            if (!in_range(t, nv)) t = glm::uvec3(0);  // never hit
         m.triangles = m.own_triangles.data();
     }
     if (nv > 0 && nf > 0) {
@@ -343,7 +347,7 @@ EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& ve
     for (uint32_t v : vertices)
         if (v < nv) chosen[v / 64] |= uint64_t(1) << (v % 64);
     auto near = [&](const glm::uvec3& t) {
-        if (t.x >= nv || t.y >= nv || t.z >= nv) return false;
+        if (!in_range(t, nv)) return false;
         bool hit = false;
         for (uint32_t v : {t.x, t.y, t.z}) hit |= ((chosen[v / 64] >> (v % 64)) & 1) != 0;
         return hit;
@@ -487,7 +491,7 @@ void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuer
 
 namespace {
 
-constexpr uint8_t kClipped = 0xff;  // a sample outside the near/far range (levels are ≤ 255 − 1)
+constexpr uint8_t kClipped = 0xff;  // a sample outside the near/far range (not a level)
 
 bool is_vertex_key(uint64_t key) { return uint32_t(key >> 32) == uint32_t(key); }
 bool is_edge_key(uint64_t key) { return uint32_t(key >> 32) < uint32_t(key); }
@@ -496,11 +500,10 @@ bool is_pierce_key(uint64_t key) { return uint32_t(key >> 32) == 0xfffffffcu; }
 // A segment along a mesh edge (crease, border, silhouette edge): vertex keys at both ends.
 bool along_edge(const LineSegment& s) { return is_vertex_key(s.edge_a) && is_vertex_key(s.edge_b); }
 
+// A face that exists and indexes only existing vertices (and shading normals, with hard edges).
 bool valid_face(const Mesh& mesh, uint32_t f) {
-    if (f >= mesh.triangles.size()) return false;
-    const glm::uvec3 t = mesh.triangles[f];
-    const size_t nv = mesh.positions.size();
-    return t.x < nv && t.y < nv && t.z < nv;
+    if (f >= mesh.triangles.size() || !in_range(mesh.triangles[f], mesh.positions.size())) return false;
+    return !mesh.has_hard_edges() || in_range(mesh.shading_normal_ids[f], mesh.shading_normals.size());
 }
 
 // What the points strictly inside a segment lie on.
@@ -684,28 +687,25 @@ ChainNode chain_node(const std::vector<LineSegment>& segments, const Chain& chai
 
 glm::vec3 node_point(const ChainNode& n) { return n.at_b ? n.segment->b : n.segment->a; }
 
-OcclusionQuery node_query(const Tester& t, const ChainNode& n) {
-    return query_at(t.mesh, t.view, node_point(n), end_on(t.mesh, *n.segment, n.at_b ? n.segment->edge_b : n.segment->edge_a),
-                    t.fold_px);
+PointOn node_on(const Mesh& mesh, const ChainNode& n) {
+    return end_on(mesh, *n.segment, n.at_b ? n.segment->edge_b : n.segment->edge_a);
 }
 
-uint8_t node_level(const Tester& t, const ChainNode& n) {
-    if (t.view.clipped(node_point(n))) return kClipped;
-    const OcclusionQuery q = node_query(t, n);
-    uint8_t level = 0;
-    t.scene.occlusion_levels(t.view, &q, 1, &level, t.cap, t.around);
-    return level;
+OcclusionQuery node_query(const Tester& t, const ChainNode& n) {
+    return query_at(t.mesh, t.view, node_point(n), node_on(t.mesh, n), t.fold_px);
 }
+
+uint8_t node_level(const Tester& t, const ChainNode& n) { return t.level(node_point(n), node_on(t.mesh, n)); }
 
 }  // namespace
 
-EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours) {
+EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& contours) {
     std::vector<uint32_t> vertices;
-    vertices.reserve(3 * contours.size());
-    for (const LineSegment& s : contours)
-        for (uint32_t f : {s.face, s.face_b})
-            if (valid_face(mesh, f))
-                for (int k = 0; k < 3; ++k) vertices.push_back(mesh.triangles[f][k]);
+    for (const std::vector<LineSegment>* list : contours)
+        for (const LineSegment& s : *list)
+            for (uint32_t f : {s.face, s.face_b})
+                if (valid_face(mesh, f))
+                    for (int k = 0; k < 3; ++k) vertices.push_back(mesh.triangles[f][k]);
     return EdgeNeighbours(mesh, vertices);
 }
 
@@ -717,12 +717,13 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
     const double precision = std::max(double(options.transition_precision_px), 1e-4);
     EdgeNeighbours own;
     if (!around && options.contour) {
-        own = contour_surroundings(mesh, segments);
+        own = contour_surroundings(mesh, {&segments});
         around = &own;
     }
-    const Tester tester{scene, mesh, view, around, std::clamp(options.count_levels_to, 1, 253),
+    const Tester tester{scene, mesh, view, around, std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
                         options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f};
-    constexpr uint8_t kSplit = 0xfe;  // not a level (levels ≤ 253) nor kClipped
+    constexpr uint8_t kSplit = 0xfe;  // not a level (levels ≤ kMaxOcclusionLevel) nor kClipped
+    static_assert(kMaxOcclusionLevel < kSplit && kSplit < kClipped);
     std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
 

@@ -158,9 +158,9 @@ struct VisibilityOptions {
     float sample_spacing_px = 1.0f;
     // Bisection of a change of level stops when the bracket is this short (pixels).
     float transition_precision_px = 0.01f;
-    // Levels are counted up to this (RayScene::occlusion_levels' cap, 1..255): 1 tells
-    // visible from hidden at the cost of one occlusion ray per sample (hidden parts then all
-    // have level 1).
+    // Levels are counted up to this (RayScene::occlusion_levels' cap, 1..kMaxOcclusionLevel):
+    // 1 tells visible from hidden at the cost of one occlusion ray per sample (hidden parts
+    // then all have level 1).
     int count_levels_to = 1;
     // The segments are occluding contours (line type `contour`): their samples inside faces
     // and on edges ignore their fold (RayScene::occlusion_levels) within this many pixels.
@@ -188,8 +188,8 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
                                     const std::vector<LineSegment>& segments, const VisibilityOptions& options = {},
                                     const EdgeNeighbours* around = nullptr);
 
-// The edges of the faces that share a vertex with a contour segment's face (two scans of the
-// triangles): where the fold walks of one view go.
-EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<LineSegment>& contours);
+// The edges of the faces that share a vertex with a face of the contour segments (the lists of
+// every contour type of a view; two scans of the triangles): where its fold walks go.
+EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& contours);
 
 }  // namespace inkshade::geometry

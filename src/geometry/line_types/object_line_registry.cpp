@@ -47,15 +47,15 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
     params.push_back(bool_param("taper", false,
                                 "line strength (fading, e.g. suggestive contours near their trim point) scales "
                                 "the stroke width instead of its opacity"));
-    params.push_back(int_param("min-level", 0, 0, 253,
+    params.push_back(int_param("min-level", 0, 0, kMaxOcclusionLevel,
                                "lowest occlusion level drawn: how many surfaces lie in front of a line (0 = "
                                "visible; quantitative invisibility, Appel 1967)"));
-    params.push_back(int_param("max-level", 0, 0, 253,
+    params.push_back(int_param("max-level", 0, 0, kMaxOcclusionLevel,
                                "highest occlusion level drawn; levels from 1 up go to dashed layers TYPE-hidden-N "
                                "(SVG and JSON only)"));
     params.push_back(bool_param("hidden", false,
                                 "also output every hidden level, as dashed layers TYPE-hidden-N (technical "
-                                "drawing convention; max-level 253)"));
+                                "drawing convention; every max-level)"));
     return params;
 }
 
