@@ -6,6 +6,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -108,10 +110,10 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std
     const ViewVector view(camera);
     const size_t n = mesh.positions.size();
 
-    // Per vertex only the isoline function κr sin²θ (rtsc's kr: κr's zeros, but finite where
-    // w → 0). The trim test is evaluated on demand at the corners
-    // of the few faces the isoline crosses (a pure function of the vertex, so the same bits
-    // whichever face asks), which saves reading the derivative tensor for every vertex.
+    // Per vertex the isoline function κr sin²θ (rtsc's kr: κr's zeros, but finite where w → 0),
+    // then the trim test (D_w κr and n·v, rtsc's sctest_num / sctest_den) only at the vertices
+    // of faces the isoline crosses: on a scan that is a fraction of the vertices, each of which
+    // the faces around it would otherwise evaluate up to a dozen times.
     std::vector<float> krs(n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kGrain), [&](const auto& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
@@ -122,10 +124,32 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std
             krs[i] = std::isfinite(k) ? float(k) : 0.0f;
         }
     });
+    const auto& tris = mesh.triangles;
+    auto crossed = [&](const glm::uvec3& t) {
+        if (t.x >= n || t.y >= n || t.z >= n) return false;
+        const bool a = krs[t.x] >= 0.0f, b = krs[t.y] >= 0.0f, c = krs[t.z] >= 0.0f;
+        return !(a == b && b == c);
+    };
+    std::vector<uint8_t> needed(n, 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), kGrain), [&](const auto& range) {
+        for (size_t f = range.begin(); f != range.end(); ++f)
+            if (crossed(tris[f]))
+                for (int k = 0; k < 3; ++k) std::atomic_ref<uint8_t>(needed[tris[f][k]]).store(1, std::memory_order_relaxed);
+    });
+    struct Trim {
+        float dwkr = 0.0f, ndotv = 0.0f;
+    };
+    std::vector<Trim> trim(n);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kGrain), [&](const auto& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i)
+            if (needed[i]) {
+                const ViewCurvature vc = view_curvature(normals[i], view.at(mesh.positions[i]), curvature, i);
+                trim[i] = {vc.dwkr, vc.ndotv};
+            }
+    });
     // The trim test's numerator (D_w κr − threshold·n·v) and denominator (n·v) at vertex i.
     auto test = [&](uint32_t i) {
-        const ViewCurvature vc = view_curvature(normals[i], view.at(mesh.positions[i]), curvature, i);
-        return std::pair{double(vc.dwkr) - threshold * double(vc.ndotv), double(vc.ndotv)};
+        return std::pair{double(trim[i].dwkr) - threshold * double(trim[i].ndotv), double(trim[i].ndotv)};
     };
 
     // The crossing on edge (i, j) with its test values, from the edge alone (bit-identical
@@ -142,10 +166,9 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std
         return tp;
     };
 
-    const auto& tris = mesh.triangles;
     return collect_face_segments(tris.size(), [&](size_t f, std::vector<LineSegment>& out) {
         const glm::uvec3 t = tris[f];
-        if (t.x >= n || t.y >= n || t.z >= n) return;
+        if (!crossed(t)) return;
         const bool pos[3] = {krs[t.x] >= 0.0f, krs[t.y] >= 0.0f, krs[t.z] >= 0.0f};
         if (pos[0] == pos[1] && pos[1] == pos[2]) return;
         const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);
