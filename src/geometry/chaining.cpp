@@ -1,25 +1,25 @@
-// Chaining: nodes are edge keys, segments are graph edges. A hash map numbers the nodes, a
+// Chaining: nodes are edge keys, segments are graph edges. A flat hash table numbers the nodes, a
 // counting pass builds compressed adjacency (CSR) in segment order, then each segment is
 // walked once — O(n) overall, and the order depends only on the input order.
 #include "geometry/chaining.hpp"
 
 #include <algorithm>
 #include <array>
-#include <unordered_map>
+
+#include "geometry/key_numbering.hpp"
 
 namespace inkshade::geometry {
 
 std::vector<Chain> chain_order(const std::vector<LineSegment>& segments) {
     const size_t n = segments.size();
-    std::unordered_map<uint64_t, uint32_t> node_of;
-    node_of.reserve(2 * n);
+    KeyNumbering node_of(n + 1);  // a chain of n segments has about n nodes
     std::vector<std::array<uint32_t, 2>> seg_node(n);
     std::vector<char> used(n, 0);
     std::vector<uint32_t> degree;
     auto node = [&](uint64_t key) {
-        const auto [it, inserted] = node_of.try_emplace(key, uint32_t(degree.size()));
-        if (inserted) degree.push_back(0);
-        return it->second;
+        const uint32_t v = node_of.insert(key);
+        if (v == degree.size()) degree.push_back(0);
+        return v;
     };
     for (size_t s = 0; s < n; ++s) {
         if (segments[s].edge_a == segments[s].edge_b) {
