@@ -608,6 +608,12 @@ double pixel_distance(const ImageProjection& view, const glm::vec3& a, const glm
 // (0xfffffffc) has it.
 constexpr uint64_t split_key(uint32_t counter) { return (uint64_t(0xfffffffdu) << 32) | counter; }
 
+// A point to test and what it lies on.
+struct Sample {
+    glm::vec3 point;
+    PointOn on;
+};
+
 struct Tester {
     const RayScene& scene;
     const Mesh& mesh;
@@ -616,59 +622,131 @@ struct Tester {
     int cap;
     float fold_px;  // contour samples: the fold band in pixels, else 0
 
-    uint8_t level(const glm::vec3& p, const PointOn& on) const {
-        if (view.clipped(p)) return kClipped;
-        const OcclusionQuery q = query_at(mesh, view, p, on, fold_px);
-        uint8_t level = 0;
-        scene.occlusion_levels(view, &q, 1, &level, cap, around);
-        return level;
+    // The levels of many samples (kClipped outside the near/far range) as ray streams
+    // (rtcOccluded1M), in fixed blocks on TBB tasks: the same blocks, so the same ray packets,
+    // whatever the thread count. The bisection's rounds go through here too: a stream costs a
+    // third of what the same rays cost one by one.
+    void levels(const std::vector<Sample>& samples, std::vector<uint8_t>& out) const {
+        constexpr size_t kBlock = 64;
+        out.resize(samples.size());
+        tbb::parallel_for(size_t(0), (samples.size() + kBlock - 1) / kBlock, [&](size_t block) {
+            OcclusionQuery queries[kBlock];
+            uint8_t found[kBlock];
+            size_t where[kBlock];
+            size_t m = 0;
+            const size_t end = std::min(samples.size(), (block + 1) * kBlock);
+            for (size_t i = block * kBlock; i < end; ++i) {
+                if (view.clipped(samples[i].point)) {
+                    out[i] = kClipped;
+                    continue;
+                }
+                queries[m] = query_at(mesh, view, samples[i].point, samples[i].on, fold_px);
+                where[m++] = i;
+            }
+            scene.occlusion_levels(view, queries, m, found, cap, around);
+            for (size_t k = 0; k < m; ++k) out[where[k]] = found[k];
+        });
     }
 };
 
-// A segment's level given the levels of its two ends (a, b): one level, or pieces split where
-// interior samples (≤ spacing apart in the image) differ, each change bisected.
-struct SegmentLevels {
-    uint8_t whole = 0;
-    std::vector<Piece> pieces;  // empty: `whole`
+// A segment whose ends differ in level, or longer than the sample spacing: sampled inside at
+// `steps` equal parts, each change of level then bisected.
+struct SegmentTask {
+    uint32_t segment;
+    uint8_t level_a, level_b;
+    uint32_t steps;
+    size_t first;  // its steps − 1 interior samples' index in the task list's sample array
 };
 
-SegmentLevels resolve_segment(const Tester& tester, const LineSegment& s, uint8_t level_a, uint8_t level_b,
-                              double spacing, double precision) {
+// Samples parts of a segment when it is longer than `spacing` in the image (1 part when an end
+// is clipped or the camera degenerate).
+uint32_t segment_steps(const ImageProjection& view, const LineSegment& s, double spacing) {
+    if (view.clipped(s.a) || view.clipped(s.b)) return 1;
+    const double px = pixel_distance(view, s.a, s.b);
+    // NaN (a degenerate camera) keeps one step instead of an undefined conversion.
+    return std::isfinite(px) ? uint32_t(std::clamp(std::ceil(px / spacing), 1.0, 16384.0)) : 1;
+}
+
+// A change of level inside a task's segment, between parameters lo (level `level_lo`) and hi.
+struct Bracket {
+    uint32_t task, step;
+    double lo, hi;
+    uint8_t level_lo;
+};
+
+// Each task's pieces (into `pieces`, or `whole` when its samples agree): interior samples in
+// one stream, then every change bisected in rounds of one stream each until its bracket is
+// `precision` pixels long.
+void resolve_segments(const Tester& tester, const std::vector<LineSegment>& segments,
+                      const std::vector<SegmentTask>& tasks, double precision, std::vector<uint8_t>& whole,
+                      std::vector<std::vector<Piece>>& pieces) {
     const ImageProjection& view = tester.view;
-    const PointOn inside = interior_on(tester.mesh, s);
-    int steps = 1;
-    if (!view.clipped(s.a) && !view.clipped(s.b)) {
-        const double px = pixel_distance(view, s.a, s.b);
-        // NaN (a degenerate camera) keeps one step instead of an undefined conversion.
-        if (std::isfinite(px)) steps = int(std::clamp(std::ceil(px / spacing), 1.0, 16384.0));
+    const size_t interior = tasks.empty() ? 0 : tasks.back().first + tasks.back().steps - 1;
+    std::vector<Sample> samples(interior);
+    tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) {
+        const SegmentTask& t = tasks[i];
+        const LineSegment& s = segments[t.segment];
+        const PointOn inside = interior_on(tester.mesh, s);
+        for (uint32_t k = 1; k < t.steps; ++k) samples[t.first + k - 1] = {lerp(s, double(k) / t.steps), inside};
+    });
+    std::vector<uint8_t> levels;
+    tester.levels(samples, levels);
+    auto level_at = [&](const SegmentTask& t, uint32_t k) {
+        return k == 0 ? t.level_a : k == t.steps ? t.level_b : levels[t.first + k - 1];
+    };
+
+    std::vector<Bracket> brackets;
+    for (uint32_t i = 0; i < tasks.size(); ++i) {
+        const SegmentTask& t = tasks[i];
+        for (uint32_t k = 0; k < t.steps; ++k)
+            if (level_at(t, k) != level_at(t, k + 1))
+                brackets.push_back({i, k, double(k) / t.steps, double(k + 1) / t.steps, level_at(t, k)});
     }
-    std::vector<uint8_t> levels(size_t(steps) + 1);
-    levels[0] = level_a;
-    levels[size_t(steps)] = level_b;
-    for (int k = 1; k < steps; ++k) levels[size_t(k)] = tester.level(lerp(s, double(k) / steps), inside);
-    SegmentLevels out;
-    if (std::all_of(levels.begin(), levels.end(), [&](uint8_t x) { return x == levels[0]; })) {
-        out.whole = levels[0];
-        return out;
-    }
-    // Runs of equal level; each change bisected between its two samples.
-    double start = 0.0;
-    for (int k = 0; k < steps; ++k) {
-        if (levels[size_t(k)] == levels[size_t(k) + 1]) continue;
-        double lo = double(k) / steps, hi = double(k + 1) / steps;
-        for (int iter = 0; iter < 60; ++iter) {
-            const glm::vec3 plo = lerp(s, lo), phi = lerp(s, hi);
+    std::vector<uint32_t> active(brackets.size());
+    for (uint32_t b = 0; b < active.size(); ++b) active[b] = b;
+    std::vector<char> done;
+    std::vector<uint8_t> found;
+    for (int iter = 0; iter < 60 && !active.empty(); ++iter) {
+        samples.resize(active.size());
+        done.assign(active.size(), 0);
+        tbb::parallel_for(size_t(0), active.size(), [&](size_t i) {
+            const Bracket& b = brackets[active[i]];
+            const LineSegment& s = segments[tasks[b.task].segment];
+            const glm::vec3 plo = lerp(s, b.lo), phi = lerp(s, b.hi);
             const bool measurable = !view.clipped(plo) && !view.clipped(phi);
-            if (measurable ? pixel_distance(view, plo, phi) <= precision : hi - lo < 1e-7) break;
-            const double mid = 0.5 * (lo + hi);
-            (tester.level(lerp(s, mid), inside) == levels[size_t(k)] ? lo : hi) = mid;
+            done[i] = measurable ? pixel_distance(view, plo, phi) <= precision : b.hi - b.lo < 1e-7;
+            samples[i] = {lerp(s, 0.5 * (b.lo + b.hi)), interior_on(tester.mesh, s)};
+        });
+        size_t kept = 0;
+        for (size_t i = 0; i < active.size(); ++i)
+            if (!done[i]) samples[kept] = samples[i], active[kept++] = active[i];
+        samples.resize(kept);
+        active.resize(kept);
+        tester.levels(samples, found);
+        for (size_t i = 0; i < kept; ++i) {
+            Bracket& b = brackets[active[i]];
+            (found[i] == b.level_lo ? b.lo : b.hi) = 0.5 * (b.lo + b.hi);
         }
-        const double t = 0.5 * (lo + hi);
-        out.pieces.push_back({start, t, levels[size_t(k)]});
-        start = t;
     }
-    out.pieces.push_back({start, 1.0, levels[size_t(steps)]});
-    return out;
+
+    // Runs of equal level, split at the middle of each change's bracket.
+    size_t next = 0;
+    for (uint32_t i = 0; i < tasks.size(); ++i) {
+        const SegmentTask& t = tasks[i];
+        if (next == brackets.size() || brackets[next].task != i) {
+            whole[t.segment] = t.level_a;  // every sample agrees
+            continue;
+        }
+        std::vector<Piece>& out = pieces[t.segment];
+        double start = 0.0;
+        for (; next < brackets.size() && brackets[next].task == i; ++next) {
+            const Bracket& b = brackets[next];
+            const double at = 0.5 * (b.lo + b.hi);
+            out.push_back({start, at, b.level_lo});
+            start = at;
+        }
+        out.push_back({start, 1.0, t.level_b});
+    }
 }
 
 // One node of a chain (chaining.hpp): node i is where segment i starts in walking order, node
@@ -691,11 +769,7 @@ PointOn node_on(const Mesh& mesh, const ChainNode& n) {
     return end_on(mesh, *n.segment, n.at_b ? n.segment->edge_b : n.segment->edge_a);
 }
 
-OcclusionQuery node_query(const Tester& t, const ChainNode& n) {
-    return query_at(t.mesh, t.view, node_point(n), node_on(t.mesh, n), t.fold_px);
-}
-
-uint8_t node_level(const Tester& t, const ChainNode& n) { return t.level(node_point(n), node_on(t.mesh, n)); }
+Sample node_sample(const Mesh& mesh, const ChainNode& n) { return {node_point(n), node_on(mesh, n)}; }
 
 }  // namespace
 
@@ -770,81 +844,75 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             i = j;
         }
     });
-    // Their levels, as ray streams in blocks (rtcOccluded1M); clipped nodes need no ray.
+    // Their levels, in one stream.
     std::vector<size_t> first(chains.size() + 1, 0);
     for (size_t c = 0; c < chains.size(); ++c) first[c + 1] = first[c] + sampled[c].size();
-    std::vector<uint8_t> node_levels(first.back(), 0);
-    std::vector<std::pair<uint32_t, uint32_t>> flat(first.back());  // (chain, node)
-    for (size_t c = 0; c < chains.size(); ++c)
-        for (size_t s = 0; s < sampled[c].size(); ++s) flat[first[c] + s] = {uint32_t(c), sampled[c][s]};
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, flat.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-        std::vector<OcclusionQuery> queries;
-        std::vector<size_t> where;
-        queries.reserve(r.size());
-        for (size_t f = r.begin(); f != r.end(); ++f) {
-            const ChainNode node = chain_node(segments, chains[flat[f].first], flat[f].second);
-            if (view.clipped(node_point(node))) {
-                node_levels[f] = kClipped;
-                continue;
-            }
-            queries.push_back(node_query(tester, node));
-            where.push_back(f);
-        }
-        std::vector<uint8_t> found(queries.size());
-        scene.occlusion_levels(view, queries.data(), queries.size(), found.data(), tester.cap, around);
-        for (size_t q = 0; q < queries.size(); ++q) node_levels[where[q]] = found[q];
+    std::vector<Sample> samples(first.back());
+    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
+        for (size_t k = 0; k < sampled[c].size(); ++k)
+            samples[first[c] + k] = node_sample(mesh, chain_node(segments, chains[c], sampled[c][k]));
     });
+    std::vector<uint8_t> node_levels;
+    tester.levels(samples, node_levels);
 
-    // Between consecutive samples: whole levels, or the change searched and bisected.
+    // Between two samples of one level, every segment takes it. Between samples of different
+    // levels, every node in between is tested as well (one stream for all), then each segment
+    // whose ends differ, or that is longer than `spacing`, is resolved (resolve_segments).
+    std::vector<std::vector<uint32_t>> inner(chains.size());  // nodes inside changing gaps
+    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
+        const std::vector<uint32_t>& nodes = sampled[c];
+        for (size_t m = 0; m + 1 < nodes.size(); ++m)
+            if (node_levels[first[c] + m] != node_levels[first[c] + m + 1])
+                for (uint32_t i = nodes[m] + 1; i < nodes[m + 1]; ++i) inner[c].push_back(i);
+    });
+    std::vector<size_t> inner_first(chains.size() + 1, 0);
+    for (size_t c = 0; c < chains.size(); ++c) inner_first[c + 1] = inner_first[c] + inner[c].size();
+    samples.resize(inner_first.back());
+    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
+        for (size_t k = 0; k < inner[c].size(); ++k)
+            samples[inner_first[c] + k] = node_sample(mesh, chain_node(segments, chains[c], inner[c][k]));
+    });
+    std::vector<uint8_t> inner_levels;
+    tester.levels(samples, inner_levels);
+
+    std::vector<std::vector<SegmentTask>> chain_tasks(chains.size());
     tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
         const Chain& chain = chains[c];
+        const std::vector<uint32_t>& nodes = sampled[c];
+        const uint8_t* inner_level = inner_levels.data() + inner_first[c];
+        // Levels at a segment's start and end in walking order, to its a and b ends.
         auto set_segment = [&](size_t i, uint8_t level_start, uint8_t level_end) {
-            // Levels at the segment's start and end in walking order, to its a and b ends.
             const uint32_t s = chain.segments[i];
             const bool rev = chain.reversed[i] != 0;
             const uint8_t la = rev ? level_end : level_start, lb = rev ? level_start : level_end;
-            if (la == lb && pixel_distance(view, segments[s].a, segments[s].b) <= spacing) {
+            const uint32_t steps = segment_steps(view, segments[s], spacing);
+            if (la == lb && steps == 1)
                 whole[s] = la;
-                return;
-            }
-            SegmentLevels r = resolve_segment(tester, segments[s], la, lb, spacing, precision);
-            if (r.pieces.empty())
-                whole[s] = r.whole;
             else
-                pieces[s] = std::move(r.pieces);
+                chain_tasks[c].push_back({s, la, lb, steps, 0});
         };
-        const std::vector<uint32_t>& nodes = sampled[c];
         for (size_t m = 0; m + 1 < nodes.size(); ++m) {
-            size_t lo = nodes[m];
-            const size_t end = nodes[m + 1];
-            uint8_t level_lo = node_levels[first[c] + m];
-            const uint8_t level_end = node_levels[first[c] + m + 1];
-            while (lo < end) {
-                if (level_lo == level_end || end - lo == 1) {
-                    if (end - lo == 1) {
-                        set_segment(lo, level_lo, level_end);
-                    } else {
-                        for (size_t i = lo; i < end; ++i) whole[chain.segments[i]] = level_lo;
-                    }
-                    break;
-                }
-                // The last node of level level_lo before `end`, by bisection over nodes.
-                size_t a = lo, b = end;
-                uint8_t level_b = level_end;
-                while (b - a > 1) {
-                    const size_t mid = (a + b) / 2;
-                    const uint8_t level_mid = node_level(tester, chain_node(segments, chain, mid));
-                    if (level_mid == level_lo)
-                        a = mid;
-                    else
-                        b = mid, level_b = level_mid;
-                }
-                for (size_t i = lo; i < a; ++i) whole[chain.segments[i]] = level_lo;
-                set_segment(a, level_lo, level_b);
-                lo = b, level_lo = level_b;
+            const size_t lo = nodes[m], end = nodes[m + 1];
+            const uint8_t level_lo = node_levels[first[c] + m], level_end = node_levels[first[c] + m + 1];
+            if (level_lo == level_end && end - lo > 1) {
+                for (size_t i = lo; i < end; ++i) whole[chain.segments[i]] = level_lo;
+                continue;
+            }
+            uint8_t level = level_lo;
+            for (size_t i = lo; i < end; ++i) {
+                const uint8_t next = i + 1 == end ? level_end : *inner_level++;
+                set_segment(i, level, next);
+                level = next;
             }
         }
     });
+    std::vector<SegmentTask> tasks;
+    for (std::vector<SegmentTask>& list : chain_tasks)
+        for (SegmentTask& t : list) {
+            t.first = tasks.empty() ? 0 : tasks.back().first + tasks.back().steps - 1;
+            tasks.push_back(t);
+        }
+    resolve_segments(tester, segments, tasks, precision, whole, pieces);
 
     // Serial gather in input order, so split keys and output order are deterministic.
     VisibilitySplit result;
