@@ -77,10 +77,16 @@ std::vector<Chain> chain_order(const std::vector<LineSegment>& segments) {
                     std::reverse(chain.reversed.begin(), chain.reversed.end());
                     for (auto& r : chain.reversed) r = !r;
                 }
+                const uint32_t head = seg_node[chain.segments.front()][chain.reversed.front() ? 1 : 0];
+                const uint32_t tail = seg_node[chain.segments.back()][chain.reversed.back() ? 0 : 1];
+                chain.component = degree[head] == 1 && degree[tail] == 1;
                 out.push_back(std::move(chain));
             }
     for (uint32_t s = 0; s < n; ++s)
-        if (!used[s]) out.push_back(walk(s, 0));
+        if (!used[s]) {
+            out.push_back(walk(s, 0));
+            out.back().component = out.back().closed;
+        }
     return out;
 }
 

@@ -20,6 +20,10 @@ struct Chain {
     std::vector<uint32_t> segments;
     std::vector<uint8_t> reversed;
     bool closed = false;
+    // The chain is the whole of its connected piece of the segment graph: a loop, or open with
+    // both end nodes free (no other segment there). Only such a chain bounds every polyline that
+    // a subset of its segments can be chained into.
+    bool component = false;
 };
 
 // The chains chain_segments makes (same order, same directions), as segment indices. Segments

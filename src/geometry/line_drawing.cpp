@@ -197,6 +197,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         VisibilityOptions options;
         options.count_levels_to = std::min(levels.max + 1, kMaxOcclusionLevel);
         options.contour = settings->type == "contour";
+        options.min_length_px = line_number(*settings, "min-length");
         const VisibilitySplit split =
             timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, options, &around); });
         // Chains per level: a change of level ends a chain.

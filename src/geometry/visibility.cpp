@@ -3,7 +3,6 @@
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <tuple>
 #include <string>
 
@@ -352,37 +352,39 @@ EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& ve
         for (uint32_t v : {t.x, t.y, t.z}) hit |= ((chosen[v / 64] >> (v % 64)) & 1) != 0;
         return hit;
     };
-    // Two parallel scans: count the faces around the chosen vertices (at most three edges each:
-    // the table is at most three quarters full), then insert their edges with compare-and-swap.
-    // Which slot an edge lands in depends on the threads; what a lookup finds does not.
-    const size_t faces = tbb::parallel_reduce(
-        tbb::blocked_range<size_t>(0, nf, size_t(1) << 16), size_t(0),
-        [&](const tbb::blocked_range<size_t>& r, size_t n) {
-            for (size_t f = r.begin(); f != r.end(); ++f) n += near(mesh.triangles[f]);
-            return n;
-        },
-        std::plus<size_t>());
-    capacity_ = 4 * faces + 16;  // ≤ 3 edges a face: at most three quarters full
+    // One parallel scan gathers the faces around the chosen vertices (fixed blocks, joined in
+    // order); their edges (at most three a face: the table is at most three quarters full) then
+    // go in with compare-and-swap. Which slot an edge lands in depends on the threads; what a
+    // lookup finds does not.
+    constexpr size_t kBlock = size_t(1) << 16;
+    std::vector<std::vector<uint32_t>> found((nf + kBlock - 1) / kBlock);
+    tbb::parallel_for(size_t(0), found.size(), [&](size_t block) {
+        for (size_t f = block * kBlock; f < std::min(nf, (block + 1) * kBlock); ++f)
+            if (near(mesh.triangles[f])) found[block].push_back(uint32_t(f));
+    });
+    std::vector<uint32_t> faces;
+    for (const auto& list : found) faces.insert(faces.end(), list.begin(), list.end());
+    capacity_ = 4 * faces.size() + 16;
     slots_ = std::make_unique<Slot[]>(capacity_);
     std::atomic<size_t> distinct{0};
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, nf, size_t(1) << 16), [&](const tbb::blocked_range<size_t>& r) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         size_t added = 0;
-        for (size_t f = r.begin(); f != r.end(); ++f) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            const uint32_t f = faces[i];
             const glm::uvec3 t = mesh.triangles[f];
-            if (!near(t)) continue;
             for (int k = 0; k < 3; ++k) {
                 if (t[k] == t[(k + 1) % 3]) continue;
                 const uint64_t key = edge_key(t[k], t[(k + 1) % 3]);
                 for (size_t h = slot_of(key, capacity_);; h = next_slot(h, capacity_)) {
                     Slot& slot = slots_[h];
-                    uint64_t found = slot.key.load(std::memory_order_acquire);
-                    if (found == kEmpty && slot.key.compare_exchange_strong(found, key)) found = key, ++added;
-                    if (found != key) continue;
+                    uint64_t key_found = slot.key.load(std::memory_order_acquire);
+                    if (key_found == kEmpty && slot.key.compare_exchange_strong(key_found, key)) key_found = key, ++added;
+                    if (key_found != key) continue;
                     // Its faces: the first two, then "many" (a non-manifold edge).
                     uint32_t face = kNoFace;
-                    if (slot.face[0].compare_exchange_strong(face, uint32_t(f)) || face == f) break;
+                    if (slot.face[0].compare_exchange_strong(face, f) || face == f) break;
                     face = kNoFace;
-                    if (slot.face[1].compare_exchange_strong(face, uint32_t(f)) || face == f) break;
+                    if (slot.face[1].compare_exchange_strong(face, f) || face == f) break;
                     slot.face[1].store(kMany);
                     break;
                 }
@@ -833,6 +835,10 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             if (ok && prev_ok && std::isfinite(d)) step[i] = d;
             prev = q, prev_ok = ok;
         }
+        // A whole chain shorter than the caller keeps: every part of it would be shorter too.
+        if (chain.component && options.min_length_px > 0.0f &&
+            std::accumulate(step.begin(), step.end(), 0.0) + 1e-3 < double(options.min_length_px))
+            return;  // no samples: its segments are left out of the result
         // Greedy: from each sample, the farthest node within `spacing`, or the next node.
         std::vector<uint32_t>& out = sampled[c];
         out.push_back(0);

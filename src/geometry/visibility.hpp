@@ -74,7 +74,7 @@ struct OcclusionQuery {
 void reserve_embree_padding(std::vector<glm::vec3>& positions);
 
 // The faces on either side of the edges of the faces around a chosen set of vertices, from
-// two scans of the triangles: what the fold walks of one view's contours cross
+// one scan of the triangles: what the fold walks of one view's contours cross
 // (RayScene::occlusion_levels), instead of a mesh-wide edge table (500 MB at 10 M triangles).
 // Triangles with an out-of-range index are left out.
 class EdgeNeighbours {
@@ -169,13 +169,18 @@ struct VisibilityOptions {
     // and on edges ignore their fold (RayScene::occlusion_levels) within this many pixels.
     bool contour = false;
     float contour_fold_px = 0.25f;
+    // Chains shorter than this in the image (pixels), when nothing can join them to more (a
+    // loop, or both ends free: Chain::component), are left out untested: every visible or hidden
+    // piece of them would be shorter too, and the caller drops such pieces (the line setting
+    // `min-length`). On a scan most suggestive contours are such specks.
+    float min_length_px = 0.0f;
 };
 
 // The segments' parts, split where the occlusion level changes. Parts keep the original node
 // keys at unsplit ends, so chain_segments joins them as before; a split point gets a node key
 // of its own (it ends a chain). Strength is interpolated linearly at split points. Parts
-// outside the near/far range are dropped (the renderer clips them too). Output order follows
-// the input.
+// outside the near/far range are dropped (the renderer clips them too), and so are chains
+// shorter than options.min_length_px. Output order follows the input.
 struct VisibilitySplit {
     std::vector<LineSegment> visible;    // level 0
     std::vector<LineSegment> hidden;     // level ≥ 1
@@ -192,7 +197,7 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
                                     const EdgeNeighbours* around = nullptr);
 
 // The edges of the faces that share a vertex with a face of the contour segments (the lists of
-// every contour type of a view; two scans of the triangles): where its fold walks go.
+// every contour type of a view; one scan of the triangles): where its fold walks go.
 EdgeNeighbours contour_surroundings(const Mesh& mesh, const std::vector<const std::vector<LineSegment>*>& contours);
 
 }  // namespace inkshade::geometry

@@ -1,4 +1,5 @@
 #include "geometry/chaining.hpp"
+#include "geometry/key_numbering.hpp"
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,38 @@ TEST(Chaining, VertexKeysChainEdgeLinesAndJunctionsSplitThem) {
     EXPECT_NE(vertex_key(3), edge_key(3, 4));
     EXPECT_NE(face_interior_key(3, 0), edge_key(3, 3));
     EXPECT_NE(face_interior_key(3, 0), face_interior_key(3, 1));
+}
+
+TEST(Chaining, ChainOrderMarksWholeComponents) {
+    // An open run with two free ends and a closed loop are whole components; the three chains
+    // meeting at a junction (node 20, degree three) are not: with one of them hidden, the other
+    // two would join into one polyline.
+    const std::vector<LineSegment> segs = {
+        seg({0, 0, 0}, {1, 0, 0}, 1, 2), seg({1, 0, 0}, {2, 0, 0}, 2, 3),                                   // run
+        seg({0, 1, 0}, {1, 1, 0}, 10, 11), seg({1, 1, 0}, {1, 2, 0}, 11, 12), seg({1, 2, 0}, {0, 1, 0}, 12, 10),  // loop
+        seg({5, 0, 0}, {6, 0, 0}, 21, 20), seg({6, 0, 0}, {7, 0, 0}, 20, 22), seg({6, 0, 0}, {6, 1, 0}, 20, 23)};
+    const std::vector<Chain> chains = chain_order(segs);
+    ASSERT_EQ(chains.size(), 5u);
+    int whole = 0, at_junction = 0;
+    for (const Chain& c : chains) {
+        const bool junction = c.segments[0] >= 5;
+        EXPECT_EQ(c.component, !junction) << "chain from segment " << c.segments[0];
+        (junction ? at_junction : whole) += 1;
+        EXPECT_EQ(c.closed, c.segments[0] >= 2 && c.segments[0] <= 4);
+    }
+    EXPECT_EQ(whole, 2);
+    EXPECT_EQ(at_junction, 3);
+}
+
+TEST(Chaining, NumbersManyKeysInOrderOfFirstInsertion) {
+    // More keys than the table was sized for (it grows), neighbouring and far-apart keys mixed.
+    KeyNumbering numbers(4);
+    std::vector<uint64_t> keys;
+    for (uint32_t i = 0; i < 5000; ++i) keys.push_back(i % 2 ? edge_key(i, i + 1) : (uint64_t(i) << 40) | 7u);
+    for (uint32_t i = 0; i < keys.size(); ++i) ASSERT_EQ(numbers.insert(keys[i]), i);
+    for (uint32_t i = 0; i < keys.size(); ++i) ASSERT_EQ(numbers.insert(keys[i]), i);  // found again
+    EXPECT_EQ(numbers.size(), keys.size());
+    EXPECT_EQ(numbers.insert(~uint64_t(0)), keys.size());  // any 64-bit value is a key
 }
 
 TEST(Chaining, FaceInteriorKeysEndChains) {

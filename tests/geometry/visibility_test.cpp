@@ -166,8 +166,9 @@ bool mesh_hides(const Mesh& mesh, const glm::dvec3& eye, const glm::dvec3& p) {
 
 TEST(Visibility, SplitPointsAreSubPixelAccurate) {
     // One long segment along the plate's bottom border (vertex keys of the plate's corners);
-    // its split points must match a brute-force bisection against every triangle within
-    // VisibilityOptions::transition_precision_px (0.01 px) plus float rounding.
+    // its split points must match a brute-force bisection against every triangle within half
+    // VisibilityOptions::transition_precision_px (the middle of the last bracket) plus float
+    // rounding, at the default 1/16 px and at 0.01 px.
     const Mesh mesh = sphere_in_front_of_plate();
     const Camera camera = camera_at({0.0f, 0.0f, 5.0f}, {0, 1, 0});
     const ImageProjection view(camera, kWidth, kHeight);
@@ -179,23 +180,75 @@ TEST(Visibility, SplitPointsAreSubPixelAccurate) {
     s.edge_a = vertex_key(base);
     s.edge_b = vertex_key(base + 1);
     s.face = uint32_t(mesh.triangles.size()) - 2;
-    const VisibilitySplit split = split_by_visibility(scene, mesh, view, {s});
-    ASSERT_EQ(split.visible.size(), 2u);
-    ASSERT_EQ(split.hidden.size(), 1u);
-    EXPECT_EQ(split.visible[0].edge_a, s.edge_a);  // unsplit ends keep their node keys
-    EXPECT_EQ(split.visible[1].edge_b, s.edge_b);
-    EXPECT_NE(split.hidden[0].edge_a, split.hidden[0].edge_b);
+    for (const float precision : {VisibilityOptions{}.transition_precision_px, 0.01f}) {
+        VisibilityOptions options;
+        options.transition_precision_px = precision;
+        const VisibilitySplit split = split_by_visibility(scene, mesh, view, {s}, options);
+        ASSERT_EQ(split.visible.size(), 2u);
+        ASSERT_EQ(split.hidden.size(), 1u);
+        EXPECT_EQ(split.visible[0].edge_a, s.edge_a);  // unsplit ends keep their node keys
+        EXPECT_EQ(split.visible[1].edge_b, s.edge_b);
+        EXPECT_NE(split.hidden[0].edge_a, split.hidden[0].edge_b);
 
-    const glm::dvec3 eye(camera.eye);
-    for (double sign : {-1.0, 1.0}) {
-        double lo = 0.0, hi = sign;  // hidden at x = 0, visible at x = ±1
-        for (int i = 0; i < 50; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            (mesh_hides(mesh, eye, {mid, -1, 0}) ? lo : hi) = mid;
+        const glm::dvec3 eye(camera.eye);
+        for (double sign : {-1.0, 1.0}) {
+            double lo = 0.0, hi = sign;  // hidden at x = 0, visible at x = ±1
+            for (int i = 0; i < 50; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                (mesh_hides(mesh, eye, {mid, -1, 0}) ? lo : hi) = mid;
+            }
+            const double expected = view.project(glm::vec3(float(lo), -1.0f, 0.0f)).x;
+            const glm::vec3 end = sign < 0 ? split.hidden[0].a : split.hidden[0].b;
+            EXPECT_NEAR(view.project(end).x, expected, 0.5 * precision + 1e-3) << "side " << sign << ", " << precision;
         }
-        const double expected = view.project(glm::vec3(float(lo), -1.0f, 0.0f)).x;
-        const glm::vec3 end = sign < 0 ? split.hidden[0].a : split.hidden[0].b;
-        EXPECT_NEAR(view.project(end).x, expected, 0.02) << "side " << sign;
+    }
+}
+
+TEST(Visibility, ShortWholeChainsAreLeftOutUntestedAndNothingElseChanges) {
+    // Lines in front of (z = 0.5) and behind (z = −0.5) the plate z = 0 seen from (0, 0, 5),
+    // about 92 px to a world unit here. Node keys name edges of vertices the mesh does not have,
+    // so the segments lie on no face.
+    const Mesh mesh = sphere_in_front_of_plate();
+    const Camera camera = camera_at({0.0f, 0.0f, 5.0f}, {0, 1, 0});
+    const ImageProjection view(camera, kWidth, kHeight);
+    const RayScene scene(mesh);
+    auto node = [](uint32_t k) { return edge_key(1000000 + k, 2000000 + k); };
+    auto line = [&](glm::vec3 a, glm::vec3 b, uint32_t ka, uint32_t kb) {
+        LineSegment s;
+        s.a = a, s.b = b, s.edge_a = node(ka), s.edge_b = node(kb);
+        return s;
+    };
+    const std::vector<LineSegment> segments = {
+        // 0-1: a free run 0.03 long (~2.8 px) in front: left out at min-length 4.
+        line({0.50f, 0.5f, 0.5f}, {0.515f, 0.5f, 0.5f}, 1, 2), line({0.515f, 0.5f, 0.5f}, {0.53f, 0.5f, 0.5f}, 2, 3),
+        // 2-4: the same short run ending at a junction (node 20) with two long ones: kept.
+        line({-0.53f, 0.5f, 0.5f}, {-0.5f, 0.5f, 0.5f}, 21, 20), line({-0.5f, 0.5f, 0.5f}, {0.0f, 0.5f, 0.5f}, 20, 22),
+        line({-0.5f, 0.5f, 0.5f}, {-0.5f, 0.0f, 0.5f}, 20, 23),
+        // 5-7: a loop 0.03 around (~2.8 px): left out.
+        line({0.2f, 0.2f, 0.5f}, {0.21f, 0.2f, 0.5f}, 30, 31), line({0.21f, 0.2f, 0.5f}, {0.2f, 0.21f, 0.5f}, 31, 32),
+        line({0.2f, 0.21f, 0.5f}, {0.2f, 0.2f, 0.5f}, 32, 30),
+        // 8: a long line behind the plate (hidden), 9: a short one behind it (left out).
+        line({-0.5f, -0.2f, -0.5f}, {0.5f, -0.2f, -0.5f}, 40, 41), line({0.3f, 0.3f, -0.5f}, {0.32f, 0.3f, -0.5f}, 50, 51)};
+    VisibilityOptions all, trimmed;
+    trimmed.min_length_px = 4.0f;
+    EXPECT_GT(view.project(segments[1].b).x - view.project(segments[0].a).x, 2.0);
+    const VisibilitySplit a = split_by_visibility(scene, mesh, view, segments, all);
+    const VisibilitySplit b = split_by_visibility(scene, mesh, view, segments, trimmed);
+    auto keys = [](const std::vector<LineSegment>& list) {
+        std::vector<uint64_t> out;
+        for (const LineSegment& s : list) out.push_back(s.edge_a);
+        return out;
+    };
+    EXPECT_EQ(keys(a.visible), (std::vector<uint64_t>{node(1), node(2), node(21), node(20), node(20), node(30), node(31),
+                                                      node(32)}));
+    EXPECT_EQ(keys(a.hidden), (std::vector<uint64_t>{node(40), node(50)}));
+    EXPECT_EQ(keys(b.visible), (std::vector<uint64_t>{node(21), node(20), node(20)}));
+    EXPECT_EQ(keys(b.hidden), (std::vector<uint64_t>{node(40)}));
+    EXPECT_EQ(b.hidden_levels, std::vector<uint8_t>{1});
+    // What is kept is exactly what the untrimmed split gives for those segments.
+    for (size_t i = 0; i < b.visible.size(); ++i) {
+        EXPECT_EQ(b.visible[i].a, a.visible[2 + i].a);
+        EXPECT_EQ(b.visible[i].b, a.visible[2 + i].b);
     }
 }
 
