@@ -23,7 +23,15 @@ std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines
     const LineSettings* hull = nullptr;
     bool border = false;
     for (const LineSettings& l : lines) {
-        if (line_type(l.type).space == LineSpace::Object) out.push_back(l);
+        if (line_type(l.type).space == LineSpace::Object) {
+            out.push_back(l);
+            // The strokes draw visible parts only (hidden ones are SVG-only): levels past 0 would
+            // cost rays that go on past the first surface, for nothing.
+            if (line_param(l, "min-level").at(0) == 0.0f) {
+                out.back().params["max-level"] = {0.0f};
+                out.back().params["hidden"] = {0.0f};
+            }
+        }
         if (l.type == "hull") hull = &l;
         border |= l.type == "border";
     }

@@ -47,7 +47,8 @@ struct Frame {
     float aspect() const { return float(options.width) / float(options.height); }
 };
 
-// The object-space lines of `lines`, in order, then `border` in the hull's stroke (rims shorter
+// The object-space lines of `lines`, in order, asking for their visible parts only (what the
+// strokes draw; hidden ones are SVG-only), then `border` in the hull's stroke (rims shorter
 // than max(4 widths, 16 px) dropped) when `lines` has a hull with `borders` on and no border of
 // its own and the mesh `may_have_borders` (it is not closed). Throws InputError for an unknown
 // line type.
