@@ -72,6 +72,10 @@ struct SceneRequest {
     std::optional<glm::vec3> light_position;  // default: above-left of the camera (default_light)
     std::optional<glm::vec3> light_target;    // default: the model centre
     std::optional<glm::vec3> light_color, ambient, base_color;
+    // three.js's light values (set_light_value): E = colour x intensity in every model; decay
+    // and distance shape a point light's falloff where the model takes light in physical units
+    // (the threejs-* models, mtoon's threejs convention). Unset: the style's, else 1, 2, 0.
+    std::optional<float> light_intensity, light_decay, light_distance;
     std::optional<glm::vec4> background;  // default: the style's
     int samples = 4;                      // MSAA, 1..16
     bool srgb = false;                    // decode textures, sRGB-encode the output

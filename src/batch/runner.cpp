@@ -278,6 +278,7 @@ private:
         request.smooth_angle = job.smooth_angle;
         request.file_camera = job.view.file_camera;
         request.lights = job.lights;
+        request.light_intensity = job.light_intensity;
         request.samples = options_.samples;
         request.outputs = {.image = true, .line_drawing = true};
         Scene scene = make_scene(request);
