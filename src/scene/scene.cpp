@@ -283,6 +283,11 @@ Scene make_scene(const SceneRequest& r) {
     scene.light_target = r.light_target;
     scene.smooth_angle = r.smooth_angle.value_or(scene.style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
     scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
+    // The three.js convention: a scene file's, the threejs-* models (unlit ones too), mtoon's
+    // threejs convention.
+    if (r.style_data || scene.style.shading.model.starts_with("threejs-") ||
+        light_units(scene.style.shading) != LightUnits::Display)
+        scene.normal_weighting = NormalWeighting::Area;
     scene.names = r.names;
     scene.file_camera = r.file_camera;
     scene.size_from_camera = r.size_from_camera;
@@ -290,7 +295,9 @@ Scene make_scene(const SceneRequest& r) {
     return scene;
 }
 
-LoadOptions Scene::load_options() const { return LoadOptions{.smooth_angle = smooth_angle}; }
+LoadOptions Scene::load_options() const {
+    return LoadOptions{.smooth_angle = smooth_angle, .normal_weighting = normal_weighting};
+}
 
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
 
