@@ -25,7 +25,8 @@ namespace {
 const std::vector<std::string> kSceneKeywords = {
     "size",        "azimuth", "elevation",    "distance", "eye",       "target",    "up",           "up_axis",
     "fov",         "ortho",   "ortho_height", "near",     "far",       "light_pos", "light_target", "light_type",
-    "light_color", "ambient", "base_color",   "srgb",     "bit_depth", "margin",    "camera",       "lights"};
+    "light_color", "ambient", "base_color",   "srgb",     "bit_depth", "margin",    "camera",       "lights",
+    "light_intensity", "light_decay", "light_distance"};
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -102,6 +103,12 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             r.light_color = glm::vec3(to_color(key, value, false));
         else if (key == "ambient")
             r.ambient = glm::vec3(to_color(key, value, false));
+        else if (key == "light_intensity")
+            r.light_intensity = value.cast<float>();
+        else if (key == "light_decay")
+            r.light_decay = value.cast<float>();
+        else if (key == "light_distance")
+            r.light_distance = value.cast<float>();
         else if (key == "base_color")
             r.base_color = glm::vec3(to_color(key, value, false));
         else if (key == "srgb")

@@ -34,6 +34,7 @@ struct BatchArgs {
     bool ortho = false;
     std::string up_axis;
     std::optional<float> smooth_angle;
+    std::optional<float> light_intensity;
     std::string lights = "style";
     float margin = 0.05f;
     int samples = 4;
@@ -102,6 +103,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     shared.camera.orthographic = a.ortho;
     if (!a.up_axis.empty()) shared.camera.up_axis = parse_up_axis("--up-axis", a.up_axis);
     shared.smooth_angle = a.smooth_angle;
+    shared.light_intensity = a.light_intensity;
     shared.camera.margin = a.margin;
     make_scene(shared);
     d.width = shared.size.x, d.height = shared.size.y;
@@ -110,6 +112,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.orthographic = a.ortho;
     d.up_axis = shared.camera.up_axis;  // unset: each style's up-axis, else y
     d.smooth_angle = a.smooth_angle;
+    d.light_intensity = a.light_intensity;
     d.lights = parse_light_source("--lights", a.lights);
     d.margin = a.margin;
     return d;
@@ -227,6 +230,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--lights", args->lights,
                     "style or file (the model file's glTF light) where the manifest gives none")
         ->capture_default_str();
+    cmd->add_option("--light-intensity", args->light_intensity,
+                    "light intensity (E = light colour x intensity, as render --light-intensity) where the "
+                    "manifest gives none");
     cmd->add_option("--samples", args->samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");

@@ -53,6 +53,15 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
                    "glTF KHR_lights_punctual light)")
         ->capture_default_str();
     cmd.add_option("--light-color", light_color, "light colour E (default 0.9 grey)");
+    cmd.add_option("--light-intensity", r.light_intensity,
+                   "light intensity: E = light colour x intensity (three.js Light.intensity; default the style's, "
+                   "else 1)");
+    cmd.add_option("--light-decay", r.light_decay,
+                   "point light decay: E / max(d^decay, 0.01) where the model takes physical light units "
+                   "(threejs-*, mtoon convention=threejs; three.js PointLight.decay, default 2)");
+    cmd.add_option("--light-distance", r.light_distance,
+                   "point light distance: its light fades to zero there, in physical units (three.js "
+                   "PointLight.distance; default 0 = no limit)");
     cmd.add_option("--ambient", ambient, "ambient colour A (default 0.1 grey)");
     cmd.add_option("--base-color", base_color, "base colour C, multiplies mesh colours (default white)");
     cmd.add_option("--background", background, "background colour or 'transparent' (default: the style's, white)");

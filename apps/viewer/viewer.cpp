@@ -246,7 +246,7 @@ void Viewer::cycle_shading_model() {
     const ShadingModel* next = models[(i + 1) % models.size()];
     // The model as `--shading NAME` gives it (its defaults, light and background), keeping the
     // line types, so F shows each model as `inkshade render --shading NAME` would.
-    Style style = load_style(next->name);
+    Style style = shading_model_style(next->name);
     style.lines = scene_.style.lines;
     scene_.style = std::move(style);
     report("shading model " + next->name, false);
@@ -434,6 +434,10 @@ void Viewer::draw_gui() {
                   amb = scene_.style.ambient.value_or(light_.ambient);
         if (ImGui::ColorEdit3("light colour", &lc.x)) scene_.style.light_color = lc, dirty_ = true;
         if (ImGui::ColorEdit3("ambient", &amb.x)) scene_.style.ambient = amb, dirty_ = true;
+        // The style's [light] intensity, or a threejs-* model's light-intensity (set_light_value).
+        float intensity = light_value(scene_.style, LightValue::Intensity).value_or(1.0f);
+        if (ImGui::SliderFloat("light intensity", &intensity, 0.0f, 10.0f))
+            set_light_value(scene_.style, LightValue::Intensity, std::max(intensity, 0.0f)), dirty_ = true;
         if (ImGui::Checkbox("orthographic (O)", &camera_.orthographic)) fit_clip_planes(camera_, box_), dirty_ = true;
         if (!camera_.orthographic) dirty_ |= ImGui::SliderFloat("field of view", &camera_.fov_degrees, 5.0f, 120.0f);
         if (ImGui::Button("Reset camera (R)")) reset_camera();

@@ -94,11 +94,15 @@ struct Light {
     // Spot cone: full light within cos_inner of the axis, none outside cos_outer, smoothstep
     // between (three.js getSpotAttenuation; KHR_lights_punctual inner and outer cone angles).
     float cos_inner = 1.0f, cos_outer = 0.0f;
-    // Point and spot lights: colour x 1 / max(d^2, 0.01) x window(d / range), three.js's
-    // physically correct falloff (decay 2; range 0: no window), for the models that shade in
-    // physical light units with their own intensity-free light colour (mtoon's threejs
-    // convention). Off: the colour reaches every point as it is.
-    bool inverse_square = false;
+    // E = color x intensity in every model (three.js's Light.intensity; lets E exceed 1).
+    float intensity = 1.0f;
+    // Point and spot lights in physical units (physical_falloff: mtoon's threejs convention):
+    // E x 1 / max(d^decay, 0.01) x (clamp(1 - (d / range)^4, 0, 1))^2 (range 0: no window),
+    // three.js's getDistanceAttenuation with PointLight.decay and .distance. Off (display
+    // units): E reaches every point as it is, as three.js's legacy lights with distance 0 did.
+    // The threejs-* models take decay and distance as parameters of their own.
+    bool physical_falloff = false;
+    float decay = 2.0f;
     float range = 0.0f;
     // Unit vector towards the light at world point p (l in the shading formulas, docs/shading.md).
     glm::vec3 direction_to_light(const glm::vec3& p) const;

@@ -20,6 +20,9 @@ struct LoadOptions {
     // Auto-smooth for files without normals: shading normals split at edges whose faces meet at
     // more than this many degrees (Mesh::shading_normals); 180 = one smooth normal per vertex.
     float smooth_angle = 30.0f;
+    // How computed normals weight the faces: by angle, or by area as three.js does (Scene's
+    // load_options asks for it in the three.js convention).
+    NormalWeighting normal_weighting = NormalWeighting::Angle;
 };
 
 // Loads a mesh by path or "builtin:NAME". Throws InputError("FILE: problem") on bad input.

@@ -53,6 +53,12 @@ struct BoundingBox {
     float diagonal() const { return glm::length(max - min); }
 };
 
+// How vertex normals computed for a file without normals weight the faces around a vertex:
+// by their angle there (Thürmer & Wüthrich 1998; Inkshade's default, independent of the
+// triangulation), or by their area, as three.js's BufferGeometry.computeVertexNormals does (it
+// sums the unnormalised cross products), for renders in three.js's convention.
+enum class NormalWeighting { Angle, Area };
+
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::uvec3> triangles;  // indices into positions, counter-clockwise = front

@@ -72,6 +72,10 @@ struct SceneRequest {
     std::optional<glm::vec3> light_position;  // default: above-left of the camera (default_light)
     std::optional<glm::vec3> light_target;    // default: the model centre
     std::optional<glm::vec3> light_color, ambient, base_color;
+    // three.js's light values (set_light_value): E = colour x intensity in every model; decay
+    // and distance shape a point light's falloff where the model takes light in physical units
+    // (the threejs-* models, mtoon's threejs convention). Unset: the style's, else 1, 2, 0.
+    std::optional<float> light_intensity, light_decay, light_distance;
     std::optional<glm::vec4> background;  // default: the style's
     int samples = 4;                      // MSAA, 1..16
     bool srgb = false;                    // decode textures, sRGB-encode the output
@@ -95,6 +99,9 @@ struct Scene {
     LightType light_type = LightType::Directional;
     std::optional<glm::vec3> light_position, light_target;
     float smooth_angle = LoadOptions{}.smooth_angle;
+    // Area in the three.js convention (a scene file, a threejs-* model, mtoon's threejs
+    // convention): normals computed for a file without them as three.js computes them.
+    NormalWeighting normal_weighting = NormalWeighting::Angle;
     OptionNames names = OptionNames::Cli;  // for the light's error
     std::string file_camera;               // as requested; apply_file_scene makes it `camera`
     bool size_from_camera = false;
@@ -109,7 +116,8 @@ struct Scene {
     // (with the file's cameras), a file without cameras or without lights.
     std::vector<std::string> apply_file_scene(const Mesh& mesh);
 
-    // How to load the scene's model: load_mesh(scene.model, scene.load_options()).
+    // How to load the scene's model: load_mesh(scene.model, scene.load_options()): the smooth
+    // angle and the normals' weighting.
     LoadOptions load_options() const;
 
     // The camera for a model with these bounds: auto-framed for the image's aspect, or another

@@ -19,6 +19,10 @@ struct Style {
     ShadingSelection shading;              // model, parameters, base colour C
     std::optional<glm::vec3> light_color;  // E; unset = the renderer's default
     std::optional<glm::vec3> ambient;      // A; unset = the renderer's default
+    // [light] intensity, decay, distance (Light::intensity, decay, range); unset: 1, 2, 0. A
+    // model with light-intensity, light-decay, light-distance parameters (threejs-*) holds
+    // them there instead (set_light_value).
+    std::optional<float> light_intensity, light_decay, light_distance;
     glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
     std::vector<LineSettings> lines;  // drawn in this order, each type at most once
     // Auto-smooth angle for models without normals (`smooth-angle`, degrees); unset: 30.
@@ -27,8 +31,20 @@ struct Style {
     std::optional<UpAxis> up_axis;
 };
 
-// Sets the light colour and ambient the style asks for (others stay as they are).
+// Sets the light colour, ambient, intensity, decay and distance the style asks for (others
+// stay as they are).
 void apply_style_light(const Style& style, Light& light);
+
+// A light's strength and reach, as three.js's lights hold them.
+enum class LightValue { Intensity, Decay, Distance };
+// "light-intensity", "light-decay", "light-distance": the parameter names of the threejs-* models.
+const char* light_value_param(LightValue which);
+// Sets one: the style's shading-model parameter of that name when the model has it (the
+// threejs-* models carry three.js's light values as parameters), else the style's [light]
+// value. Throws InputError for a value out of range (negative, not finite).
+void set_light_value(Style& style, LightValue which, float value);
+// The value set_light_value stores, where the style has one.
+std::optional<float> light_value(const Style& style, LightValue which);
 
 // Applies one override "param=value" or "MODEL.param=value" (a parameter of the style's shading
 // model) or "LINETYPE.param=value" (a parameter of a line type the style draws), as --set and the
@@ -47,6 +63,11 @@ std::string format_style(const Style& style);
 
 // Writes format_style(style) atomically. Throws RuntimeError on failure.
 void save_style(const std::string& path, const Style& style);
+
+// The style of a shading model with its default parameters (`--shading NAME`), also where a
+// preset has the model's name (the `mtoon` preset picks colours; the `mtoon` model's defaults
+// are three-vrm MToonMaterial's). Throws InputError for an unknown model, with the closest name.
+Style shading_model_style(const std::string& model_name);
 
 // Built-in style names: every preset file, and every shading model (default parameters).
 std::vector<std::string> builtin_style_names();

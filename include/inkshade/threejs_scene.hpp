@@ -38,6 +38,9 @@ struct ThreejsScene {
     std::string model;
     ParamValues params;
     std::map<std::string, std::string> param_fields;
+    // MToonMaterial's `color` (three-vrm's litFactor), linear: the style's base colour, which
+    // multiplies the mesh's colours and texture as litFactor multiplies `map`. Unset: white.
+    std::optional<glm::vec3> base_color;
 
     // OutlineEffect: threejs-outline's thickness, color (linear) and alpha; nullopt = no outline.
     std::optional<ParamValues> outline;

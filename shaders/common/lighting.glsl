@@ -9,12 +9,13 @@ uniform int u_orthographic;    // 1: v is -u_view_dir everywhere
 uniform int u_light_type;      // 0 directional, 1 point, 2 spot (a point light with a cone)
 uniform vec3 u_light_pos;
 uniform vec3 u_light_target;   // spot: on the cone's axis
-uniform vec3 u_light_color;    // E
+uniform vec3 u_light_color;    // E: the light's colour x intensity
 uniform vec3 u_ambient;        // A
 uniform vec3 u_base_color;     // multiplies the vertex/material colour: C = base * vertex
 uniform int u_srgb_output;
 uniform vec2 u_light_cone;     // spot (INKSHADE_SPOT_LIGHT): cos(outer angle), cos(inner angle)
-uniform float u_light_range;   // INKSHADE_INVERSE_SQUARE: zero light from this distance on (0: none)
+uniform float u_light_range;   // INKSHADE_PHYSICAL_FALLOFF: zero light from this distance on (0: none)
+uniform float u_light_falloff_decay;  // INKSHADE_PHYSICAL_FALLOFF: three.js PointLight.decay
 // With INKSHADE_UNLIT (a mesh with glTF KHR_materials_unlit materials), per draw: the material
 // is drawn as C without lighting, in the frame's output encoding (encode_output: sRGB in the
 // linear convention, render/color_convention.hpp).
@@ -31,8 +32,8 @@ vec3 to_viewer(vec3 p) {
 
 float lambert(vec3 n, vec3 l) { return max(dot(n, l), 0.0); }
 
-// A model file's light (Light::cos_inner, cos_outer, inverse_square) compiles these in as
-// program variants, so the key light's programs run as before (llvmpipe runs switched-off
+// A spot light (Light::cos_inner, cos_outer) and physical falloff (Light::physical_falloff)
+// compile these in as program variants, so the other programs run as before (llvmpipe runs switched-off
 // branches too).
 #ifdef INKSHADE_SPOT_LIGHT
 // three.js getSpotAttenuation: smoothstep(cos outer, cos inner, cos of the angle between the
@@ -47,12 +48,12 @@ float spot_attenuation(vec3 p) { return 1.0; }
 #endif
 
 // What reaches p of the light colour: 1, or for a point or spot light in physical units
-// (INKSHADE_INVERSE_SQUARE) three.js's physically correct falloff, 1 / max(d^2, 0.01) windowed
-// by (clamp(1 - (d / range)^4, 0, 1))^2, times the spot cone.
-#ifdef INKSHADE_INVERSE_SQUARE
+// (INKSHADE_PHYSICAL_FALLOFF) three.js's getDistanceAttenuation, 1 / max(d^decay, 0.01) windowed
+// by (clamp(1 - (d / range)^4, 0, 1))^2, times the spot cone (getSpotAttenuation).
+#ifdef INKSHADE_PHYSICAL_FALLOFF
 float light_attenuation(vec3 p) {
     float d = length(u_light_pos - p);
-    float falloff = 1.0 / max(d * d, 0.01);
+    float falloff = 1.0 / max(pow(d, u_light_falloff_decay), 0.01);
     if (u_light_range > 0.0) {
         float x = d / u_light_range;
         float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);

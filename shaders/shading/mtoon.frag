@@ -10,6 +10,12 @@
 // (three-vrm on three.js: the renderer's linear colour convention sets u_srgb_output);
 // convention "seeds" (Inkshade's default): k = 1, the texture and the value as they are, like
 // the other shading models (unless --srgb).
+// The rim's v in the threejs convention is normalize(eye - p) under every camera: three-vrm's
+// mtoon.frag takes viewDir = normalize(vViewPosition), the point to the camera position, also
+// for an orthographic camera (three.js's own materials use the view axis there, as
+// common/lighting.glsl's to_viewer does, and so does the seeds convention).
+// E carries the light's intensity and, for a point or spot light in the threejs convention,
+// three.js's distance falloff and cone (light_attenuation; Light::physical_falloff).
 // shadow = 1 (lit) .. 0 from the PCF-filtered shadow map when `shadows` is on; it scales t as
 // the shading term of three-vrm does, so shadowed parts take the shade colour.
 #include "common/surface.glsl"
@@ -37,7 +43,8 @@ void shade() {
     vec3 E = u_light_color * light_attenuation(s.p) * k, A = u_ambient * k;
     vec3 direct = E * mix(u_shade_color, s.albedo, t);
     vec3 gi = A * s.albedo;
-    float fresnel = pow(max(clamp(1.0 - dot(s.n, s.v) + u_rim_lift, 0.0, 1.0), 1e-6), u_rim_fresnel_power);
+    vec3 v = (u_convention == 1) ? normalize(u_eye - s.p) : s.v;
+    float fresnel = pow(max(clamp(1.0 - dot(s.n, v) + u_rim_lift, 0.0, 1.0), 1e-6), u_rim_fresnel_power);
     vec3 rim = u_rim_color * fresnel * mix(vec3(1.0), E + A, u_rim_lighting_mix);
     vec3 c = clamp(direct + gi + rim, 0.0, 1.0);
     o_color = encode_output(c);

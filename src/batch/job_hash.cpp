@@ -50,6 +50,7 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     if (job.smooth_angle) text += " smooth-angle=" + number(*job.smooth_angle);
     if (!job.view.file_camera.empty()) text += " camera=" + job.view.file_camera;
     if (job.lights == LightSource::File) text += " lights=file";
+    if (job.light_intensity) text += " light-intensity=" + number(*job.light_intensity);
     text += "\n";
     text += "size=" + std::to_string(job.width) + "x" + std::to_string(job.height) +
             " samples=" + std::to_string(samples) + " png=" + (job.outputs.png ? "1" : "0") +

@@ -92,6 +92,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.orthographic = d.orthographic;
     g.up_axis = d.up_axis;
     g.smooth_angle = d.smooth_angle;
+    g.light_intensity = d.light_intensity;
     g.lights = d.lights;
     g.margin = d.margin;
     return g;
@@ -136,6 +137,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.view = std::move(view);
             job.source = group.source;
             job.smooth_angle = group.smooth_angle;
+            job.light_intensity = group.light_intensity;
             out.push_back(std::move(job));
         }
     }

@@ -23,6 +23,7 @@ struct JobGroup {
     bool orthographic = false;
     std::optional<UpAxis> up_axis;
     std::optional<float> smooth_angle;
+    std::optional<float> light_intensity;  // SceneRequest::light_intensity
     LightSource lights = LightSource::Style;
     float margin = 0.05f;  // CameraOptions::margin
     std::string source;

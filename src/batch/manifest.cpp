@@ -23,11 +23,12 @@ namespace {
 using batch::default_group;
 using batch::JobGroup;
 
-const std::set<std::string> kColumns = {"model",   "name",         "views",  "view",   "styles",
-                                        "style",   "size",         "format", "fov",    "ortho",
-                                        "up-axis", "smooth-angle", "lights", "margin", "output"};
+const std::set<std::string> kColumns = {"model",   "name",         "views",  "view",   "styles",          "style",
+                                        "size",    "format",       "fov",    "ortho",  "up-axis",         "smooth-angle",
+                                        "lights",  "light-intensity", "margin", "output"};
 const char* kColumnList =
-    "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, margin, output";
+    "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, light-intensity, margin, "
+    "output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -90,6 +91,12 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.smooth_angle = float(v);
     } else if (key == "lights") {
         g.lights = parse_light_source("lights", value);
+    } else if (key == "light-intensity") {
+        double v = 0;
+        auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+        if (ec != std::errc() || ptr != value.data() + value.size() || !(v >= 0.0 && v <= 1e6))
+            throw InputError("light-intensity: expected a number in [0, 1e6], got " + io::quote_token(value));
+        g.light_intensity = float(v);
     } else if (key == "ortho") {
         if (value == "true" || value == "1" || value == "yes")
             g.orthographic = true;
@@ -186,7 +193,7 @@ void parse_csv(const std::vector<std::pair<int, std::string_view>>& lines, const
 std::string json_text(const std::string& key, const nlohmann::json& v) {
     if (v.is_string()) return v.get<std::string>();
     if (v.is_boolean() && key == "ortho") return v.get<bool>() ? "true" : "false";
-    if (v.is_number() && (key == "fov" || key == "margin")) {
+    if (v.is_number() && (key == "fov" || key == "margin" || key == "light-intensity")) {
         const double d = v.get<double>();
         if (!std::isfinite(d)) throw InputError(key + ": not a finite number");
         std::ostringstream out;

@@ -98,6 +98,7 @@ std::string format_metadata(const JobRecord& r) {
                  {"margin", number(job.view.camera.margin)}};
     if (!job.view.file_camera.empty()) j["view"]["file_camera"] = job.view.file_camera;  // camera=NAME
     if (job.lights == LightSource::File) j["lights"] = "file";
+    if (job.light_intensity) j["light_intensity"] = *job.light_intensity;
     j["camera"] = {{"eye", vec3(r.camera.eye)},
                    {"target", vec3(r.camera.target)},
                    {"up", vec3(r.camera.up)},

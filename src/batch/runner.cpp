@@ -32,6 +32,7 @@ struct ResolvedStyle {
     std::string toml;   // format_style: hashed and recorded, so an edited style file re-renders
     std::string error;  // the style does not load: every job of the style fails with this
     std::optional<float> smooth_angle;
+    NormalWeighting normal_weighting = NormalWeighting::Angle;  // Scene::normal_weighting
 };
 
 ResolvedStyle resolve_style(const std::string& name) {
@@ -42,6 +43,7 @@ ResolvedStyle resolve_style(const std::string& name) {
         const Scene scene = make_scene(request);
         r.toml = format_style(scene.style);
         r.smooth_angle = scene.style.smooth_angle;
+        r.normal_weighting = scene.normal_weighting;
     } catch (const std::exception& e) {
         r.error = e.what();
     }
@@ -57,11 +59,11 @@ struct LoadedModel {
     double milliseconds = 0.0;
 };
 
-LoadedModel load_model(const std::string& path, bool lines, float smooth_angle) {
+LoadedModel load_model(const std::string& path, bool lines, LoadOptions options) {
     LoadedModel m;
     const auto start = Clock::now();
     try {
-        m.mesh = std::make_unique<Mesh>(load_mesh(path, LoadOptions{.smooth_angle = smooth_angle}));
+        m.mesh = std::make_unique<Mesh>(load_mesh(path, options));
         if (m.mesh->triangles.empty()) throw InputError(path, "the mesh has no triangles");
         if (lines) m.extractor = std::make_unique<LineExtractor>(*m.mesh);
     } catch (const std::bad_alloc&) {
@@ -86,7 +88,7 @@ int64_t model_bytes(const std::string& path) {
 // The jobs of one model, in batch order.
 struct ModelGroup {
     std::string model;
-    float smooth_angle = LoadOptions{}.smooth_angle;  // the jobs' auto-smooth: one load per angle
+    LoadOptions load;  // the jobs' auto-smooth and normal weighting: one load per pair
     int64_t bytes = -1;
     std::vector<size_t> jobs;     // indices into the ordered job list
     std::vector<size_t> pending;  // those to render
@@ -117,7 +119,7 @@ public:
                 if (groups_[n].pending.empty()) continue;
                 next_group = n;
                 next = std::async(std::launch::async, load_model, groups_[n].model, groups_[n].svg,
-                                  groups_[n].smooth_angle);
+                                  groups_[n].load);
                 return;
             }
         };
@@ -129,7 +131,7 @@ public:
             if (next.valid() && next_group == g)
                 model = next.get();
             else
-                model = load_model(group.model, group.svg, group.smooth_angle);
+                model = load_model(group.model, group.svg, group.load);
             prefetch_after(g);
             render_model(group, model);
         }
@@ -150,13 +152,18 @@ private:
         for (size_t i = 0; i < jobs_.size(); ++i) {
             const BatchJob& job = jobs_[i];
             const ResolvedStyle& style = styles_.at(job.style);
-            // The angle make_scene resolves for the job (Scene::smooth_angle): a model is loaded
-            // once for each angle its jobs use (jobs are style-major, so at most once a style).
-            const float angle = job.smooth_angle.value_or(style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
-            if (groups_.empty() || groups_.back().model != job.model || groups_.back().smooth_angle != angle) {
+            // The angle and weighting make_scene resolves for the job (Scene::load_options): a
+            // model is loaded once for each pair its jobs use (jobs are style-major, so at most
+            // once a style).
+            const LoadOptions load{
+                .smooth_angle = job.smooth_angle.value_or(style.smooth_angle.value_or(LoadOptions{}.smooth_angle)),
+                .normal_weighting = style.normal_weighting};
+            if (groups_.empty() || groups_.back().model != job.model ||
+                groups_.back().load.smooth_angle != load.smooth_angle ||
+                groups_.back().load.normal_weighting != load.normal_weighting) {
                 groups_.emplace_back();
                 groups_.back().model = job.model;
-                groups_.back().smooth_angle = angle;
+                groups_.back().load = load;
                 groups_.back().bytes = model_bytes(job.model);
             }
             ModelGroup& group = groups_.back();
@@ -278,6 +285,7 @@ private:
         request.smooth_angle = job.smooth_angle;
         request.file_camera = job.view.file_camera;
         request.lights = job.lights;
+        request.light_intensity = job.light_intensity;
         request.samples = options_.samples;
         request.outputs = {.image = true, .line_drawing = true};
         Scene scene = make_scene(request);

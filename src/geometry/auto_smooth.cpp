@@ -88,7 +88,7 @@ uint32_t fans_at(uint32_t v, const Mesh& mesh, const std::vector<glm::vec3>& fn,
 
 }  // namespace
 
-void auto_smooth(Mesh& mesh, float angle_degrees) {
+void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
     mesh.shading_normals.clear();
     mesh.shading_normal_ids.clear();
     if (!(angle_degrees < 180.0f) || mesh.triangles.empty()) return;
@@ -133,9 +133,7 @@ void auto_smooth(Mesh& mesh, float angle_degrees) {
                 const uint32_t first = (i > vf.offsets[v] && vf.faces[i - 1] == f) ? corner_fan[i - 1] : corner_fan[i];
                 const uint32_t id = fan_count[v] + first;
                 ids[f][c] = id;  // each (face, corner) is written by its vertex's task only
-                const glm::vec3 p = mesh.positions[v];
-                sums[id] +=
-                    angle_between(mesh.positions[t[(c + 1) % 3]] - p, mesh.positions[t[(c + 2) % 3]] - p) * fn[f];
+                sums[id] += corner_weight(mesh, f, c, weighting) * fn[f];
             }
         }
     });

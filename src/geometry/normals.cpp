@@ -62,6 +62,32 @@ std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh) {
     return sum;
 }
 
+std::vector<glm::vec3> area_weighted_vertex_normals(const Mesh& mesh) {
+    const auto& p = mesh.positions;
+    std::vector<glm::dvec3> sum(p.size(), glm::dvec3(0.0));
+    for (const glm::uvec3& t : mesh.triangles) {
+        if (t.x >= p.size() || t.y >= p.size() || t.z >= p.size()) continue;
+        const glm::dvec3 a(p[t.x]), b(p[t.y]), c(p[t.z]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        if (!std::isfinite(n.x + n.y + n.z)) continue;
+        for (int k = 0; k < 3; ++k) sum[t[k]] += n;
+    }
+    std::vector<glm::vec3> out(p.size());
+    for (size_t v = 0; v < p.size(); ++v) {
+        const double len = glm::length(sum[v]);
+        out[v] = (len > 0.0 && std::isfinite(len)) ? glm::vec3(sum[v] / len) : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+    return out;
+}
+
+float corner_weight(const Mesh& mesh, size_t f, int k, NormalWeighting weighting) {
+    const glm::uvec3 t = mesh.triangles[f];
+    const glm::vec3 a = mesh.positions[t[k]], b = mesh.positions[t[(k + 1) % 3]], c = mesh.positions[t[(k + 2) % 3]];
+    if (weighting == NormalWeighting::Angle) return angle_between(b - a, c - a);
+    const float area2 = float(glm::length(glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a))));
+    return std::isfinite(area2) ? area2 : 0.0f;
+}
+
 bool normals_are_sane(const Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size()) return false;
     for (const glm::vec3& n : mesh.normals) {
@@ -71,9 +97,10 @@ bool normals_are_sane(const Mesh& mesh) {
     return true;
 }
 
-void ensure_vertex_normals(Mesh& mesh) {
+void ensure_vertex_normals(Mesh& mesh, NormalWeighting weighting) {
     if (!normals_are_sane(mesh)) {
-        mesh.normals = angle_weighted_vertex_normals(mesh);
+        mesh.normals = weighting == NormalWeighting::Area ? area_weighted_vertex_normals(mesh)
+                                                          : angle_weighted_vertex_normals(mesh);
         return;
     }
     for (glm::vec3& n : mesh.normals) n = glm::normalize(n);

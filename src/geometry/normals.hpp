@@ -30,10 +30,18 @@ std::vector<glm::vec3> face_normals(const Mesh& mesh);
 // normal times the interior angle at the vertex. Isolated vertices get (0,0,1).
 std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh);
 
+// Area-weighted vertex normals, as three.js's BufferGeometry.computeVertexNormals: each face
+// contributes its cross product (b - a) x (c - a), twice its area times its unit normal.
+// Isolated vertices get (0,0,1).
+std::vector<glm::vec3> area_weighted_vertex_normals(const Mesh& mesh);
+
+// The weight of face f's unit normal at its corner k (0..2) under `weighting`.
+float corner_weight(const Mesh& mesh, size_t f, int k, NormalWeighting weighting);
+
 // True when normals has one finite, non-zero-length entry per vertex.
 bool normals_are_sane(const Mesh& mesh);
 
-// Keeps file normals when sane (renormalised), else computes angle-weighted ones.
-void ensure_vertex_normals(Mesh& mesh);
+// Keeps file normals when sane (renormalised), else computes them weighted as asked.
+void ensure_vertex_normals(Mesh& mesh, NormalWeighting weighting = NormalWeighting::Angle);
 
 }  // namespace inkshade::geometry

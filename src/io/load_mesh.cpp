@@ -144,7 +144,7 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     constexpr std::string_view kBuiltin = "builtin:";
     if (path.starts_with(kBuiltin)) {
         Mesh mesh = builtin::by_name(path.substr(kBuiltin.size()));
-        if (options.compute_normals) geometry::ensure_vertex_normals(mesh);
+        if (options.compute_normals) geometry::ensure_vertex_normals(mesh, options.normal_weighting);
         return mesh;
     }
 
@@ -196,8 +196,8 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     }
     if (options.compute_normals) {
         const bool file_normals = geometry::normals_are_sane(mesh);
-        geometry::ensure_vertex_normals(mesh);
-        if (!file_normals) geometry::auto_smooth(mesh, options.smooth_angle);
+        geometry::ensure_vertex_normals(mesh, options.normal_weighting);
+        if (!file_normals) geometry::auto_smooth(mesh, options.smooth_angle, options.normal_weighting);
     } else if (!mesh.normals.empty() && !geometry::normals_are_sane(mesh))
         mesh.normals.clear();  // empty means "compute": better than passing NaNs on
     return mesh;

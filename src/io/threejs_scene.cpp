@@ -128,11 +128,101 @@ constexpr MaterialKind kMaterials[] = {{"MeshBasicMaterial", "threejs-basic"},
                                        {"MeshLambertMaterial", "threejs-lambert"},
                                        {"MeshPhongMaterial", "threejs-phong"},
                                        {"MeshToonMaterial", "threejs-toon"},
-                                       {"MeshNormalMaterial", "threejs-normal"}};
+                                       {"MeshNormalMaterial", "threejs-normal"},
+                                       {"MToonMaterial", "mtoon"}};
+
+// three-vrm 3.5's MToonMaterial (VRMC_materials_mtoon by its three-vrm names), as the `mtoon`
+// model in its threejs convention. `color` (three-vrm's litFactor) is the base colour; the
+// factors map onto mtoon's parameters of the same meaning.
+struct MtoonField {
+    const char* three_name;
+    const char* param;  // mtoon parameter
+    bool colour;        // a THREE.Color (linear as the parameter takes it), else a number
+};
+constexpr MtoonField kMtoonFields[] = {{"shadeColorFactor", "shade-color", true},
+                                       {"shadingShiftFactor", "shading-shift", false},
+                                       {"shadingToonyFactor", "shading-toony", false},
+                                       {"parametricRimColorFactor", "rim-color", true},
+                                       {"parametricRimFresnelPowerFactor", "rim-fresnel-power", false},
+                                       {"parametricRimLiftFactor", "rim-lift", false},
+                                       {"rimLightingMixFactor", "rim-lighting-mix", false}};
+// Fields that change nothing in a scene of this format, so they are accepted and ignored:
+// giEqualizationFactor evens out light probes (an AmbientLight is already even), matcapFactor
+// and shadingShiftTextureScale scale textures the format cannot give, and the outline values
+// apply only with an outlineWidthMode other than "none".
+constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor",   "matcapFactor",
+                                         "shadingShiftTextureScale", "outlineWidthFactor",
+                                         "outlineColorFactor",     "outlineLightingMixFactor"};
+// Fields accepted only at the value that changes nothing here (three-vrm's default); any other
+// value is a one-line error, as is every texture: the `mtoon` model does not have them yet.
+constexpr const char* kMtoonUnsupported[] = {
+    "emissive",          "emissiveIntensity",   "outlineWidthMode", "uvAnimationScrollXSpeedFactor",
+    "uvAnimationScrollYSpeedFactor", "uvAnimationRotationSpeedFactor", "transparentWithZWrite", "v0CompatShade",
+    "map",               "normalMap",           "emissiveMap",      "shadeMultiplyTexture",
+    "shadingShiftTexture", "matcapTexture",     "rimMultiplyTexture", "outlineWidthMultiplyTexture",
+    "uvAnimationMaskTexture"};
+
+void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
+    for (const auto& item : m.items()) {
+        const std::string& key = item.key();
+        const std::string field = "material." + key;
+        const json& v = item.value();
+        if (key == "type" || key == "name") continue;
+        if (key == "color") {
+            scene.base_color = r.colour(v, field).linear();
+            continue;
+        }
+        const MtoonField* f = nullptr;
+        for (const MtoonField& candidate : kMtoonFields)
+            if (key == candidate.three_name) f = &candidate;
+        if (f) {
+            if (f->colour) {
+                const glm::vec3 c = r.colour(v, field).linear();
+                scene.params[f->param] = {c.r, c.g, c.b};
+            } else {
+                scene.params[f->param] = {r.number(v, field)};
+            }
+            scene.param_fields[f->param] = field;
+            continue;
+        }
+        if (std::any_of(std::begin(kMtoonIgnored), std::end(kMtoonIgnored), [&](const char* k) { return key == k; })) {
+            if (key == "matcapFactor" || key == "outlineColorFactor")
+                r.colour(v, field);
+            else
+                r.number(v, field);
+            continue;
+        }
+        if (std::any_of(std::begin(kMtoonUnsupported), std::end(kMtoonUnsupported),
+                        [&](const char* k) { return key == k; })) {
+            // three-vrm's defaults, at which these change nothing.
+            const bool harmless = (key == "emissive" && r.colour(v, field).linear() == glm::vec3(0.0f)) ||
+                                  key == "emissiveIntensity" ||
+                                  (key == "outlineWidthMode" && v.is_string() && v.get<std::string>() == "none") ||
+                                  (key.starts_with("uvAnimation") && v.is_number() && v.get<double>() == 0.0) ||
+                                  ((key == "transparentWithZWrite" || key == "v0CompatShade") && v.is_boolean() &&
+                                   !v.get<bool>());
+            if (key == "emissiveIntensity") r.number(v, field);
+            if (!harmless)
+                r.fail(field, "not supported by Inkshade's mtoon model yet (accepted only as three-vrm's default)");
+            continue;
+        }
+        std::string list = "type, name, color";
+        for (const MtoonField& k : kMtoonFields) list += ", " + std::string(k.three_name);
+        for (const char* k : kMtoonIgnored) list += ", " + std::string(k);
+        r.fail(field, "unknown field (allowed: " + list + ")");
+    }
+    // MToonMaterial on three.js r187: the threejs convention; no shadow maps unless a scene sets
+    // them up (WebGLRenderer.shadowMap.enabled is false by default).
+    scene.params["convention"] = {1.0f};
+    scene.param_fields["convention"] = "material.type";
+    scene.params["shadows"] = {0.0f};
+    scene.param_fields["shadows"] = "material.type";
+}
 
 void read_material(const Reader& r, const json& m, ThreejsScene& scene) {
     if (!m.is_object()) r.fail("material", "expected an object with a \"type\"");
-    if (!m.contains("type")) r.fail("material.type", "missing (MeshBasicMaterial, MeshLambertMaterial, ...)");
+    if (!m.contains("type"))
+        r.fail("material.type", "missing (MeshBasicMaterial, MeshLambertMaterial, ..., MToonMaterial)");
     const std::string type = r.string(m["type"], "material.type");
     const MaterialKind* kind = nullptr;
     for (const MaterialKind& k : kMaterials)
@@ -143,6 +233,7 @@ void read_material(const Reader& r, const json& m, ThreejsScene& scene) {
         r.fail("material.type", "unsupported material '" + type + "' (supported: " + list + ")");
     }
     scene.model = kind->model;
+    if (type == "MToonMaterial") return read_mtoon_material(r, m, scene);
     const bool lit = type != "MeshBasicMaterial" && type != "MeshNormalMaterial";
     if (type == "MeshNormalMaterial")
         r.only_keys(m, "material", {"type", "name"});

@@ -111,9 +111,10 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame, const A
     program.set("u_light_type", light.type == LightType::Directional ? 0 : light.type == LightType::Point ? 1 : 2);
     program.set("u_light_pos", light.position);
     program.set("u_light_target", light.target);
-    program.set("u_light_color", light.color);
+    program.set("u_light_color", light.color * light.intensity);
     program.set("u_light_cone", glm::vec2(light.cos_outer, light.cos_inner));
     program.set("u_light_range", light.range);
+    program.set("u_light_falloff_decay", light.decay);
     program.set("u_ambient", light.ambient);
     program.set("u_base_color", albedo.base);
     program.set("u_srgb_output", convention == ColorConvention::Linear ? 1 : 0);
@@ -191,8 +192,8 @@ private:
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
         if (unlit) defines += "#define INKSHADE_UNLIT 1\n";
         if (light.type == LightType::Spot) defines += "#define INKSHADE_SPOT_LIGHT 1\n";
-        if (light.inverse_square && light.type != LightType::Directional)
-            defines += "#define INKSHADE_INVERSE_SQUARE 1\n";
+        if (light.physical_falloff && light.type != LightType::Directional)
+            defines += "#define INKSHADE_PHYSICAL_FALLOFF 1\n";
         for (const ParamSpec& spec : model.params) {
             if (!spec.compile_time) continue;
             const ParamValue& v = value_or_default(spec, values);

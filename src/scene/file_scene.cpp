@@ -120,10 +120,15 @@ Light file_scene_light(const FileLight& f, const Style& style, const BoundingBox
     }
     l.range = f.range.value_or(0.0f);
     switch (light_units(style.shading)) {
-        case LightUnits::ThreejsParams: l.color = f.color; break;  // intensity: Scene::shading
-        case LightUnits::Physical:
-            l.color = f.color * f.intensity;
-            l.inverse_square = f.type != FileLightType::Directional;
+        case LightUnits::ThreejsParams:  // intensity, decay, distance: Scene::shading
+            l.color = f.color;
+            l.intensity = 1.0f;
+            break;
+        case LightUnits::Physical:  // three.js's GLTFLoader: intensity as it is, decay 2, distance = range
+            l.color = f.color;
+            l.intensity = f.intensity;
+            l.decay = 2.0f;
+            l.physical_falloff = f.type != FileLightType::Directional;
             break;
         case LightUnits::Display: l.color *= f.color; break;  // the style's strength, the file's tint
     }

@@ -13,8 +13,9 @@ enum class LightUnits {
     // The threejs-* models: light colour x the light-intensity parameter, with their own
     // distance falloff (light-decay, light-distance) and the spot cone.
     ThreejsParams,
-    // Physical units in the shader's light colour (mtoon's threejs convention): colour x
-    // intensity, with three.js's inverse-square falloff, range window and spot cone.
+    // Physical units in the renderer's light (mtoon's threejs convention): colour x intensity,
+    // with three.js's distance falloff (decay, range window) and spot cone for point and spot
+    // lights, the key light's as a file's.
     Physical,
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cctype>
 #include <functional>
+#include <tuple>
 
 #include "inkshade/error.hpp"
 #include "scene/file_scene.hpp"
@@ -30,7 +31,7 @@ Style named_style(const SceneRequest& r) {
         throw InputError(option_name(r.names, "style") + " and " + option_name(r.names, "shading") +
                          " are alternatives: use one (a style names its shading model)");
     if (r.style_data && r.style.empty() && r.shading.empty()) return *r.style_data;
-    Style s = !r.shading.empty() ? load_style(shading_model(r.shading).name)  // checks the model name
+    Style s = !r.shading.empty() ? shading_model_style(r.shading)  // the model's defaults, not a preset's
                                  : load_style(r.style.empty() ? "lambert" : r.style);
     if (const auto& data = r.style_data) {
         // A scene's lights and background stay the scene's whatever the look.
@@ -38,9 +39,11 @@ Style named_style(const SceneRequest& r) {
         s.ambient = data->ambient;
         s.background = data->background;
         const ShadingModel& model = shading_model(s.shading.model);
-        for (const char* name : {"light-intensity", "ambient-intensity", "light-decay", "light-distance"})
-            if (auto it = data->shading.params.find(name); it != data->shading.params.end() && model.param(name))
-                s.shading.params[name] = it->second;
+        if (auto it = data->shading.params.find("ambient-intensity");
+            it != data->shading.params.end() && model.param("ambient-intensity"))
+            s.shading.params["ambient-intensity"] = it->second;
+        for (LightValue which : {LightValue::Intensity, LightValue::Decay, LightValue::Distance})
+            if (const std::optional<float> v = light_value(*data, which)) set_light_value(s, which, *v);
     }
     return s;
 }
@@ -88,6 +91,21 @@ void apply_overrides(const SceneRequest& r, Style& s) {
     if (r.background) s.background = *r.background;
     if (r.light_color) s.light_color = *r.light_color;
     if (r.ambient) s.ambient = *r.ambient;
+    const std::tuple<const std::optional<float>&, LightValue, const char*> values[] = {
+        {r.light_intensity, LightValue::Intensity, "light-intensity"},
+        {r.light_decay, LightValue::Decay, "light-decay"},
+        {r.light_distance, LightValue::Distance, "light-distance"}};
+    for (const auto& [value, which, option] : values)
+        if (value) {
+            try {
+                set_light_value(s, which, *value);
+            } catch (const InputError& e) {
+                std::string what = e.what();
+                // "light-intensity: expected ..." or "parameter light-intensity: ...": the option's name instead
+                if (size_t colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
+                throw InputError(option_name(r.names, option) + ": " + what);
+            }
+        }
 }
 
 // The object-space line types of the line drawing, in order, with the style's parameters where
@@ -265,6 +283,11 @@ Scene make_scene(const SceneRequest& r) {
     scene.light_target = r.light_target;
     scene.smooth_angle = r.smooth_angle.value_or(scene.style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
     scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
+    // The three.js convention: a scene file's, the threejs-* models (unlit ones too), mtoon's
+    // threejs convention.
+    if (r.style_data || scene.style.shading.model.starts_with("threejs-") ||
+        light_units(scene.style.shading) != LightUnits::Display)
+        scene.normal_weighting = NormalWeighting::Area;
     scene.names = r.names;
     scene.file_camera = r.file_camera;
     scene.size_from_camera = r.size_from_camera;
@@ -272,7 +295,9 @@ Scene make_scene(const SceneRequest& r) {
     return scene;
 }
 
-LoadOptions Scene::load_options() const { return LoadOptions{.smooth_angle = smooth_angle}; }
+LoadOptions Scene::load_options() const {
+    return LoadOptions{.smooth_angle = smooth_angle, .normal_weighting = normal_weighting};
+}
 
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
 
@@ -294,6 +319,9 @@ Light Scene::light(const BoundingBox& box, const Camera& cam) const {
         throw InputError(option_name(names, "light-pos") +
                          ": equals the light's target, so a directional light has no direction");
     apply_style_light(style, l);
+    // mtoon's threejs convention: a point light fades as three.js's does (the threejs-* models
+    // apply their own light-decay and light-distance parameters in their shaders).
+    l.physical_falloff = l.type != LightType::Directional && light_units(style.shading) == LightUnits::Physical;
     return l;
 }
 

@@ -222,6 +222,14 @@ void reject_unknown_keys(const toml::table& table, const std::vector<std::string
     }
 }
 
+// [light] intensity, decay and distance: three.js's ranges (0 and up) and the threejs-* models'
+// limits (intensity and distance up to 1e6 and 1e9, decay up to 16). `key` names it in errors.
+void check_light_value(LightValue which, double v, const std::string& key) {
+    const double max = which == LightValue::Intensity ? 1e6 : which == LightValue::Decay ? 16.0 : 1e9;
+    if (!(v >= 0.0 && v <= max))
+        throw InputError(key + ": expected a number in [0, " + format_number(float(max)) + "]");
+}
+
 Style model_default_style(const ShadingModel& model) {
     Style s;
     s.name = model.name;
@@ -406,9 +414,23 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
     }
 
     if (auto* light = root["light"].as_table()) {
-        reject_unknown_keys(*light, {"color", "ambient"}, source, " in [light]");
+        reject_unknown_keys(*light, {"color", "ambient", "intensity", "decay", "distance"}, source, " in [light]");
         if (auto* n = light->get("color")) style.light_color = glm::vec3(color_value(*n, source, "light.color"));
         if (auto* n = light->get("ambient")) style.ambient = glm::vec3(color_value(*n, source, "light.ambient"));
+        const std::pair<const char*, LightValue> values[] = {
+            {"intensity", LightValue::Intensity}, {"decay", LightValue::Decay}, {"distance", LightValue::Distance}};
+        for (const auto& [key, which] : values)
+            if (auto* n = light->get(key)) {
+                const std::optional<double> v = n->value<double>();
+                try {
+                    check_light_value(which, v.value_or(-1.0), key);
+                } catch (const InputError& e) {
+                    throw InputError(source, std::string("light.") + e.what());
+                }
+                (which == LightValue::Intensity ? style.light_intensity
+                 : which == LightValue::Decay   ? style.light_decay
+                                                : style.light_distance) = float(*v);
+            }
     } else if (root.contains("light")) {
         throw InputError(source, "[light] must be a table");
     }
@@ -469,6 +491,42 @@ std::optional<Style> builtin_style(const std::string& name) {
 void apply_style_light(const Style& style, Light& light) {
     if (style.light_color) light.color = *style.light_color;
     if (style.ambient) light.ambient = *style.ambient;
+    if (style.light_intensity) light.intensity = *style.light_intensity;
+    if (style.light_decay) light.decay = *style.light_decay;
+    if (style.light_distance) light.range = *style.light_distance;
+}
+
+const char* light_value_param(LightValue which) {
+    switch (which) {
+        case LightValue::Intensity: return "light-intensity";
+        case LightValue::Decay: return "light-decay";
+        case LightValue::Distance: return "light-distance";
+    }
+    return "";
+}
+
+void set_light_value(Style& style, LightValue which, float value) {
+    const char* name = light_value_param(which);
+    if (const ParamSpec* spec = shading_model(style.shading.model).param(name)) {
+        style.shading.params[name] = check_param_value(*spec, {value});
+        return;
+    }
+    check_light_value(which, double(value), name);
+    (which == LightValue::Intensity ? style.light_intensity
+     : which == LightValue::Decay   ? style.light_decay
+                                    : style.light_distance) = value;
+}
+
+std::optional<float> light_value(const Style& style, LightValue which) {
+    const char* name = light_value_param(which);
+    if (shading_model(style.shading.model).param(name)) {
+        auto it = style.shading.params.find(name);
+        return it != style.shading.params.end() && it->second.size() == 1 ? std::optional(it->second[0])
+                                                                          : std::nullopt;
+    }
+    return which == LightValue::Intensity ? style.light_intensity
+           : which == LightValue::Decay   ? style.light_decay
+                                          : style.light_distance;
 }
 
 void apply_override(Style& style, const std::string& text) {
@@ -521,10 +579,13 @@ std::string format_style(const Style& style) {
     if (style.smooth_angle) out << "smooth-angle = " << format_number(*style.smooth_angle) << "\n";
     if (style.up_axis) out << "up-axis = " << toml_string(up_axis_name(*style.up_axis)) << "\n";
     if (style.shading.base_color_use == BaseColorUse::Only) out << "mesh-colors = false\n";
-    if (style.light_color || style.ambient) {
+    if (style.light_color || style.ambient || style.light_intensity || style.light_decay || style.light_distance) {
         out << "\n[light]\n";
         if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";
         if (style.ambient) out << "ambient = " << color_text(glm::vec4(*style.ambient, 1.0f)) << "\n";
+        if (style.light_intensity) out << "intensity = " << format_number(*style.light_intensity) << "\n";
+        if (style.light_decay) out << "decay = " << format_number(*style.light_decay) << "\n";
+        if (style.light_distance) out << "distance = " << format_number(*style.light_distance) << "\n";
     }
     out << "\n[shading]\nmodel = " << toml_string(model.name) << "\n";
     write_params(out, model.params, style.shading.params);
@@ -536,6 +597,8 @@ std::string format_style(const Style& style) {
 }
 
 void save_style(const std::string& path, const Style& style) { io::write_file_atomic(path, format_style(style)); }
+
+Style shading_model_style(const std::string& model_name) { return model_default_style(shading_model(model_name)); }
 
 std::vector<std::string> builtin_style_names() {
     std::vector<std::string> names;

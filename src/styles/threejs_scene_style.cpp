@@ -40,6 +40,27 @@ Style threejs_scene_style(const ThreejsScene& scene) {
     style.shading.params = checked(model.params, scene.params, scene.param_fields, "material.", scene.source);
     style.light_color = scene.light_color;
     style.ambient = scene.ambient;
+    if (scene.base_color) {
+        // MToonMaterial's litFactor multiplies the mesh's colours and texture, as --base-color does.
+        style.shading.base_color = *scene.base_color;
+        style.shading.base_color_use = BaseColorUse::Multiply;
+    }
+    // A model without three.js's light parameters (mtoon) takes the lights' intensity, decay
+    // and distance as the style's [light] values, and the ambient intensity in its colour.
+    for (LightValue which : {LightValue::Intensity, LightValue::Decay, LightValue::Distance}) {
+        const char* name = light_value_param(which);
+        auto it = scene.params.find(name);
+        if (it == scene.params.end() || model.param(name) || it->second.size() != 1) continue;
+        try {
+            set_light_value(style, which, it->second[0]);
+        } catch (const InputError& e) {
+            auto f = scene.param_fields.find(name);
+            throw InputError(scene.source, (f != scene.param_fields.end() ? f->second : name) + ": " + e.what());
+        }
+    }
+    if (auto it = scene.params.find("ambient-intensity");
+        it != scene.params.end() && !model.param("ambient-intensity") && it->second.size() == 1)
+        style.ambient = scene.ambient * it->second[0];
     style.background = scene.background;
     if (scene.outline)
         style.lines.push_back({"threejs-outline", checked(line_type("threejs-outline").params, *scene.outline, {},

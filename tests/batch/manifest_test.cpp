@@ -141,6 +141,24 @@ TEST(BatchManifest, MarginColumnAndDefaultReachTheCamera) {
     EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
 }
 
+TEST(BatchManifest, LightIntensityColumnAndDefaultReachTheJob) {
+    BatchDefaults d;
+    d.light_intensity = 2.0f;
+    const auto jobs = parse_manifest("model,light-intensity\nx.stl,3.5\ny.stl,\n", "m.csv", d);
+    ASSERT_EQ(jobs.size(), 2u);
+    EXPECT_EQ(jobs[0].light_intensity, 3.5f);
+    EXPECT_EQ(jobs[1].light_intensity, 2.0f);
+    const auto json = parse_manifest("{\"model\": \"x.stl\", \"light-intensity\": 0.5}\n", "m.jsonl");
+    EXPECT_EQ(json[0].light_intensity, 0.5f);
+    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    try {
+        parse_manifest("model,light-intensity\nx.stl,-1\n", "m.csv");
+        ADD_FAILURE() << "a negative intensity was accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "m.csv:2: light-intensity: expected a number in [0, 1e6], got '-1'");
+    }
+}
+
 TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
     // No extension: '{' means JSON Lines, anything else CSV.
     EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);

@@ -27,6 +27,25 @@ TEST(RenderCommand, WritesPngOfRequestedSize) {
     EXPECT_EQ(img.pixel(0, 0)[0], 255);
 }
 
+// --light-intensity is the style file's [light] intensity (one request path): the same bytes,
+// brighter than intensity 1; a bad value is exit 2 with one line naming the option.
+TEST(RenderCommand, LightIntensityMatchesTheStyleFilesAndBrightens) {
+    TempDir dir;
+    const std::string base = "render builtin:sphere --size 64x64 --shading lambert --light-color 0.3,0.3,0.3 ";
+    const std::string style = dir.write("bright.toml", "[light]\ncolor = \"0.3,0.3,0.3\"\nintensity = 3\n"
+                                                       "[shading]\nmodel = \"lambert\"\n");
+    ASSERT_EQ(run_cli(base + "--light-intensity 3 -o " + dir.file("flag.png")).status, 0);
+    auto r = run_cli("render builtin:sphere --size 64x64 --style " + style + " -o " + dir.file("style.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(run_cli(base + "-o " + dir.file("one.png")).status, 0);
+    EXPECT_EQ(slurp(dir.file("flag.png")), slurp(dir.file("style.png")));
+    const Image bright = read_png(dir.file("flag.png")), dim = read_png(dir.file("one.png"));
+    EXPECT_GT(int(bright.pixel(32, 32)[0]), int(dim.pixel(32, 32)[0]) + 60);
+    auto bad = run_cli(base + "--light-intensity -2 -o " + dir.file("bad.png"));
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(bad.err, "inkshade: --light-intensity: expected a number in [0, 1e+06]\n");
+}
+
 TEST(RenderCommand, RepeatedSetBeforeModelTakesOneValueEach) {
     TempDir dir;
     auto r = run_cli("render --shading phong --set shininess=3 --set specular=1,0,0 builtin:sphere --size 32x32 -o " +

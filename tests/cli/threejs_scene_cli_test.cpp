@@ -105,6 +105,53 @@ TEST(ThreejsSceneCli, ToonOutlineSceneAndEquivalentStyleAndFlagsGiveByteIdentica
     EXPECT_GT(outline, 50);
 }
 
+// three-vrm's MToonMaterial under a point light with intensity, decay and distance and an
+// orthographic camera: the scene and the flags it stands for (the mtoon model's threejs
+// convention is its default; the scene turns shadows off as three.js does by default).
+const char* kMtoonScene = R"({
+  "mesh": "builtin:torus-knot",
+  "material": {"type": "MToonMaterial", "color": [0.9, 0.6, 0.4], "shadeColorFactor": [0.3, 0.2, 0.45],
+               "shadingShiftFactor": -0.1, "shadingToonyFactor": 0.7, "parametricRimColorFactor": [0.5, 0.4, 0.3],
+               "parametricRimFresnelPowerFactor": 2, "parametricRimLiftFactor": 0.05, "rimLightingMixFactor": 0.5,
+               "giEqualizationFactor": 0.9},
+  "lights": [
+    {"type": "PointLight", "color": [1, 0.9, 0.8], "intensity": 30, "position": [2, 3, 4], "decay": 1.5,
+     "distance": 12},
+    {"type": "AmbientLight", "color": [0.2, 0.2, 0.25]}
+  ],
+  "camera": {"type": "OrthographicCamera", "left": -2, "right": 2, "top": 1.5, "bottom": -1.5, "near": 0.1,
+             "far": 40, "position": [3, 2, 6], "target": [0, 0, 0]},
+  "background": "#ffffff",
+  "size": [160, 120]
+})";
+
+const char* kMtoonFlags =
+    "builtin:torus-knot --shading mtoon --base-color 0.9,0.6,0.4 --set shade-color=0.3,0.2,0.45 "
+    "--set shading-shift=-0.1 --set shading-toony=0.7 --set rim-color=0.5,0.4,0.3 --set rim-fresnel-power=2 "
+    "--set rim-lift=0.05 --set rim-lighting-mix=0.5 --set shadows=false --light-type point "
+    "--light-color 1,0.9,0.8 --light-intensity 30 --light-decay 1.5 --light-distance 12 --light-pos 2,3,4 "
+    "--ambient 0.2,0.2,0.25 --ortho --ortho-height 3 --near 0.1 --far 40 --eye 3,2,6 --target 0,0,0 "
+    "--background '#ffffff' --size 160x120 --samples 1";
+
+TEST(ThreejsSceneCli, MToonMaterialSceneAndEquivalentFlagsGiveByteIdenticalImages) {
+    TempDir dir;
+    const std::string scene = dir.write("mtoon.json", kMtoonScene);
+    auto a = run_cli("render --scene " + scene + " -o " + dir.file("scene.png"));
+    ASSERT_EQ(a.status, 0) << a.err;
+    EXPECT_EQ(a.err, "");
+    auto b = run_cli(std::string("render ") + kMtoonFlags + " -o " + dir.file("flags.png"));
+    ASSERT_EQ(b.status, 0) << b.err;
+    EXPECT_EQ(slurp(dir.file("scene.png")), slurp(dir.file("flags.png"))) << "scene and flags differ";
+    // The light counts: with intensity 1 (the flag over the scene) the knot is much darker.
+    auto dim = run_cli("render --scene " + scene + " --light-intensity 1 -o " + dir.file("dim.png"));
+    ASSERT_EQ(dim.status, 0) << dim.err;
+    const Image lit = read_png(dir.file("scene.png")), dark = read_png(dir.file("dim.png"));
+    long sum_lit = 0, sum_dark = 0;
+    for (int y = 0; y < lit.height; ++y)
+        for (int x = 0; x < lit.width; ++x) sum_lit += lit.pixel(x, y)[0], sum_dark += dark.pixel(x, y)[0];
+    EXPECT_GT(sum_lit, sum_dark + 20 * 255) << "intensity 30 looks like intensity 1";
+}
+
 TEST(ThreejsSceneCli, CommandLineOptionsOverrideTheScene) {
     TempDir dir;
     const std::string scene = dir.write("phong.json", kPhongScene);

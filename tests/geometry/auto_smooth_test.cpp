@@ -60,6 +60,37 @@ TEST(AutoSmooth, CylinderSideStaysSmoothAndCapsFlat) {
     EXPECT_EQ(m.shading_normals.size(), 2u * 64u + 2u);
 }
 
+// Area weighting (three.js's convention) inside a fan: an uneven fan of five faces around a
+// raised centre, plus a flap on the edge (0, 1) that makes it hard; the five faces stay one fan
+// (joined the other way round), whose normal is their sum of cross products, normalised.
+TEST(AutoSmooth, AreaWeightedFansSumTheirFacesCrossProducts) {
+    Mesh m;
+    m.positions = {{0, 0, 0.6f}};
+    const float degrees[] = {0, 40, 80, 200, 300}, radii[] = {1.0f, 0.5f, 1.5f, 1.0f, 0.8f};
+    for (int i = 0; i < 5; ++i) {
+        const float a = glm::radians(degrees[i]);
+        m.positions.push_back(radii[i] * glm::vec3(std::cos(a), std::sin(a), 0.0f));
+    }
+    for (uint32_t i = 0; i < 5; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % 5});
+    glm::vec3 sum(0.0f), angle_sum(0.0f);
+    for (const glm::uvec3& t : m.triangles) {
+        const glm::vec3 a = m.positions[t.x], b = m.positions[t.y], c = m.positions[t.z];
+        sum += glm::cross(b - a, c - a);
+        angle_sum += angle_between(b - a, c - a) * glm::normalize(glm::cross(b - a, c - a));
+    }
+    m.positions.push_back({0.5f, 0.0f, -2.0f});
+    m.triangles.push_back({0, 6, 1});  // the flap
+    for (NormalWeighting w : {NormalWeighting::Area, NormalWeighting::Angle}) {
+        Mesh s = m;
+        ensure_vertex_normals(s, w);
+        auto_smooth(s, 179.0f, w);  // only the three-face edge is hard
+        ASSERT_TRUE(s.has_hard_edges());
+        const glm::vec3 want = glm::normalize(w == NormalWeighting::Area ? sum : angle_sum);
+        for (size_t f = 0; f < 5; ++f) EXPECT_LT(glm::length(shading_normal(s, f, 0) - want), 1e-5f) << f;
+    }
+    EXPECT_GT(glm::length(glm::normalize(sum) - glm::normalize(angle_sum)), 0.03f);
+}
+
 TEST(AutoSmooth, NonManifoldEdgesAreHardAndDegenerateFacesTakeTheSmoothNormal) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0.5f, 0, 0}};

@@ -55,6 +55,48 @@ TEST(Normals, CubeCornerAngleWeightedNormalIsDiagonal) {
     for (size_t v = 0; v < 8; ++v) expect_near(vn[v], glm::normalize(m.positions[v] - glm::vec3(0.5f)));
 }
 
+// A fan of five unequal triangles around a raised centre: weighting by area and by angle give
+// clearly different normals at the centre.
+Mesh uneven_fan() {
+    Mesh m;
+    m.positions = {{0, 0, 0.6f}};
+    const float degrees[] = {0, 40, 80, 200, 300}, radii[] = {1.0f, 0.5f, 1.5f, 1.0f, 0.8f};
+    for (int i = 0; i < 5; ++i) {
+        const float a = glm::radians(degrees[i]);
+        m.positions.push_back(radii[i] * glm::vec3(std::cos(a), std::sin(a), 0.0f));
+    }
+    for (uint32_t i = 0; i < 5; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % 5});
+    return m;
+}
+
+// three.js r187 BufferGeometry.computeVertexNormals on an indexed geometry: per face
+// cb = (C - B) x (A - B) added to its three vertices, then each normalised.
+std::vector<glm::vec3> threejs_vertex_normals(const Mesh& m) {
+    std::vector<glm::vec3> sum(m.positions.size(), glm::vec3(0.0f));
+    for (const glm::uvec3& t : m.triangles) {
+        const glm::vec3 a = m.positions[t.x], b = m.positions[t.y], c = m.positions[t.z];
+        const glm::vec3 cb = glm::cross(c - b, a - b);
+        for (int k = 0; k < 3; ++k) sum[t[k]] += cb;
+    }
+    for (glm::vec3& n : sum) n = glm::normalize(n);
+    return sum;
+}
+
+TEST(Normals, AreaWeightingIsThreejsComputeVertexNormals) {
+    const Mesh m = uneven_fan();
+    const std::vector<glm::vec3> three = threejs_vertex_normals(m), area = area_weighted_vertex_normals(m);
+    ASSERT_EQ(area.size(), three.size());
+    for (size_t v = 0; v < area.size(); ++v) expect_near(area[v], three[v]);
+    const glm::vec3 angle = angle_weighted_vertex_normals(m)[0];
+    EXPECT_GT(glm::length(angle - area[0]), 0.03f) << "the fan does not tell the weightings apart";
+    Mesh ensured = m;
+    ensure_vertex_normals(ensured, NormalWeighting::Area);
+    expect_near(ensured.normals[0], three[0]);
+    ensured.normals.clear();
+    ensure_vertex_normals(ensured);
+    expect_near(ensured.normals[0], angle);
+}
+
 TEST(Normals, DegenerateFaceGivesZeroNormalWithoutNaN) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};

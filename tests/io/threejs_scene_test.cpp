@@ -44,6 +44,51 @@ TEST(ThreejsScene, MaterialTypesMapToModelsWithSrgbColours) {
         EXPECT_EQ(parse(std::string(R"({"mesh": "m.obj", "material": {"type": ")") + type + "\"}}").model, model);
 }
 
+// three-vrm's MToonMaterial by its field names: the factors become mtoon's parameters (colours
+// linear, as THREE.Color holds them), `color` the base colour; fields without an effect in such a
+// scene are accepted; those the model lacks are one-line errors unless at three-vrm's default.
+TEST(ThreejsScene, MToonMaterialFieldsMapOntoTheMtoonModel) {
+    ThreejsScene s = parse(R"({"mesh": "m.obj", "material": {"type": "MToonMaterial", "color": "#ff8800",
+        "shadeColorFactor": [0.3, 0.2, 0.45], "shadingShiftFactor": -0.1, "shadingToonyFactor": 0.6,
+        "parametricRimColorFactor": 16777215, "parametricRimFresnelPowerFactor": 2, "parametricRimLiftFactor": 0.05,
+        "rimLightingMixFactor": 0.5, "giEqualizationFactor": 0.9, "matcapFactor": [1, 1, 1],
+        "outlineWidthMode": "none", "outlineWidthFactor": 0.02, "emissive": "#000000", "emissiveIntensity": 1,
+        "uvAnimationScrollXSpeedFactor": 0, "transparentWithZWrite": false}})");
+    EXPECT_EQ(s.model, "mtoon");
+    ASSERT_TRUE(s.base_color);
+    EXPECT_NEAR(s.base_color->g, srgb_to_linear(0x88 / 255.0f), 1e-6f);  // "#ff8800" is sRGB, decoded
+    EXPECT_EQ(s.params.at("shade-color"), (ParamValue{0.3f, 0.2f, 0.45f}));
+    EXPECT_EQ(s.params.at("rim-color"), (ParamValue{1.0f, 1.0f, 1.0f}));
+    EXPECT_EQ(s.params.at("shading-shift"), ParamValue{-0.1f});
+    EXPECT_EQ(s.params.at("shading-toony"), ParamValue{0.6f});
+    EXPECT_EQ(s.params.at("rim-fresnel-power"), ParamValue{2.0f});
+    EXPECT_EQ(s.params.at("rim-lift"), ParamValue{0.05f});
+    EXPECT_EQ(s.params.at("rim-lighting-mix"), ParamValue{0.5f});
+    EXPECT_EQ(s.params.at("convention"), ParamValue{1.0f});  // threejs
+    EXPECT_EQ(s.params.at("shadows"), ParamValue{0.0f});     // three.js renders none by default
+    EXPECT_EQ(s.param_fields.at("shading-toony"), "material.shadingToonyFactor");
+
+    const std::string m = R"({"mesh": "m.obj", "material": {"type": "MToonMaterial", )";
+    const auto error = [&](const std::string& fields) {
+        try {
+            parse(m + fields + "}}");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string unsupported = "not supported by Inkshade's mtoon model yet";
+    EXPECT_EQ(error(R"("outlineWidthMode": "screenCoordinates")"),
+              "scene.json: material.outlineWidthMode: " + unsupported + " (accepted only as three-vrm's default)");
+    EXPECT_NE(error(R"("emissive": "#100000")").find("material.emissive: " + unsupported), std::string::npos);
+    EXPECT_NE(error(R"("matcapTexture": 0)").find("material.matcapTexture: " + unsupported), std::string::npos);
+    EXPECT_NE(error(R"("uvAnimationRotationSpeedFactor": 1)").find(unsupported), std::string::npos);
+    EXPECT_NE(error(R"("shadeColor": [0, 0, 0])").find("material.shadeColor: unknown field (allowed: type, name"),
+              std::string::npos);
+    EXPECT_NE(error(R"("shadingToonyFactor": "hard")").find("material.shadingToonyFactor: expected a number"),
+              std::string::npos);
+}
+
 TEST(ThreejsScene, ToonGradientMapSwitchesTheMapOn) {
     ThreejsScene s =
         parse(R"({"mesh": "m.obj", "material": {"type": "MeshToonMaterial", "gradientMap": [0.2, 0.6, 1]}})");

@@ -98,13 +98,14 @@ TEST(FileLight, RangedPointLightUnderMtoonThreejsConventionFallsOffAsThreejs) {
     point.target = glm::vec3(0.0f);
     point.color = glm::vec3(3.0f);  // colour x intensity
     point.ambient = glm::vec3(0.0f);
-    point.inverse_square = true;
+    point.physical_falloff = true;
     point.range = 1.5f;
     ShadingSelection s;
     s.model = "mtoon";
     s.params["convention"] = {1.0f};  // threejs
     s.params["shadows"] = {0.0f};
     s.params["shading-toony"] = {0.0f};  // t = (n.l + 1) / 2
+    s.params["shade-color"] = {0.0f, 0.0f, 0.0f};
     const Image img = render_ortho(mesh, point, s, options());
     const auto expected = [&](const glm::vec3& p) {
         const glm::vec3 to_light = point.position - p;
@@ -133,7 +134,8 @@ TEST(FileLight, UnlitMaterialIsItsBaseColourUnderEveryModel) {
         s.base_color = glm::vec3(1.0f, 1.0f, 0.5f);  // multiplies the unlit colour too
         const Image img = render_ortho(mesh, light, s, options());
         const glm::vec3 c = unlit.diffuse * s.base_color;
-        const bool srgb = std::string(model).starts_with("threejs-");
+        // mtoon's default convention is three-vrm's: sRGB output, as the threejs-* models.
+        const bool srgb = std::string(model).starts_with("threejs-") || std::string(model) == "mtoon";
         const glm::vec3 want = srgb ? glm::vec3(encode(c.r), encode(c.g), encode(c.b)) : c;
         const uint8_t* px = img.pixel(48, 32);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(int(px[k]), to_byte(want[k]), 1) << k;

@@ -75,7 +75,10 @@ int compare_sphere(const MtoonParams& p, bool shadows, float min_ndotl = -2.0f) 
         for (int px = 6; px < kSize; px += 10) {
             auto n = sphere_normal(ray_origin(ortho_camera(), px + 0.5f, py + 0.5f));
             if (!n || n->z < 0.2f || glm::dot(*n, l) < min_ndotl) continue;
-            glm::vec3 want = mtoon(p, sel.base_color, light, *n, glm::vec3(0, 0, 1));
+            // The rim's v: three-vrm's, from the camera position, in the threejs convention
+            // (mtoon_parity_test.cpp); the view axis in the seeds convention.
+            const glm::vec3 v = p.threejs ? glm::normalize(ortho_camera().eye - *n) : glm::vec3(0, 0, 1);
+            glm::vec3 want = mtoon(p, sel.base_color, light, *n, v);
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(int(img.pixel(px, py)[c]), to_byte(want[c]), 2) << px << "," << py << " channel " << c;
             ++compared;
@@ -91,12 +94,17 @@ TEST(Mtoon, ThreejsConventionMatchesFormulaWithOneOverPiAndSrgb) {
     EXPECT_GE(compare_sphere(p, false), 50);
 }
 
-TEST(Mtoon, DefaultsAreMtoonDefaults) {
+// three-vrm 3.5's MToonMaterial uniforms' initial values, in its threejs convention.
+TEST(Mtoon, DefaultsAreMToonMaterials) {
     const ShadingModel& m = shading_model("mtoon");
     EXPECT_EQ(m.param("shading-toony")->default_value, ParamValue{0.9f});
-    EXPECT_EQ(m.param("rim-fresnel-power")->default_value, ParamValue{5.0f});
-    EXPECT_EQ(m.param("shade-color")->default_value, (ParamValue{0, 0, 0}));
-    EXPECT_EQ(m.param("rim-lighting-mix")->default_value, ParamValue{1.0f});
+    EXPECT_EQ(m.param("shading-shift")->default_value, ParamValue{0.0f});
+    EXPECT_EQ(m.param("rim-fresnel-power")->default_value, ParamValue{1.0f});
+    EXPECT_EQ(m.param("shade-color")->default_value, (ParamValue{0.97f, 0.81f, 0.86f}));
+    EXPECT_EQ(m.param("rim-color")->default_value, (ParamValue{0, 0, 0}));
+    EXPECT_EQ(m.param("rim-lighting-mix")->default_value, ParamValue{0.0f});
+    EXPECT_EQ(m.param("rim-lift")->default_value, ParamValue{0.0f});
+    EXPECT_EQ(m.param("convention")->choices.at(size_t(m.param("convention")->default_value.at(0))), "threejs");
 }
 
 // A convex sphere does not shadow its own lit side: with the shadow map on, lit pixels equal
@@ -135,7 +143,7 @@ TEST(Mtoon, SphereCastsShadowOnPlaneWhereAnalyticShadowIs) {
     light.ambient = glm::vec3(0.1f);
     ShadingSelection sel;
     sel.model = "mtoon";
-    sel.params = {{"shade-color", {0.0f, 0.0f, 1.0f}}, {"shading-toony", {0.9f}}};
+    sel.params = {{"shade-color", {0.0f, 0.0f, 1.0f}}, {"shading-toony", {0.9f}}, {"convention", {0.0f}}};
     RenderOptions o;
     o.width = o.height = kSize;
     o.background = glm::vec4(1, 0, 0, 1);
@@ -183,7 +191,7 @@ TEST(Mtoon, ShadowMapFollowsLightAndMeshChanges) {
     cam.up = glm::vec3(0, 0, -1);
     ShadingSelection sel;
     sel.model = "mtoon";
-    sel.params = {{"shade-color", {0.0f, 0.0f, 1.0f}}};
+    sel.params = {{"shade-color", {0.0f, 0.0f, 1.0f}}, {"convention", {0.0f}}};
     RenderOptions o;
     o.width = o.height = 64;
     auto render_with = [&](glm::vec3 dir) {

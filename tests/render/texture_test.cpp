@@ -163,6 +163,7 @@ TEST(Texture, MtoonUsesTheTexture) {
     ShadingSelection sel;
     sel.model = "mtoon";
     sel.params["shadows"] = {0.0f};
+    sel.params["convention"] = {0.0f};  // seeds: the texel as it is
     Image img = render_ortho(quad({textured()}), ambient_only(), sel, single_sample());
     expect_cells(img, glm::vec3(1.0f), "mtoon");  // E = 0: out = A * C
 }
@@ -292,6 +293,7 @@ Image mtoon_shade(const Mesh& mesh, bool use_material_params) {
     sel.model = "mtoon";
     sel.params["shadows"] = {0.0f};
     sel.params["shade-color"] = {0.0f, 0.0f, 1.0f};
+    sel.params["convention"] = {0.0f};  // seeds: out = E * S as it is
     sel.params["use-material-params"] = {use_material_params ? 1.0f : 0.0f};
     return render_ortho(mesh, directional_light({0, 0, -1}, glm::vec3(1), glm::vec3(0)), sel, single_sample(64));
 }

@@ -208,7 +208,7 @@ TEST(FileScene, DisplayModelsTakeTheLightsPlaceAndTintAtTheStylesStrength) {
     const glm::vec3 to_light = glm::normalize(l.position - l.target);
     EXPECT_NEAR(to_light.y, 1.0f, 1e-6f);                                // it shines down
     EXPECT_EQ(l.color, glm::vec3(0.9f) * glm::vec3(1.0f, 0.5f, 0.25f));  // default strength 0.9, the file's tint
-    EXPECT_FALSE(l.inverse_square);
+    EXPECT_FALSE(l.physical_falloff);
     EXPECT_EQ(s.shading().params, s.style.shading.params);  // no light parameters to set
 }
 
@@ -246,13 +246,15 @@ TEST(FileScene, MtoonInThreejsConventionTakesPhysicalUnits) {
     s.apply_file_scene(m);
     const BoundingBox box = m.bounds();
     const Light l = s.light(box, s.frame(box));
-    EXPECT_EQ(l.color, glm::vec3(50.0f));  // colour x intensity
-    EXPECT_TRUE(l.inverse_square);
+    EXPECT_EQ(l.color, glm::vec3(1.0f));  // the file's colour, its intensity apart
+    EXPECT_FLOAT_EQ(l.intensity, 50.0f);
+    EXPECT_FLOAT_EQ(l.decay, 2.0f);  // GLTFLoader's
+    EXPECT_TRUE(l.physical_falloff);
     EXPECT_FLOAT_EQ(l.range, 12.0f);
 
     Scene seeds = scene_of([](SceneRequest& r) {
         r.lights = LightSource::File;
-        r.shading = "mtoon";
+        r.style = "mtoon";  // the preset: convention seeds
     });
     seeds.apply_file_scene(m);
     const Light d = seeds.light(box, seeds.frame(box));
@@ -260,7 +262,7 @@ TEST(FileScene, MtoonInThreejsConventionTakesPhysicalUnits) {
     // the mtoon style), the spot's white tint.
     ASSERT_TRUE(seeds.style.light_color);
     EXPECT_EQ(d.color, *seeds.style.light_color);
-    EXPECT_FALSE(d.inverse_square);
+    EXPECT_FALSE(d.physical_falloff);
 }
 
 }  // namespace

@@ -100,6 +100,64 @@ TEST(Scene, ShadingGivesTheModelWithItsDefaults) {
     EXPECT_NE(error_of([](SceneRequest& q) { q.shading = "no-such-model"; }).find("no-such-model"), std::string::npos);
 }
 
+// `--shading mtoon` is the model with its defaults (three-vrm MToonMaterial's), not the
+// built-in `mtoon` style, which shares the name and picks its own colours and convention.
+TEST(Scene, ShadingNamesTheModelEvenWhereAPresetHasItsName) {
+    SceneRequest r;
+    r.shading = "mtoon";
+    const Scene model = make_scene(r);
+    EXPECT_EQ(model.style.shading.model, "mtoon");
+    EXPECT_TRUE(model.style.shading.params.empty());
+    EXPECT_FALSE(model.style.light_color);
+    EXPECT_EQ(model.style.shading.base_color, glm::vec3(1.0f));
+    SceneRequest preset;
+    preset.style = "mtoon";
+    const Scene styled = make_scene(preset);
+    EXPECT_FALSE(styled.style.shading.params.empty());  // the preset keeps its look
+    EXPECT_TRUE(styled.style.light_color);
+}
+
+// --light-intensity, --light-decay, --light-distance: a model's light parameters where it has
+// them (threejs-*), else the style's [light] values, which the scene's light carries; checked
+// once with the option's name.
+TEST(Scene, LightValuesReachTheModelOrTheLight) {
+    const BoundingBox box{glm::vec3(-1.0f), glm::vec3(1.0f)};
+    SceneRequest r;
+    r.shading = "lambert";
+    r.light_intensity = 3.0f;
+    r.light_decay = 1.0f;
+    r.light_distance = 7.0f;
+    const Scene lambert = make_scene(r);
+    EXPECT_EQ(lambert.style.light_intensity, 3.0f);
+    const Light l = lambert.light(box, lambert.frame(box));
+    EXPECT_FLOAT_EQ(l.intensity, 3.0f);
+    EXPECT_FLOAT_EQ(l.decay, 1.0f);
+    EXPECT_FLOAT_EQ(l.range, 7.0f);
+    EXPECT_FALSE(l.physical_falloff);  // directional, display units
+    r.shading = "threejs-phong";
+    const Scene three = make_scene(r);
+    EXPECT_EQ(three.style.shading.params.at("light-intensity"), ParamValue{3.0f});
+    EXPECT_EQ(three.style.shading.params.at("light-decay"), ParamValue{1.0f});
+    EXPECT_EQ(three.style.shading.params.at("light-distance"), ParamValue{7.0f});
+    EXPECT_FLOAT_EQ(three.light(box, three.frame(box)).intensity, 1.0f);  // not twice
+    r.shading = "mtoon";
+    r.light_type = LightType::Point;
+    const Scene mtoon = make_scene(r);
+    EXPECT_TRUE(mtoon.light(box, mtoon.frame(box)).physical_falloff);  // its threejs convention
+    r.sets = {"convention=seeds"};
+    EXPECT_FALSE(make_scene(r).light(box, make_scene(r).frame(box)).physical_falloff);
+
+    EXPECT_EQ(error_of([](SceneRequest& q) { q.light_intensity = -1.0f; }),
+              "--light-intensity: expected a number in [0, 1e+06]");
+    EXPECT_EQ(error_of([](SceneRequest& q) { q.light_decay = NAN; }, OptionNames::Keywords),
+              "light_decay: expected a number in [0, 16]");
+    EXPECT_NE(error_of([](SceneRequest& q) {
+                  q.shading = "threejs-lambert";
+                  q.light_distance = -2.0f;
+              }).rfind("--light-distance: ", 0),
+              std::string::npos);
+}
+
 TEST(Scene, LineDrawingTakesTheStylesObjectSpaceTypesElseTheDefaultList) {
     SceneRequest r;
     r.outputs = {.image = false, .line_drawing = true};

@@ -38,6 +38,9 @@ base-color = [0.5, 0.25, 1.0]
 [light]
 color = "1,1,1"
 ambient = "0.2"
+intensity = 3
+decay = 1.5
+distance = 20
 [shading]
 model = "phong"
 shininess = 64
@@ -49,6 +52,18 @@ specular = "#ff0000"
     EXPECT_EQ(s.background, glm::vec4(0, 0, 0, 1));
     EXPECT_EQ(s.shading.base_color, glm::vec3(0.5f, 0.25f, 1.0f));
     EXPECT_EQ(*s.ambient, glm::vec3(0.2f));
+    EXPECT_EQ(s.light_intensity, 3.0f);
+    EXPECT_EQ(s.light_decay, 1.5f);
+    EXPECT_EQ(s.light_distance, 20.0f);
+    const Style saved = parse_style(format_style(s), "saved.toml");  // --save-style keeps them
+    EXPECT_EQ(saved.light_intensity, 3.0f);
+    EXPECT_EQ(saved.light_decay, 1.5f);
+    EXPECT_EQ(saved.light_distance, 20.0f);
+    Light l;
+    apply_style_light(s, l);
+    EXPECT_FLOAT_EQ(l.intensity, 3.0f);
+    EXPECT_FLOAT_EQ(l.decay, 1.5f);
+    EXPECT_FLOAT_EQ(l.range, 20.0f);
     EXPECT_EQ(s.shading.model, "phong");
     EXPECT_EQ(s.shading.params.at("shininess"), ParamValue{64});
     EXPECT_EQ(s.shading.params.at("specular"), (ParamValue{1, 0, 0}));
@@ -67,6 +82,8 @@ TEST(Style, BadFilesGiveOneLineErrorsNamingTheProblem) {
         {"[shading]\nmodel = 'phong'\nspecular = [1, 2]", "needs 3 values"},
         {"background = 'nope'\n[shading]\nmodel = 'phong'", "background"},
         {"[light]\nsun = 1\n[shading]\nmodel = 'phong'", "unknown key 'sun' in [light]"},
+        {"[light]\nintensity = -1\n[shading]\nmodel = 'phong'", "light.intensity: expected a number in [0, 1e+06]"},
+        {"[light]\ndecay = 'x'\n[shading]\nmodel = 'phong'", "light.decay: expected a number in [0, 16]"},
         {"[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'no-such-line'", "unknown line type 'no-such-line'"},
     };
     for (const auto& [text, phrase] : cases) {

@@ -1,9 +1,12 @@
 #include "inkshade/shading.hpp"
 
 namespace inkshade {
-// Defaults are those of the VRM MToon 1.0 specification (VRMC_materials_mtoon; formula in
-// docs/shading.md): shade colour 0, shift 0, toony 0.9, rim colour 0, fresnel power 5, lift 0,
-// rim lighting mix 1. Shadows on: anime-style renderers cast hard shadows from a shadow map.
+// Defaults are three-vrm 3.5's MToonMaterial's (its uniforms' initial values, linear colours),
+// so `--shading mtoon` renders what `new MToonMaterial()` renders on three.js r187: shade colour
+// (0.97, 0.81, 0.86), shift 0, toony 0.9, rim colour 0, fresnel power 1, lift 0, rim lighting
+// mix 0, and the threejs convention (1/pi light units, sRGB output). A VRM file's materials
+// carry the VRMC_materials_mtoon specification's defaults instead (io/gltf_reader.cpp).
+// Shadows on: anime-style renderers cast hard shadows from a shadow map.
 // use-material-params: a VRM avatar's materials (face, hair, clothes) each carry their own
 // MToon values, which one style cannot express, so by default they replace the style's values
 // for the parameters a material carries (per material draw, renderer.cpp); off restyles them.
@@ -14,21 +17,22 @@ static const ShadingModelRegistration mtoon_model{{
     .shadow_map = true,
     .params =
         {
-            color_param("shade-color", glm::vec3(0.0f), "shade colour S (MToon shadeColorFactor)"),
+            color_param("shade-color", glm::vec3(0.97f, 0.81f, 0.86f),
+                        "shade colour S, linear (MToon shadeColorFactor)"),
             float_param("shading-shift", 0.0f, -1.0f, 1.0f,
                         "shift added to n.l before the toon step (MToon shadingShiftFactor)"),
             float_param("shading-toony", 0.9f, 0.0f, 1.0f,
                         "toony-ness: 1 = hard terminator, 0 = smooth (MToon shadingToonyFactor)"),
             color_param("rim-color", glm::vec3(0.0f), "rim colour (MToon parametricRimColorFactor; black = no rim)"),
-            float_param("rim-fresnel-power", 5.0f, 0.0f, 100.0f,
+            float_param("rim-fresnel-power", 1.0f, 0.0f, 100.0f,
                         "rim exponent on 1 - n.v (MToon parametricRimFresnelPowerFactor)"),
             float_param("rim-lift", 0.0f, 0.0f, 1.0f,
                         "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
-            float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f,
+            float_param("rim-lighting-mix", 0.0f, 0.0f, 1.0f,
                         "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
-            choice_param("convention", {"seeds", "threejs"}, 0,
-                         "seeds: values as they are, no 1/pi, no sRGB (Inkshade's default convention); "
-                         "threejs: 1/pi light units and sRGB output (three-vrm)"),
+            choice_param("convention", {"seeds", "threejs"}, 1,
+                         "threejs: 1/pi light units, three.js's point-light falloff, sRGB output (three-vrm); "
+                         "seeds: values as they are, no 1/pi, no sRGB (the display convention of the other models)"),
             compile_time(bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)")),
             float_param("shadow-softness", 1.5f, 0.0f, 4.0f, "PCF filter radius in shadow-map texels"),
             bool_param("use-material-params", true,
