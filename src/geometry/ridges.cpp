@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "geometry/face_segments.hpp"
-#include "geometry/suggestive_contours.hpp"
+#include "geometry/feature_size.hpp"
 
 namespace inkshade::geometry {
 namespace {
@@ -72,7 +72,8 @@ RidgeLines extract_ridges(const Mesh& mesh, const Curvature& curvature, const Ri
     if (curvature.k1.size() != n || curvature.k2.size() != n || curvature.pdir1.size() != n ||
         curvature.pdir2.size() != n || curvature.dcurv.size() != n)
         throw std::invalid_argument("extract_ridges: need curvature per vertex");
-    const double size = options.feature_size > 0.0f ? double(options.feature_size) : double(line_feature_size(mesh));
+    const double size =
+        options.feature_size > 0.0f ? double(options.feature_size) : double(line_feature_size(mesh, curvature));
     const double threshold = double(options.threshold) / size;
     RidgeLines out;
     out.ridges = extract(mesh, curvature, {curvature.pdir1, curvature.k1, 0, true}, threshold);

@@ -14,7 +14,8 @@ namespace inkshade::geometry {
 struct RidgeOptions {
     // Keep a crossing where |k| > threshold / feature_size there (rtsc's rv_thresh, 0.1).
     float threshold = 0.1f;
-    // World units; 0 = line_feature_size(mesh), as for suggestive contours.
+    // World units; 0 = line_feature_size(mesh, curvature) (feature_size.hpp), as for suggestive
+    // contours.
     float feature_size = 0.0f;
 };
 

@@ -74,12 +74,6 @@ float strength(double num, double den, double fade) {
 
 }  // namespace
 
-float line_feature_size(const Mesh& mesh) {
-    if (mesh.positions.empty()) return 1.0f;
-    const float d = 0.01f * mesh.bounds().diagonal();
-    return d > 0.0f && std::isfinite(d) ? d : 1.0f;
-}
-
 RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Curvature& curvature,
                                  const Camera& camera) {
     check_sizes(mesh, normals, curvature);
@@ -104,7 +98,8 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std
                                                      const Curvature& curvature, const Camera& camera,
                                                      const SuggestiveOptions& options) {
     check_sizes(mesh, normals, curvature);
-    const double size = options.feature_size > 0.0f ? double(options.feature_size) : double(line_feature_size(mesh));
+    const double size =
+        options.feature_size > 0.0f ? double(options.feature_size) : double(line_feature_size(mesh, curvature));
     const double threshold = double(options.threshold) / (size * size);
     const double fade = double(options.fade) / (size * size);
     const ViewVector view(camera);

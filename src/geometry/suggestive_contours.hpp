@@ -9,6 +9,7 @@
 
 #include "geometry/contours.hpp"
 #include "geometry/curvature.hpp"
+#include "geometry/feature_size.hpp"
 
 namespace inkshade::geometry {
 
@@ -20,15 +21,10 @@ struct SuggestiveOptions {
     // feature_size², so lines fade in from the trim point (rtsc's draw_faded constant 0.03);
     // 0 turns fading off (strength 1).
     float fade = 0.03f;
-    // The length (world units) that makes the two values above dimensionless; 0 = auto, see
-    // line_feature_size. rtsc uses the median edge length, which ties the lines to the
-    // tessellation; a model-sized length keeps them stable when the same shape is refined.
+    // The length (world units) that makes the two values above dimensionless; 0 = rtsc's
+    // automatic one from the curvature (feature_size.hpp).
     float feature_size = 0.0f;
 };
-
-// Auto feature size: 1 % of the bounding-box diagonal (about rtsc's median edge length on the
-// scanned models its thresholds were tuned on); 1 for an empty or degenerate mesh.
-float line_feature_size(const Mesh& mesh);
 
 // Per-vertex view-dependent curvature for one view (a debug view shows kr).
 struct RadialCurvature {

@@ -254,10 +254,13 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     // All seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has
     // contours, suggestive contours on its inner side and ridges, but no creases, no borders
-    // and no intersections (its valleys stay under the threshold).
+    // and no intersections (its valleys stay under the threshold). The tube's curvature 1/r =
+    // 2.5 is the same all round, so its ridges are a marginal case: at the automatic feature
+    // size (about 0.03 here, from the 10th percentile of |k|) the threshold 0.1 / 0.03 is above
+    // 2.5; a size of 1 % of the bounding box (0.04) brings it to 2.5.
     r = run_cli(
         "lines builtin:torus --lines contour,suggestive,crease,border,ridge,valley,intersection --size 256x256 "
-        "--elevation 45 -o " +
+        "--set ridge.feature-size=0.04 --elevation 45 -o " +
         dir.file("all.svg") + " --lines-json " + dir.file("all.json"));
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(slurp(dir.file("all.json")));

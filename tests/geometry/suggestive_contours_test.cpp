@@ -10,6 +10,7 @@
 #include "geometry/analytic_meshes.hpp"
 #include "geometry/builtin_models.hpp"
 #include "geometry/chaining.hpp"
+#include "geometry/feature_size.hpp"
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {
@@ -111,6 +112,67 @@ TEST(SuggestiveContours, WaveLinesLieOnTheQualifyingInflectionsOnly) {
         const std::vector<int> expected = parity == 0 ? std::vector<int>{-2, 0, 2} : std::vector<int>{-1, 1};
         for (const int n : expected) EXPECT_GT(length[n], 0.75) << "inflection " << n << " beta " << beta_deg;
     }
+}
+
+// The gently curved height field z = 0.2 sin(3x), x in [−π, π], y in [−1, 1], 400 × 100 cells,
+// seen from straight above: by the analysis above (β = 0, A k = 0.6) every inflection x = nπ/3
+// qualifies, where the normal leans 31° from the view, so D_w κr / (n·v) = A k³ tan 31° / (1 +
+// 0.36)² ≈ 1.75. With default parameters they are drawn: the automatic feature size is rtsc's
+// (|k2| = 0 makes the 10th percentile 0, so 5 % of the bounding sphere's radius, 0.165, and the
+// trim threshold 0.01 / 0.165² = 0.37), where 1 % of the bounding-box diagonal (0.07, threshold
+// 2.0) trimmed every one.
+TEST(SuggestiveContours, GentleHeightFieldHasThemWithDefaultParameters) {
+    const int nx = 400, ny = 100;
+    Mesh m;
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            const float x = -kPi + 2.0f * kPi * float(i) / float(nx), y = -1.0f + 2.0f * float(j) / float(ny);
+            m.positions.emplace_back(x, y, 0.2f * std::sin(3.0f * x));
+            m.normals.push_back(glm::normalize(glm::vec3(-0.6f * std::cos(3.0f * x), 0.0f, 1.0f)));
+        }
+    test::add_grid_triangles(m, nx, ny);
+    const Curvature curvature = compute_curvature(m, m.normals);
+    const float radius = bounding_sphere_radius(m);
+    EXPECT_NEAR(radius, std::sqrt(kPi * kPi + 1.0f + 0.04f), 0.05f);
+    EXPECT_FLOAT_EQ(line_feature_size(m, curvature), 0.05f * radius);
+
+    const Camera camera = ortho_camera({0.0f, 0.0f, 8.0f}, glm::vec3(0.0f), 7.0f);
+    std::map<int, double> length;  // per inflection, away from the border
+    for (const LineSegment& s : extract_suggestive_contours(m, m.normals, curvature, camera)) {
+        const glm::vec3 mid = 0.5f * (s.a + s.b);
+        if (std::abs(mid.x) > 2.9f || std::abs(mid.y) > 0.9f) continue;
+        const int n = int(std::lround(3.0f * mid.x / kPi));
+        for (const glm::vec3& p : {s.a, s.b})
+            EXPECT_LT(std::abs(project(camera, p).x - project(camera, {float(n) * kPi / 3.0f, p.y, 0.0f}).x), 1.0f)
+                << "x " << p.x;
+        length[n] += glm::distance(s.a, s.b);
+    }
+    for (const int n : {-2, -1, 0, 1, 2}) EXPECT_GT(length[n], 1.6) << "inflection " << n;  // across |y| < 0.9
+
+    // The old automatic size, 1 % of the bounding-box diagonal, trims them all.
+    SuggestiveOptions old;
+    old.feature_size = 0.01f * m.bounds().diagonal();
+    EXPECT_TRUE(extract_suggestive_contours(m, m.normals, curvature, camera, old).empty());
+}
+
+TEST(FeatureSize, IsRtscsFromTheCurvature) {
+    // A sphere of radius 2: |k1| = |k2| = 1/2 everywhere, so 1 % of 2 = 0.02 (below the cap, 5 %
+    // of the radius); scaling the sphere scales it.
+    for (const float r : {2.0f, 0.5f}) {
+        Mesh m = builtin::sphere(64, 128, r);
+        const Curvature k = compute_curvature(m, m.normals);
+        EXPECT_NEAR(bounding_sphere_radius(m), r, 1e-3f * r);
+        EXPECT_NEAR(line_feature_size(m, k), 0.01f * r, 5e-4f * r) << r;
+    }
+    // A flat square: every curvature 0, so the cap, 5 % of its bounding sphere's radius.
+    Mesh flat;
+    for (int j = 0; j <= 10; ++j)
+        for (int i = 0; i <= 10; ++i) flat.positions.emplace_back(0.1f * float(i), 0.1f * float(j), 0.0f);
+    flat.normals.assign(flat.positions.size(), glm::vec3(0, 0, 1));
+    test::add_grid_triangles(flat, 10, 10);
+    EXPECT_NEAR(line_feature_size(flat, compute_curvature(flat, flat.normals)), 0.05f * std::sqrt(0.5f), 1e-4f);
+    // Nothing to measure: 1.
+    EXPECT_EQ(line_feature_size(Mesh{}, Curvature{}), 1.0f);
 }
 
 TEST(SuggestiveContours, WaveLinesChainIntoOnePolylinePerInflection) {

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "geometry/feature_size.hpp"
 #include "geometry/intersection_lines.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/visibility.hpp"
@@ -101,8 +102,16 @@ const EdgeAdjacency& MeshLineData::adjacency(TimingLog& log) {
 }
 
 const Curvature& MeshLineData::curvature(TimingLog& log) {
-    if (!curvature_) curvature_ = timed(log, "curvature", [&] { return compute_curvature(*mesh_, mesh_->normals); });
+    if (!curvature_) {
+        curvature_ = timed(log, "curvature", [&] { return compute_curvature(*mesh_, mesh_->normals); });
+        feature_size_ = line_feature_size(*mesh_, *curvature_);
+    }
     return *curvature_;
+}
+
+float MeshLineData::feature_size() {
+    curvature();
+    return feature_size_;
 }
 
 const CreaseLines& MeshLineData::creases(float angle_degrees, TimingLog& log) {
@@ -124,7 +133,9 @@ const RidgeLines& MeshLineData::ridges(const RidgeOptions& options) {
     if (!ridges_ || ridge_options_.threshold != options.threshold ||
         ridge_options_.feature_size != options.feature_size) {
         const Curvature& k = curvature();
-        ridges_ = timed(setup_timings_, "ridges", [&] { return extract_ridges(*mesh_, k, options); });
+        RidgeOptions given = options;
+        if (!(given.feature_size > 0.0f)) given.feature_size = feature_size_;
+        ridges_ = timed(setup_timings_, "ridges", [&] { return extract_ridges(*mesh_, k, given); });
         ridge_options_ = options;
     }
     return *ridges_;

@@ -57,6 +57,9 @@ public:
 
     const EdgeAdjacency& adjacency();
     const Curvature& curvature();  // Rusinkiewicz 2004, from normals()
+    // The automatic feature size of the curvature-based lines (rtsc's, feature_size.hpp), kept
+    // with the curvature.
+    float feature_size();
     // Crease classification at `angle_degrees` (the last angle asked for is kept).
     const CreaseLines& creases(float angle_degrees);
     // Border edges: from the cached crease classification whatever its angle (borders do
@@ -80,6 +83,7 @@ private:
     std::shared_ptr<const Mesh> mesh_;
     std::optional<EdgeAdjacency> adjacency_;
     std::optional<Curvature> curvature_;
+    float feature_size_ = 1.0f;  // with curvature_
     std::optional<CreaseLines> creases_;
     float crease_angle_ = 0.0f;
     std::optional<RidgeLines> ridges_;

@@ -9,9 +9,10 @@ namespace inkshade::geometry {
 namespace {
 
 std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+    const float size = line_number(settings, "feature-size");
     const SuggestiveOptions options{.threshold = line_number(settings, "threshold"),
                                     .fade = line_number(settings, "fade"),
-                                    .feature_size = line_number(settings, "feature-size")};
+                                    .feature_size = size > 0.0f ? size : data.feature_size()};
     return extract_suggestive_contours(data.mesh(), data.normals(), data.curvature(), camera, options);
 }
 
@@ -27,8 +28,9 @@ const ObjectLineRegistration registration{
                       "fade-in above the trim threshold, in the same units (rtsc's draw_faded constant 0.03); "
                       "0 = no fading"),
           float_param("feature-size", 0.0f, 0.0f, 1e9f,
-                      "world length making threshold and fade dimensionless; 0 = 1% of the bounding-box "
-                      "diagonal (about rtsc's median edge length on its scans)")},
+                      "world length making threshold and fade dimensionless; 0 = automatic, as rtsc: 1% of "
+                      "the reciprocal of the 10th percentile of |k1|, |k2|, at most 5% of the bounding "
+                      "sphere's radius")},
          4.0f)},
     extract,
     {.curvature = true}};

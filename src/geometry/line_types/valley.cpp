@@ -20,8 +20,8 @@ const ObjectLineRegistration registration{
          {float_param("threshold", 0.1f, 0.0f, 100.0f,
                       "keep points where −k2 > threshold / feature-size (dimensionless; rtsc's rv_thresh default 0.1)"),
           float_param("feature-size", 0.0f, 0.0f, 1e9f,
-                      "world length making threshold dimensionless; 0 = 1% of the bounding-box diagonal, as for "
-                      "suggestive contours")},
+                      "world length making threshold dimensionless; 0 = automatic from the curvature (rtsc's "
+                      "estimator, as for suggestive contours)")},
          2.0f)},
     extract,
     {.curvature = true}};
