@@ -19,6 +19,20 @@ inline void add_grid_triangles(Mesh& m, int nx, int ny) {
         }
 }
 
+// A fan of five unequal triangles around a raised centre (vertex 0): weighting by area and by
+// angle give clearly different normals at the centre.
+inline Mesh uneven_fan() {
+    Mesh m;
+    m.positions = {{0, 0, 0.6f}};
+    const float degrees[] = {0, 40, 80, 200, 300}, radii[] = {1.0f, 0.5f, 1.5f, 1.0f, 0.8f};
+    for (int i = 0; i < 5; ++i) {
+        const float a = degrees[i] * std::numbers::pi_v<float> / 180.0f;
+        m.positions.push_back(radii[i] * glm::vec3(std::cos(a), std::sin(a), 0.0f));
+    }
+    for (uint32_t i = 0; i < 5; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % 5});
+    return m;
+}
+
 // z = A cos(k x) over [−1.2, 1.2] × [−0.5, 0.5] moved by `shift` along x, k = 2π, A k = 1,
 // analytic normals: crests (ridges, k1 = A k² = 2π) at integer x, troughs (valleys, k2 = −2π)
 // at half-integers.

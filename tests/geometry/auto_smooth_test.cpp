@@ -64,14 +64,7 @@ TEST(AutoSmooth, CylinderSideStaysSmoothAndCapsFlat) {
 // raised centre, plus a flap on the edge (0, 1) that makes it hard; the five faces stay one fan
 // (joined the other way round), whose normal is their sum of cross products, normalised.
 TEST(AutoSmooth, AreaWeightedFansSumTheirFacesCrossProducts) {
-    Mesh m;
-    m.positions = {{0, 0, 0.6f}};
-    const float degrees[] = {0, 40, 80, 200, 300}, radii[] = {1.0f, 0.5f, 1.5f, 1.0f, 0.8f};
-    for (int i = 0; i < 5; ++i) {
-        const float a = glm::radians(degrees[i]);
-        m.positions.push_back(radii[i] * glm::vec3(std::cos(a), std::sin(a), 0.0f));
-    }
-    for (uint32_t i = 0; i < 5; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % 5});
+    Mesh m = test::uneven_fan();
     glm::vec3 sum(0.0f), angle_sum(0.0f);
     for (const glm::uvec3& t : m.triangles) {
         const glm::vec3 a = m.positions[t.x], b = m.positions[t.y], c = m.positions[t.z];

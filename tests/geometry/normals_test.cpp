@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "analytic_meshes.hpp"
+
 namespace inkshade::geometry {
 namespace {
 
@@ -55,19 +57,7 @@ TEST(Normals, CubeCornerAngleWeightedNormalIsDiagonal) {
     for (size_t v = 0; v < 8; ++v) expect_near(vn[v], glm::normalize(m.positions[v] - glm::vec3(0.5f)));
 }
 
-// A fan of five unequal triangles around a raised centre: weighting by area and by angle give
-// clearly different normals at the centre.
-Mesh uneven_fan() {
-    Mesh m;
-    m.positions = {{0, 0, 0.6f}};
-    const float degrees[] = {0, 40, 80, 200, 300}, radii[] = {1.0f, 0.5f, 1.5f, 1.0f, 0.8f};
-    for (int i = 0; i < 5; ++i) {
-        const float a = glm::radians(degrees[i]);
-        m.positions.push_back(radii[i] * glm::vec3(std::cos(a), std::sin(a), 0.0f));
-    }
-    for (uint32_t i = 0; i < 5; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % 5});
-    return m;
-}
+using test::uneven_fan;
 
 // three.js r187 BufferGeometry.computeVertexNormals on an indexed geometry: per face
 // cb = (C - B) x (A - B) added to its three vertices, then each normalised.
