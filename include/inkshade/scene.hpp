@@ -186,5 +186,8 @@ glm::vec4 parse_color(const std::string& option, const std::string& text);      
 LightType parse_light_type(const std::string& option, const std::string& text);      // directional|point
 LightSource parse_light_source(const std::string& option, const std::string& text);  // style|file
 UpAxis parse_up_axis(const std::string& option, const std::string& text);            // x|y|z|-x|-y|-z
+AovSet parse_aov_list(const std::string& option, const std::string& text);           // depth,normal,... (',' or ';')
+// The AOV names (any case), each once; InputError naming `option`, with the closest name.
+AovSet aov_set(const std::string& option, const std::vector<std::string>& names);
 
 }  // namespace inkshade
