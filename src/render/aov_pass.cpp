@@ -92,13 +92,13 @@ public:
         if (want.contains(Aov::Depth) || want.contains(Aov::Normal) || want.contains(Aov::Id) ||
             want.contains(Aov::Material)) {
             glBindFramebuffer(GL_FRAMEBUFFER, targets_->surface.id());
+            const gpu::DepthScope depth(GL_LESS);  // before the clear: it writes depth only with the mask on
             const GLfloat zero[4] = {0, 0, 0, 0};
             const GLuint no_id[4] = {0, 0, 0, 0};
             const GLfloat far = 1.0f;
             glClearBufferfv(GL_COLOR, 0, zero);
             glClearBufferuiv(GL_COLOR, 1, no_id);
             glClearBufferfv(GL_DEPTH, 0, &far);
-            const gpu::DepthScope depth(GL_LESS);
             if (!surface_)
                 surface_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/aov.frag");
             gpu::ShaderProgram& p = *surface_;
