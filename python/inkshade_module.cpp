@@ -135,6 +135,30 @@ py::array to_array(Image&& image) {
     return py::array_t<uint8_t>({owned->height, owned->width, 4}, owned->rgba.data(), free_image);
 }
 
+// A vector as an array of `shape` that owns it: no copy of the pixels.
+template <class T>
+py::array owning_array(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+    auto* owned = new std::vector<T>(std::move(values));
+    py::capsule free_values(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    return py::array_t<T>(std::move(shape), owned->data(), free_values);
+}
+
+// render(aov=[...]): {"image": ..., "depth": float32 (h, w), "normal": float32 (h, w, 3), "id" and
+// "material": uint32 (h, w), "mask" and "lines-TYPE": uint8 (h, w), "camera": the camera file's dict}.
+py::dict aov_dict(Image&& image, AovImages&& aovs, AovSet set, const CameraRecord& camera) {
+    const py::ssize_t h = aovs.height, w = aovs.width;
+    py::dict out;
+    out["image"] = to_array(std::move(image));
+    if (set.contains(Aov::Depth)) out["depth"] = owning_array(std::move(aovs.depth), {h, w});
+    if (set.contains(Aov::Normal)) out["normal"] = owning_array(std::move(aovs.normal), {h, w, 3});
+    if (set.contains(Aov::Id)) out["id"] = owning_array(std::move(aovs.id), {h, w});
+    if (set.contains(Aov::Material)) out["material"] = owning_array(std::move(aovs.material), {h, w});
+    if (set.contains(Aov::Mask)) out["mask"] = owning_array(std::move(aovs.mask), {h, w});
+    for (LineMask& m : aovs.lines) out[py::str("lines-" + m.type)] = owning_array(std::move(m.pixels), {h, w});
+    out["camera"] = py::module_::import("json").attr("loads")(format_camera_json(camera));
+    return out;
+}
+
 py::list to_python(const LineDrawing& drawing) {
     py::list out;
     auto add = [&](const LineLayer& layer, const LinePath& path, bool hidden) {
@@ -169,17 +193,20 @@ public:
         renderer_.set_mesh(mesh_);
         extractor_ = std::make_unique<LineExtractor>(mesh_);
     }
-    py::array render(Scene scene) {
+    py::object render(Scene scene) {
         need_mesh();
         place(scene);
         const Camera camera = scene.frame(mesh_);
         const Light light = scene.light(mesh_.bounds(), camera);
         Image image;
+        AovImages aovs;
         {
             py::gil_scoped_release release;
-            image = render_scene(renderer_, scene, camera, light);
+            image = scene.aovs.empty() ? render_scene(renderer_, scene, camera, light)
+                                       : render_scene(renderer_, scene, camera, light, aovs);
         }
-        return to_array(std::move(image));
+        if (scene.aovs.empty()) return to_array(std::move(image));
+        return aov_dict(std::move(image), std::move(aovs), scene.aovs, camera_record(scene, camera, mesh_.bounds()));
     }
     LineDrawing lines(Scene scene) {
         need_mesh();
@@ -295,7 +322,8 @@ PYBIND11_MODULE(inkshade, m) {
         [](const std::string& output_dir, std::optional<std::string> manifest, std::optional<std::string> models,
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
-           int samples, const std::string& lights, float margin, std::optional<py::function> progress) {
+           int samples, const std::string& lights, float margin, const std::vector<std::string>& aov,
+           std::optional<py::function> progress) {
         BatchDefaults defaults;
         defaults.views = views;
         defaults.lights = parse_light_source("lights", lights);
@@ -309,6 +337,7 @@ PYBIND11_MODULE(inkshade, m) {
         shared.camera.margin = margin;
         make_scene(shared);
         defaults.margin = margin;
+        defaults.aovs = aov_set("aov", aov);
         defaults.outputs = {};
         defaults.outputs.png = false;
         for (const auto& f : formats) {
@@ -353,7 +382,7 @@ PYBIND11_MODULE(inkshade, m) {
         py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
         py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
         py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("lights") = "style",
-        py::arg("margin") = 0.05f, py::arg("progress") = py::none(),
+        py::arg("margin") = 0.05f, py::arg("aov") = std::vector<std::string>{}, py::arg("progress") = py::none(),
         "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}.");
 
     py::class_<PyRenderer>(m, "Renderer", "A headless OpenGL 4.5 renderer (EGL) holding one mesh.")
@@ -363,18 +392,22 @@ PYBIND11_MODULE(inkshade, m) {
         .def(
             "render",
             [](PyRenderer& r, const std::string& style, const std::vector<std::string>& set, int samples,
-               const py::object& background, const std::vector<std::string>& lines, const py::kwargs& kwargs) {
+               const py::object& background, const std::vector<std::string>& lines,
+               const std::vector<std::string>& aov, const py::kwargs& kwargs) {
         SceneRequest request = request_of(style, set, kwargs, {.image = true, .line_drawing = false});
         request.samples = samples;
         request.added_lines = lines;
+        request.aovs = aov;
         if (!background.is_none()) request.background = to_color("background", background, true);
         return r.render(make_scene(request));
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
+            py::arg("aov") = std::vector<std::string>{},
             "RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
             "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
-            "--lines`.")
+            "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, camera) a dict instead: "
+            "'image', one array per AOV ('lines-TYPE' per line type) and 'camera' (docs/aov.md).")
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,

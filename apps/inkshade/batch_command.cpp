@@ -36,6 +36,7 @@ struct BatchArgs {
     std::optional<float> smooth_angle;
     std::optional<float> light_intensity;
     std::string lights = "style";
+    std::string aov;
     float margin = 0.05f;
     int samples = 4;
     std::string shard;
@@ -115,6 +116,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.light_intensity = a.light_intensity;
     d.lights = parse_light_source("--lights", a.lights);
     d.margin = a.margin;
+    d.aovs = parse_aov_list("--aov", a.aov);
     return d;
 }
 
@@ -233,6 +235,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--light-intensity", args->light_intensity,
                     "light intensity (E = light colour x intensity, as render --light-intensity) where the "
                     "manifest gives none");
+    cmd->add_option("--aov", args->aov,
+                    "AOVs beside each image where the manifest gives none: depth, normal, id, material, mask, lines, "
+                    "camera (docs/aov.md)");
     cmd->add_option("--samples", args->samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");

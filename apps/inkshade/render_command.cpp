@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "image_output.hpp"
+#include "inkshade/aov.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/scene.hpp"
@@ -21,6 +22,12 @@ namespace inkshade::cli {
 
 namespace {
 
+std::vector<std::string> line_types_of(const Scene& scene) {
+    std::vector<std::string> types;
+    for (const LineSettings& l : scene.style.lines) types.push_back(l.type);
+    return types;
+}
+
 struct RenderArgs {
     SceneOptions scene;
     std::string output;
@@ -29,6 +36,7 @@ struct RenderArgs {
     ImageOutputOptions image;  // --quality, --bit-depth
     std::string scene_file;    // --scene
     std::string lines;         // --lines a,b: line types added to the style
+    std::string aov;           // --aov depth,normal,...: files beside the image (docs/aov.md)
 };
 
 int run_render(RenderArgs& args, const CLI::App& cmd) {
@@ -39,6 +47,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     SceneRequest request = args.scene.to_request(cmd, args.scene_file);
     request.added_lines = split_names(args.lines).value_or(std::vector<std::string>{});
     request.bit_depth = output.bit_depth;
+    request.aovs = split_names(args.aov).value_or(std::vector<std::string>{});
     Scene scene = make_scene(request);
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     check_background(output, scene.options.background);
@@ -57,8 +66,12 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     Renderer renderer;
     // The renderer keeps what lines need (no second copy). One image: object-space lines are
     // extracted before the GL upload and their data freed first (MeshUse::OneFrame).
-    renderer.set_mesh(std::move(mesh), args.timing > 0 ? MeshUse::ManyFrames : MeshUse::OneFrame);
-    Image image = render_scene(renderer, scene, camera, light);
+    // Line masks render a frame a line type: the line data is kept for them (ManyFrames).
+    const bool many_frames = args.timing > 0 || scene.aovs.contains(Aov::Lines);
+    renderer.set_mesh(std::move(mesh), many_frames ? MeshUse::ManyFrames : MeshUse::OneFrame);
+    AovImages aovs;
+    Image image = scene.aovs.empty() ? render_scene(renderer, scene, camera, light)
+                                     : render_scene(renderer, scene, camera, light, aovs);
     if (args.timing > 0) {
         // Wall time (each pass finished before and after) and GPU time (timestamp queries). On a
         // GPU the second leaves out the driver's CPU work; llvmpipe stamps some passes before
@@ -91,12 +104,14 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
         std::printf("  load %.0f ms, peak RSS %.0f MiB\n", load_ms, peak_rss_mib());
     }
     write_image(output, image);
-    if (args.save_style.empty()) return 0;
-    try {  // both files or neither
-        save_style(args.save_style, scene.style);
+    try {  // every file or none: the image and the AOVs beside it are removed when a later file fails
+        if (!scene.aovs.empty()) write_aov_files(args.output, scene.aovs, aovs, camera_record(scene, camera, box));
+        if (!args.save_style.empty()) save_style(args.save_style, scene.style);
     } catch (...) {
         std::error_code ec;
         std::filesystem::remove(args.output, ec);
+        for (const std::string& name : aov_file_names(args.output, scene.aovs, line_types_of(scene)))
+            std::filesystem::remove(std::filesystem::path(args.output).parent_path() / name, ec);
         throw;
     }
     return 0;
@@ -117,6 +132,9 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("--lines", args->lines,
                     "line types added to the style, comma-separated: raster (hull, rim-contour, edges, ...) or "
                     "object-space (contour, suggestive, crease, ...); --set TYPE.param=value then reaches them");
+    cmd->add_option("--aov", args->aov,
+                    "also write AOVs beside the image, comma-separated: depth (OUT.depth.exr), normal, id, material, "
+                    "mask, lines (one mask per line type), camera (OUT.camera.json, written with any); docs/aov.md");
     cmd->add_option("--save-style", args->save_style,
                     "also write the style used (with every --set applied) to a .toml file");
     cmd->add_option("--scene", args->scene_file,

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "inkshade/aov.hpp"
 #include "inkshade/camera.hpp"
 
 namespace inkshade {
@@ -38,6 +39,7 @@ struct BatchJob {
     std::optional<float> smooth_angle;        // SceneRequest::smooth_angle; unset: the style's, else 30
     LightSource lights = LightSource::Style;  // File: the model file's light (SceneRequest::lights)
     std::optional<float> light_intensity;     // SceneRequest::light_intensity; unset: the style's
+    AovSet aovs;                              // AOV files beside STEM.png (docs/aov.md)
 };
 
 // What a manifest line (or --models) leaves out.
@@ -53,6 +55,7 @@ struct BatchDefaults {
     LightSource lights = LightSource::Style;
     float margin = 0.05f;  // auto-framing's margin (CameraOptions::margin)
     std::optional<float> light_intensity;  // SceneRequest::light_intensity
+    AovSet aovs;                           // --aov
 };
 
 // A view list: items separated by ',' or ';' —
@@ -78,7 +81,7 @@ std::string model_name(const std::string& model);
 // of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
 // Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
 // name, views (or view), styles (or style), size, format, fov, ortho, up-axis, smooth-angle,
-// lights, light-intensity, margin, output;
+// lights, light-intensity, margin, aov, output;
 // docs/cli.md#batch.
 // Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
 // Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "inkshade/aov.hpp"
 #include "inkshade/camera.hpp"
 #include "inkshade/image.hpp"
 #include "inkshade/lines.hpp"
@@ -26,6 +27,10 @@ struct RenderOptions {
     // Bits a channel of the colour targets and the image: 8 (RGBA8), or 16 (RGBA16 targets, the
     // image's rgba16 filled beside its rgba) for smooth gradients without banding.
     int bit_depth = 8;
+    // The AOVs the renderer draws beside the image (depth, normal, id, material, mask; the
+    // others are the scene's: render_scene_aovs), returned by the render overload that takes
+    // AovImages. One sample a pixel but the mask, whose samples are averaged.
+    AovSet aovs;
 };
 
 struct PassTiming {
@@ -79,6 +84,12 @@ public:
     // readback.
     Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                  const std::vector<LineSettings>& lines, const RenderOptions& options,
+                 std::vector<PassTiming>* timings = nullptr);
+
+    // The same, and the AOVs options.aovs asks for (their gpu() part) into `aovs`, from the same
+    // frame: the same camera and surface as the image.
+    Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                 const std::vector<LineSettings>& lines, const RenderOptions& options, AovImages& aovs,
                  std::vector<PassTiming>* timings = nullptr);
 
     // The line drawing alone over options.background, drawn by the pass that strokes render()'s

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "inkshade/aov.hpp"
 #include "inkshade/camera.hpp"
 #include "inkshade/image.hpp"
 #include "inkshade/io.hpp"
@@ -83,6 +84,9 @@ struct SceneRequest {
     // unset: the style's, else 30.
     std::optional<float> smooth_angle;
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
+    // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
+    // case), for render_scene's AovImages overload and write_aov_files.
+    std::vector<std::string> aovs;
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;
@@ -107,6 +111,7 @@ struct Scene {
     bool size_from_camera = false;
     LightSource lights = LightSource::Style;
     std::optional<FileLight> file_light;  // the file's light in use (apply_file_scene)
+    AovSet aovs;                          // the request's; options.aovs holds the renderer's part
 
     // Takes what the request asks of the loaded model file: its camera becomes the camera
     // options (placement, projection, near and far; the image's aspect with size_from_camera)
@@ -159,6 +164,16 @@ const std::vector<std::string>& default_vector_lines();
 Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
                    std::vector<PassTiming>* timings = nullptr);
 
+// The same image, and the AOVs scene.aovs asks for into `aovs`: depth, normal, ids and mask
+// from the image's frame; each line mask from one more frame, drawing only that line type in
+// white over a black surface and background (so it is the line's antialiased coverage). Line
+// masks with object-space types want MeshUse::ManyFrames (each frame extracts them again).
+Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
+                   AovImages& aovs, std::vector<PassTiming>* timings = nullptr);
+
+// What the camera file of a scene's image records (write_aov_files).
+CameraRecord camera_record(const Scene& scene, const Camera& camera, const BoundingBox& bounds);
+
 // The scene's line drawing of the extractor's mesh.
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
                              std::vector<LineTiming>* timings = nullptr);
@@ -171,5 +186,8 @@ glm::vec4 parse_color(const std::string& option, const std::string& text);      
 LightType parse_light_type(const std::string& option, const std::string& text);      // directional|point
 LightSource parse_light_source(const std::string& option, const std::string& text);  // style|file
 UpAxis parse_up_axis(const std::string& option, const std::string& text);            // x|y|z|-x|-y|-z
+AovSet parse_aov_list(const std::string& option, const std::string& text);           // depth,normal,... (',' or ';')
+// The AOV names (any case), each once; InputError naming `option`, with the closest name.
+AovSet aov_set(const std::string& option, const std::vector<std::string>& names);
 
 }  // namespace inkshade

@@ -54,7 +54,10 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     text += "\n";
     text += "size=" + std::to_string(job.width) + "x" + std::to_string(job.height) +
             " samples=" + std::to_string(samples) + " png=" + (job.outputs.png ? "1" : "0") +
-            " svg=" + (job.outputs.svg ? "1" : "0") + "\n";
+            " svg=" + (job.outputs.svg ? "1" : "0");
+    // Only jobs with AOVs add to the text, so earlier jobs keep their hashes.
+    if (!job.aovs.empty()) text += " aov=" + format_aov_set(job.aovs);
+    text += "\n";
     text += "style=" + job.style + "\n";
     text += style_text;
     char hex[17];

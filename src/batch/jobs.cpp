@@ -95,6 +95,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.light_intensity = d.light_intensity;
     g.lights = d.lights;
     g.margin = d.margin;
+    g.aovs = d.aovs;
     return g;
 }
 
@@ -138,6 +139,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.source = group.source;
             job.smooth_angle = group.smooth_angle;
             job.light_intensity = group.light_intensity;
+            job.aovs = group.aovs;
             out.push_back(std::move(job));
         }
     }

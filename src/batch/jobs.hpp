@@ -26,6 +26,7 @@ struct JobGroup {
     std::optional<float> light_intensity;  // SceneRequest::light_intensity
     LightSource lights = LightSource::Style;
     float margin = 0.05f;  // CameraOptions::margin
+    AovSet aovs;
     std::string source;
 };
 

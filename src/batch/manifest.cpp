@@ -25,10 +25,10 @@ using batch::JobGroup;
 
 const std::set<std::string> kColumns = {"model",   "name",         "views",  "view",   "styles",          "style",
                                         "size",    "format",       "fov",    "ortho",  "up-axis",         "smooth-angle",
-                                        "lights",  "light-intensity", "margin", "output"};
+                                        "lights",  "light-intensity", "margin", "aov", "output"};
 const char* kColumnList =
     "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, light-intensity, margin, "
-    "output";
+    "aov, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -91,6 +91,8 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.smooth_angle = float(v);
     } else if (key == "lights") {
         g.lights = parse_light_source("lights", value);
+    } else if (key == "aov") {
+        g.aovs = parse_aov_list("aov", value);
     } else if (key == "light-intensity") {
         double v = 0;
         auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
@@ -206,7 +208,8 @@ std::string json_text(const std::string& key, const nlohmann::json& v) {
             throw InputError("size: expected \"WxH\" or [W, H]");
         return std::to_string(v[0].get<long long>()) + "x" + std::to_string(v[1].get<long long>());
     }
-    if (v.is_array() && (key == "views" || key == "view" || key == "styles" || key == "style" || key == "format")) {
+    if (v.is_array() &&
+        (key == "views" || key == "view" || key == "styles" || key == "style" || key == "format" || key == "aov")) {
         std::string joined;
         for (const auto& item : v) {
             if (!item.is_string()) throw InputError(key + ": expected a list of strings");

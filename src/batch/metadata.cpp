@@ -119,6 +119,10 @@ std::string format_metadata(const JobRecord& r) {
         outputs["svg"] = file + ".svg";
         j["svg_lines"] = r.svg_lines;
     }
+    if (!job.aovs.empty()) {
+        outputs["aov"] = r.aov_files;
+        j["aov"] = format_aov_set(job.aovs);
+    }
     j["outputs"] = outputs;
     j["renderer"] = r.gl_renderer.empty() ? Json(nullptr) : Json(r.gl_renderer);
     Json timings = Json::object();
@@ -141,7 +145,16 @@ bool job_complete(const std::string& output_dir, const BatchJob& job, const std:
     const Json j = Json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
     if (!j.is_object()) return false;  // unreadable metadata: render the job again
     const auto it = j.find("job_hash");
-    return it != j.end() && it->is_string() && it->get<std::string>() == hash;
+    if (it == j.end() || !it->is_string() || it->get<std::string>() != hash) return false;
+    if (job.aovs.empty()) return true;
+    const Json* aov = j.contains("outputs") && j["outputs"].is_object() && j["outputs"].contains("aov")
+                          ? &j["outputs"]["aov"]
+                          : nullptr;
+    if (!aov || !aov->is_array()) return false;
+    const std::filesystem::path dir = std::filesystem::path(job_file(output_dir, job, "")).parent_path();
+    for (const Json& name : *aov)
+        if (!name.is_string() || !std::filesystem::is_regular_file(dir / name.get<std::string>(), ec)) return false;
+    return true;
 }
 
 }  // namespace inkshade::batch

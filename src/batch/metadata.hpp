@@ -22,6 +22,7 @@ struct JobRecord {
     std::vector<std::string> svg_lines;                      // object-space types in the SVG
     std::string gl_renderer;                                 // empty when no PNG was rendered
     std::vector<std::pair<std::string, double>> timings_ms;  // "load", "render", "svg", "write"
+    std::vector<std::string> aov_files;                      // write_aov_files's names
 };
 
 // STEM.json text (docs/cli.md#batch lists the fields), keys in a fixed order.
@@ -30,7 +31,8 @@ std::string format_metadata(const JobRecord& record);
 // OUTPUT_DIR/STEM + extension (".png", ".svg", ".json").
 std::string job_file(const std::string& output_dir, const BatchJob& job, const char* extension);
 
-// True when STEM.json exists and holds `hash`, and each output the job asks for exists.
+// True when STEM.json exists and holds `hash`, and each output the job asks for exists (the AOV
+// files as its outputs.aov lists them).
 bool job_complete(const std::string& output_dir, const BatchJob& job, const std::string& hash);
 
 }  // namespace inkshade::batch

@@ -93,7 +93,7 @@ struct ModelGroup {
     std::vector<size_t> jobs;     // indices into the ordered job list
     std::vector<size_t> pending;  // those to render
     bool svg = false;             // a pending job writes SVG
-    bool png = false;             // a pending job writes PNG
+    bool png = false;             // a pending job writes PNG or AOVs (needs the renderer)
 };
 
 class BatchRun {
@@ -174,7 +174,7 @@ private:
             if (complete_[i]) continue;
             group.pending.push_back(i);
             group.svg |= job.outputs.svg;
-            group.png |= job.outputs.png;
+            group.png |= job.outputs.png || !job.aovs.empty();
             ++to_render_;
         }
     }
@@ -272,6 +272,8 @@ private:
         Image image;          // when the job writes PNG
         LineDrawing drawing;  // when it writes SVG
         glm::vec4 background{1.0f};
+        AovImages aovs;  // when it writes AOVs
+        CameraRecord camera;
     };
 
     JobFiles render_job(size_t i, const ModelGroup& group, LoadedModel& model, const BoundingBox& bounds) {
@@ -287,6 +289,8 @@ private:
         request.lights = job.lights;
         request.light_intensity = job.light_intensity;
         request.samples = options_.samples;
+        for (size_t a = 0; a < aov_names().size(); ++a)
+            if (job.aovs.contains(Aov(a))) request.aovs.push_back(aov_names()[a]);
         request.outputs = {.image = true, .line_drawing = true};
         Scene scene = make_scene(request);
         scene.apply_file_scene(*model.mesh);  // a bad camera fails the job; its warnings are not kept
@@ -305,9 +309,15 @@ private:
         for (const LineSettings& l : scene.vector_lines) record.svg_lines.push_back(l.type);
         record.timings_ms.emplace_back("load", model.milliseconds);
         files.background = scene.style.background;
-        if (job.outputs.png) {
+        if (job.outputs.png || !job.aovs.empty()) {
             const auto start = Clock::now();
-            files.image = render_scene(*renderer_, scene, camera, scene.light(bounds, camera));
+            const Light light = scene.light(bounds, camera);
+            if (job.aovs.empty()) {
+                files.image = render_scene(*renderer_, scene, camera, light);
+            } else {
+                files.image = render_scene(*renderer_, scene, camera, light, files.aovs);
+                files.camera = camera_record(scene, camera, bounds);
+            }
             record.timings_ms.emplace_back("render", ms_since(start));
             record.gl_renderer = gl_renderer_;
         }
@@ -325,6 +335,9 @@ private:
         std::filesystem::create_directories(
             std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
         if (job.outputs.png) write_png(batch::job_file(options_.output_dir, job, ".png"), files.image);
+        if (!job.aovs.empty())
+            files.record.aov_files =
+                write_aov_files(batch::job_file(options_.output_dir, job, ".png"), job.aovs, files.aovs, files.camera);
         if (job.outputs.svg)
             write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
         files.record.timings_ms.emplace_back("write", ms_since(start));

@@ -16,6 +16,7 @@
 #include "inkshade/error.hpp"
 #include "inkshade/image.hpp"
 #include "io/atomic_file.hpp"
+#include "io/png_samples.hpp"
 #include "io/text_scanner.hpp"
 
 namespace inkshade {
@@ -63,9 +64,10 @@ void png_ignore_warning(png_structp, png_const_charp) {}
 
 // The encoding proper. libpng's errors longjmp back to the setjmp here, so no object with a
 // destructor lives in between; false on error (the message is in the sink).
-bool encode_png(png_structp png, png_infop info, int width, int height, int bit_depth, png_bytepp rows) {
+bool encode_png(png_structp png, png_infop info, int width, int height, int bit_depth, int color_type,
+                png_bytepp rows) {
     if (setjmp(png_jmpbuf(png))) return false;
-    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), bit_depth, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), bit_depth, color_type, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     png_write_image(png, rows);
@@ -73,27 +75,13 @@ bool encode_png(png_structp png, png_infop info, int width, int height, int bit_
     return true;
 }
 
-}  // namespace
-
-void write_png(const std::string& path, const Image& image, int bit_depth) {
-    check_image(path, image);
-    if (bit_depth != 8 && bit_depth != 16)
-        throw RuntimeError(path + ": PNG bit depth must be 8 or 16, got " + std::to_string(bit_depth));
-    if (bit_depth == 16 && image.rgba16.size() != image.rgba.size())
-        throw RuntimeError(path + ": a 16-bit PNG needs the image's 16-bit pixels (render with 16 bits)");
-    // PNG stores 16-bit samples most significant byte first, whatever the machine's order.
-    std::vector<uint8_t> big_endian;
-    if (bit_depth == 16) {
-        big_endian.resize(image.rgba16.size() * 2);
-        for (size_t i = 0; i < image.rgba16.size(); ++i) {
-            big_endian[2 * i] = uint8_t(image.rgba16[i] >> 8);
-            big_endian[2 * i + 1] = uint8_t(image.rgba16[i] & 0xff);
-        }
-    }
-    // libpng takes non-const row pointers but only reads them when writing.
-    uint8_t* pixels = bit_depth == 16 ? big_endian.data() : const_cast<uint8_t*>(image.rgba.data());
-    const size_t row_bytes = size_t(image.width) * 4 * size_t(bit_depth / 8);
-    std::vector<png_bytep> rows(size_t(image.height));
+// Encodes rows of `channels` samples a pixel (1 gray, 3 RGB, 4 RGBA) and writes them atomically.
+void write_png_rows(const std::string& path, int width, int height, int channels, int bit_depth, uint8_t* pixels) {
+    const int color_type = channels == 1   ? PNG_COLOR_TYPE_GRAY
+                           : channels == 3 ? PNG_COLOR_TYPE_RGB
+                                           : PNG_COLOR_TYPE_RGBA;
+    const size_t row_bytes = size_t(width) * size_t(channels) * size_t(bit_depth / 8);
+    std::vector<png_bytep> rows(static_cast<size_t>(height));
     for (size_t y = 0; y < rows.size(); ++y) rows[y] = pixels + y * row_bytes;
 
     PngSink sink;
@@ -104,11 +92,50 @@ void write_png(const std::string& path, const Image& image, int bit_depth) {
         throw RuntimeError(path + ": PNG encoding failed (out of memory)");
     }
     png_set_write_fn(png, &sink, png_append, nullptr);
-    const bool encoded = encode_png(png, info, image.width, image.height, bit_depth, rows.data());
+    const bool encoded = encode_png(png, info, width, height, bit_depth, color_type, rows.data());
     png_destroy_write_struct(&png, &info);
     if (!encoded) throw RuntimeError(path + ": PNG encoding failed (" + sink.error + ")");
     io::write_file_atomic(path, sink.bytes);
 }
+
+// PNG stores 16-bit samples most significant byte first, whatever the machine's order.
+std::vector<uint8_t> big_endian(const uint16_t* samples, size_t count) {
+    std::vector<uint8_t> out(count * 2);
+    for (size_t i = 0; i < count; ++i) {
+        out[2 * i] = uint8_t(samples[i] >> 8);
+        out[2 * i + 1] = uint8_t(samples[i] & 0xff);
+    }
+    return out;
+}
+
+}  // namespace
+
+void write_png(const std::string& path, const Image& image, int bit_depth) {
+    check_image(path, image);
+    if (bit_depth != 8 && bit_depth != 16)
+        throw RuntimeError(path + ": PNG bit depth must be 8 or 16, got " + std::to_string(bit_depth));
+    if (bit_depth == 16 && image.rgba16.size() != image.rgba.size())
+        throw RuntimeError(path + ": a 16-bit PNG needs the image's 16-bit pixels (render with 16 bits)");
+    if (bit_depth == 16) {
+        std::vector<uint8_t> bytes = big_endian(image.rgba16.data(), image.rgba16.size());
+        return write_png_rows(path, image.width, image.height, 4, 16, bytes.data());
+    }
+    // libpng takes non-const row pointers but only reads them when writing.
+    write_png_rows(path, image.width, image.height, 4, 8, const_cast<uint8_t*>(image.rgba.data()));
+}
+
+namespace io {
+
+void write_png_samples(const std::string& path, int width, int height, int channels, const uint8_t* samples) {
+    write_png_rows(path, width, height, channels, 8, const_cast<uint8_t*>(samples));
+}
+
+void write_png_samples(const std::string& path, int width, int height, int channels, const uint16_t* samples) {
+    std::vector<uint8_t> bytes = big_endian(samples, size_t(width) * size_t(height) * size_t(channels));
+    write_png_rows(path, width, height, channels, 16, bytes.data());
+}
+
+}  // namespace io
 
 void write_jpeg(const std::string& path, const Image& image, int quality) {
     check_image(path, image);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "inkshade/aov.hpp"
 #include "inkshade/camera.hpp"
 #include "inkshade/image.hpp"
 #include "inkshade/line_drawing.hpp"
@@ -39,6 +40,7 @@ struct Frame {
     std::optional<LineDrawing> drawing;               // LineDrawing
     std::optional<std::vector<float>> vertex_scalar;  // VertexScalar computed before the upload
     Image image;                                      // Image
+    AovImages* aovs = nullptr;                        // Aov: where options.aovs go (null: none asked)
 
     // The style's settings of line type `type` (the last when listed twice), or null.
     const LineSettings* line(const std::string& type) const;

@@ -98,7 +98,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     // materials), except for meshes with both vertex colours and several materials, where
     // the last face wins.
     {
-        const std::vector<uint32_t> face_ids = face_object_ids(mesh);
+        const std::vector<uint32_t> face_ids = face_object_ids(mesh, &object_parts_);
         std::vector<uint32_t> vertex_ids(stream_size, 0);
         for (size_t f = 0; f < faces.size(); ++f)
             for (int k = 0; k < 3; ++k)

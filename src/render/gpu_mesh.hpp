@@ -58,6 +58,9 @@ public:
     // mesh is textured, and `before` gets the range's material (null: none).
     void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
 
+    // The (part, material) ids of each object id (attribute 4) from 1: the id and material AOVs.
+    const std::vector<glm::uvec2>& object_parts() const { return object_parts_; }
+
     // Uploads one float per mesh vertex as attribute 6 (the `kr` debug view's per-view radial
     // curvature); stream vertices duplicated per material take their source vertex's value.
     void set_vertex_scalar(const std::vector<float>& per_mesh_vertex);
@@ -76,6 +79,7 @@ private:
     gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_, scalar_vbo_;
     gpu::GlVertexArray vao_;
     std::vector<uint32_t> source_;  // mesh vertex of each stream vertex (set_vertex_scalar)
+    std::vector<glm::uvec2> object_parts_;  // object_parts()
     GLsizei index_count_ = 0;
     std::vector<Range> ranges_;
     std::vector<Material> materials_;         // names, colours and MToon values; no pixels

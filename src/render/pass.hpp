@@ -34,6 +34,7 @@ enum class Resource : uint8_t {
     LineDrawing,         // object-space lines as image polylines
     ResolvedColor,       // the single-sample colour the image is read from
     Image,               // the returned image
+    Aov,                 // the AOV buffers (RenderOptions::aovs), returned beside the image
 };
 
 // A set of resources.
@@ -74,6 +75,7 @@ enum class Stage : uint8_t {
     Strokes,      // polylines drawn as strokes
     Resolve,      // Color to ResolvedColor
     Readback,     // ResolvedColor to Image
+    Aov,          // AOV buffers drawn and read back (their own targets)
 };
 
 // A pass's GL objects and caches, made on first use and kept by the renderer.

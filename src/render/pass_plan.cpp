@@ -21,8 +21,9 @@ PassPlan plan_passes(const Frame& frame, bool before_upload) {
         if (std::optional<PassIo> io = type->plan(frame))
             steps.push_back({{type, io->writes.contains(Resource::Color) ? PassTarget::Color : PassTarget::Own}, *io});
 
-    // Culling: walking back from the image, a pass stays when a pass after it reads what it writes.
-    Resources needed{Resource::Image};
+    // Culling: walking back from the image and the AOVs, a pass stays when a pass after it reads
+    // what it writes.
+    Resources needed{Resource::Image, Resource::Aov};
     std::vector<Step> kept;
     for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
         if (!it->io.writes.intersects(needed)) continue;

@@ -39,6 +39,9 @@ struct Renderer::Impl {
     void stage(std::shared_ptr<Mesh> m, MeshUse use);
     // GL buffers of cpu_mesh; its colours, uvs and materials are dropped afterwards.
     void upload();
+    Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                 const std::vector<LineSettings>& lines, const RenderOptions& options, AovImages* aovs,
+                 std::vector<PassTiming>* timings);
     // Runs `planned` in order, each timed when `timings` is given.
     void run(const std::vector<render::PlannedPass>& planned, render::Frame& frame, std::vector<PassTiming>* timings);
 };
@@ -132,6 +135,19 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
 Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                        const std::vector<LineSettings>& lines, const RenderOptions& options,
                        std::vector<PassTiming>* timings) {
+    return impl_->render(camera, light, shading, lines, options, nullptr, timings);
+}
+
+Image Renderer::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                       const std::vector<LineSettings>& lines, const RenderOptions& options, AovImages& aovs,
+                       std::vector<PassTiming>* timings) {
+    return impl_->render(camera, light, shading, lines, options, &aovs, timings);
+}
+
+Image Renderer::Impl::render(const Camera& camera, const Light& light, const ShadingSelection& shading,
+                             const std::vector<LineSettings>& lines, const RenderOptions& options, AovImages* aovs,
+                             std::vector<PassTiming>* timings) {
+    Impl* const impl_ = this;  // the body reads as the public method's did
     if (!impl_->cpu_mesh) throw RuntimeError("no mesh to render (set_mesh first)");
     check_bit_depth(options);
     std::vector<LineSettings> object_lines = render::object_lines_of(lines, !impl_->closed);  // checks every type
@@ -151,6 +167,7 @@ Image Renderer::render(const Camera& camera, const Light& light, const ShadingSe
         .mesh = impl_->mesh.get(),
         .targets = impl_->targets,
         .object_lines = std::move(object_lines),
+        .aovs = aovs,
     };
 
     // The passes the style and the shading model need, in order.

@@ -75,7 +75,7 @@ std::vector<glm::vec3> welded_vertex_normals(const Mesh& mesh) {
     return out;
 }
 
-std::vector<uint32_t> face_object_ids(const Mesh& mesh) {
+std::vector<uint32_t> face_object_ids(const Mesh& mesh, std::vector<glm::uvec2>* parts) {
     const std::vector<uint32_t> cls = position_classes(mesh);
     const size_t n = mesh.positions.size();
     std::vector<uint32_t> parent(n);
@@ -90,13 +90,19 @@ std::vector<uint32_t> face_object_ids(const Mesh& mesh) {
         }
     }
     const bool per_face_material = mesh.face_materials.size() == mesh.triangles.size();
-    std::unordered_map<uint64_t, uint32_t> ids;
+    std::unordered_map<uint64_t, uint32_t> ids, part_numbers;
     std::vector<uint32_t> out(mesh.triangles.size(), 0);
+    if (parts) parts->clear();
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {
         const glm::uvec3 t = mesh.triangles[f];
         const uint64_t component = t.x < n ? find(parent, cls[t.x]) : uint64_t(n);
         const uint64_t material = per_face_material ? mesh.face_materials[f] : 0;
-        out[f] = ids.try_emplace((component << 32) | material, uint32_t(ids.size() + 1)).first->second;
+        const auto [it, added] = ids.try_emplace((component << 32) | material, uint32_t(ids.size() + 1));
+        out[f] = it->second;
+        if (parts && added) {
+            const uint32_t part = part_numbers.try_emplace(component, uint32_t(part_numbers.size() + 1)).first->second;
+            parts->push_back({part, uint32_t(material) + 1});
+        }
     }
     return out;
 }

@@ -22,6 +22,9 @@ std::vector<glm::vec3> welded_vertex_normals(const Mesh& mesh);
 // Object id per triangle, from 1 (0 = background): connected components of the
 // position-welded mesh, further split by material, numbered in order of first face. Two
 // touching but unconnected parts, or two materials, are different objects for `edges`.
-std::vector<uint32_t> face_object_ids(const Mesh& mesh);
+// With `parts`, parts[id - 1] = (part, material) of each object id: its connected part, from 1 in
+// order of first face, and its material index + 1 (1 without per-face materials), as the
+// id and material AOVs number them.
+std::vector<uint32_t> face_object_ids(const Mesh& mesh, std::vector<glm::uvec2>* parts = nullptr);
 
 }  // namespace inkshade::render

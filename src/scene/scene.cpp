@@ -8,6 +8,7 @@
 #include <functional>
 #include <tuple>
 
+#include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "scene/file_scene.hpp"
 #include "scene/option_name.hpp"
@@ -172,7 +173,47 @@ void check_file_scene_alternatives(const SceneRequest& r) {
     }
 }
 
+// The AOV names of the request, each once.
+AovSet parse_aovs(const SceneRequest& r) {
+    const std::string option = option_name(r.names, "aov");
+    const AovSet set = aov_set(option, r.aovs);
+    if (!set.empty() && !r.outputs.image)
+        throw InputError(option + ": AOVs come with an image (`render`), not with a line drawing alone");
+    return set;
+}
+
 }  // namespace
+
+AovSet aov_set(const std::string& option, const std::vector<std::string>& names) {
+    AovSet set;
+    for (const std::string& name : names) {
+        const std::optional<Aov> aov = aov_named(name);
+        if (!aov) {
+            std::string valid;
+            for (const std::string& n : aov_names()) valid += (valid.empty() ? "" : ", ") + n;
+            throw InputError(option + ": unknown AOV '" + name + "' (expected " + valid + ")" +
+                             did_you_mean(name, aov_names()));
+        }
+        if (set.contains(*aov)) throw InputError(option + ": '" + aov_name(*aov) + "' is listed twice");
+        set.add(*aov);
+    }
+    return set;
+}
+
+AovSet parse_aov_list(const std::string& option, const std::string& text) {
+    std::vector<std::string> names;
+    std::string item;
+    for (char c : text + ",") {
+        if (c == ',' || c == ';') {
+            const size_t b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+            if (b != std::string::npos) names.push_back(item.substr(b, e - b + 1));
+            item.clear();
+        } else {
+            item += c;
+        }
+    }
+    return aov_set(option, names);
+}
 
 void check_camera_options(const CameraOptions& o, OptionNames names) {
     auto name = [&](const char* option) { return option_name(names, option); };
@@ -247,6 +288,7 @@ Scene make_scene(const SceneRequest& r) {
         throw InputError(name("smooth-angle") + ": expected degrees in [0, 180]");
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
     check_file_scene_alternatives(r);
+    const AovSet aovs = parse_aovs(r);
 
     Scene scene;
     scene.model = r.model;
@@ -277,6 +319,8 @@ Scene make_scene(const SceneRequest& r) {
     scene.options.background = scene.style.background;
     scene.options.srgb_output = r.srgb;
     scene.options.bit_depth = r.bit_depth;
+    scene.aovs = aovs;
+    scene.options.aovs = aovs.gpu();
     scene.camera = r.camera;
     scene.light_type = r.light_type;
     scene.light_position = r.light_position;

@@ -3,6 +3,7 @@
 Run by ctest with PYTHONPATH at the built module and INKSHADE_BIN at the CLI; needs only
 Debian's python3 and python3-numpy (the PNG reader below is the standard library's zlib).
 """
+import json
 import os
 import struct
 import subprocess
@@ -279,6 +280,68 @@ class ModuleTest(unittest.TestCase):
             self.renderer.render("lambert", light_type="spot")
         with self.assertRaisesRegex(ValueError, "no mesh"):
             inkshade.Renderer().render("lambert")
+
+
+class AovTest(unittest.TestCase):
+    """render(aov=[...]) and batch(aov=[...]): arrays without copies, the CLI's files."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.r = inkshade.Renderer()
+        cls.r.set_mesh(inkshade.load_mesh("builtin:sphere:rings=128,segments=256"))
+
+    def test_arrays_types_and_no_copies(self):
+        out = self.r.render("anime", size=(96, 64), aov=["depth", "normal", "id", "material", "mask", "lines"])
+        self.assertEqual(out["image"].shape, (64, 96, 4))
+        expected = {"depth": (np.float32, (64, 96)), "normal": (np.float32, (64, 96, 3)),
+                    "id": (np.uint32, (64, 96)), "material": (np.uint32, (64, 96)), "mask": (np.uint8, (64, 96)),
+                    "lines-hull": (np.uint8, (64, 96)), "lines-rim-contour": (np.uint8, (64, 96))}
+        for name, (dtype, shape) in expected.items():
+            self.assertEqual(out[name].dtype, dtype, name)
+            self.assertEqual(out[name].shape, shape, name)
+            self.assertFalse(out[name].flags["OWNDATA"], name)  # a view of the renderer's buffer
+        fg = out["depth"] > 0
+        self.assertTrue(np.array_equal(fg, out["id"] > 0))
+        self.assertTrue(np.all(out["mask"][fg & (out["mask"] < 255)] > 0))
+        n = np.linalg.norm(out["normal"][fg], axis=1)
+        self.assertLess(np.max(np.abs(n - 1)), 1e-4)
+        self.assertEqual(out["camera"]["image"], {"width": 96, "height": 64})
+
+    def test_depth_reprojects_to_the_sphere(self):
+        # The recipe of docs/aov.md.
+        out = self.r.render(size=(160, 120), azimuth=20, elevation=30, aov=["depth"])
+        depth, cam = out["depth"], out["camera"]
+        K = np.array(cam["K"])
+        cam_to_world = np.linalg.inv(np.array(cam["world_to_camera_opencv"]))
+        v, u = np.nonzero(depth > 0)
+        d = depth[v, u]
+        x = (u + 0.5 - K[0, 2]) / K[0, 0] * d
+        y = (v + 0.5 - K[1, 2]) / K[1, 1] * d
+        points = (cam_to_world @ np.stack([x, y, d, np.ones_like(d)]))[:3].T
+        self.assertAlmostEqual(np.linalg.norm(points, axis=1).mean(), 1.0, delta=0.005)
+
+    def test_same_as_cli_files(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "a.png")
+            result = subprocess.run([INKSHADE_BIN, "render", "builtin:sphere:rings=128,segments=256", "-o", png,
+                                     "--size", "64x48", "--aov", "camera"], capture_output=True, text=True)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            with open(os.path.join(tmp, "a.camera.json")) as f:
+                self.assertEqual(json.load(f), self.r.render(size=(64, 48), aov=["camera"])["camera"])
+
+    def test_bad_name_and_batch(self):
+        with self.assertRaisesRegex(ValueError, r"^aov: unknown AOV 'nromal' .*\(did you mean 'normal'\?\)$"):
+            self.r.render(aov=["nromal"])
+        with tempfile.TemporaryDirectory() as tmp:
+            jobs = os.path.join(tmp, "jobs.csv")
+            with open(jobs, "w") as f:
+                f.write('model,name,size,aov\nbuiltin:sphere,a,32x32,"mask"\nbuiltin:torus,b,32x32,\n')
+            summary = inkshade.batch(os.path.join(tmp, "ds"), manifest=jobs, aov=["depth"])
+            self.assertEqual(summary["done"], 2)
+            files = sorted(os.listdir(os.path.join(tmp, "ds", "a", "lambert")))
+            self.assertIn("az035_el20.mask.png", files)
+            self.assertNotIn("az035_el20.depth.exr", files)
+            self.assertIn("az035_el20.depth.exr", os.listdir(os.path.join(tmp, "ds", "b", "lambert")))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,38 @@
+// AOV names and file names (inkshade/aov.hpp); the buffers are drawn by render/aov_pass.cpp and
+// the line masks by scene/aov.cpp, the files written by io/aov_files.cpp.
+#include "inkshade/aov.hpp"
+
+#include <filesystem>
+
+#include "core/name_suggestion.hpp"
+
+namespace inkshade {
+
+const std::vector<std::string>& aov_names() {
+    static const std::vector<std::string> names = {"depth", "normal", "id", "material", "mask", "lines", "camera"};
+    return names;
+}
+
+const char* aov_name(Aov aov) { return aov_names()[size_t(aov)].c_str(); }
+
+std::optional<Aov> aov_named(std::string_view name) {
+    const std::vector<std::string>& names = aov_names();
+    for (size_t i = 0; i < names.size(); ++i)
+        if (equal_ignoring_case(name, names[i])) return Aov(i);
+    return std::nullopt;
+}
+
+std::string format_aov_set(AovSet set) {
+    std::string out;
+    for (size_t i = 0; i < aov_names().size(); ++i)
+        if (set.contains(Aov(i))) out += (out.empty() ? "" : ",") + aov_names()[i];
+    return out;
+}
+
+std::string aov_path(const std::string& image_path, const std::string& aov, const std::string& extension) {
+    std::filesystem::path p(image_path);
+    p.replace_extension();
+    return p.string() + "." + aov + extension;
+}
+
+}  // namespace inkshade

@@ -1,0 +1,104 @@
+// The AOV files beside an image (inkshade/aov.hpp, docs/aov.md), each written atomically.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "inkshade/aov.hpp"
+#include "inkshade/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/exr_writer.hpp"
+#include "io/png_samples.hpp"
+
+namespace inkshade {
+
+namespace {
+
+std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+void check_size(const std::string& path, size_t have, size_t want) {
+    if (have != want) throw RuntimeError(path + ": the AOV buffer does not match the image size");
+}
+
+// Ids above 65535 do not fit the 16-bit PNG: they are clamped (the library and Python keep 32 bits).
+std::vector<uint16_t> to_16_bits(const std::vector<uint32_t>& ids) {
+    std::vector<uint16_t> out(ids.size());
+    std::transform(ids.begin(), ids.end(), out.begin(), [](uint32_t v) { return uint16_t(std::min(v, 65535u)); });
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::string> aov_file_names(const std::string& image_path, AovSet set,
+                                        const std::vector<std::string>& line_types) {
+    std::vector<std::string> out;
+    auto add = [&](Aov aov, const char* ext) {
+        if (set.contains(aov)) out.push_back(file_name(aov_path(image_path, aov_name(aov), ext)));
+    };
+    add(Aov::Depth, ".exr");
+    add(Aov::Normal, ".png");
+    add(Aov::Id, ".png");
+    add(Aov::Material, ".png");
+    add(Aov::Mask, ".png");
+    if (set.contains(Aov::Lines))
+        for (const std::string& type : line_types) out.push_back(file_name(aov_path(image_path, "lines-" + type, ".png")));
+    if (!set.empty()) out.push_back(file_name(aov_path(image_path, "camera", ".json")));
+    return out;
+}
+
+std::vector<std::string> write_aov_files(const std::string& image_path, AovSet set, const AovImages& a,
+                                         const CameraRecord& camera) {
+    std::vector<std::string> written;
+    const int w = a.width, h = a.height;
+    const size_t pixels = size_t(w) * size_t(h);
+    auto path_of = [&](Aov aov, const char* ext) { return aov_path(image_path, aov_name(aov), ext); };
+    auto done = [&](const std::string& path) { written.push_back(file_name(path)); };
+    if (set.contains(Aov::Depth)) {
+        const std::string path = path_of(Aov::Depth, ".exr");
+        check_size(path, a.depth.size(), pixels);
+        io::write_exr(path, w, h, {{"Z", a.depth.data(), 1}});
+        done(path);
+    }
+    if (set.contains(Aov::Normal)) {
+        const std::string path = path_of(Aov::Normal, ".png");
+        check_size(path, a.normal.size(), pixels * 3);
+        // n * 0.5 + 0.5 in 16 bits; the background (0, 0, 0) is not a unit vector.
+        std::vector<uint16_t> rgb(a.normal.size(), 0);
+        for (size_t p = 0; p < pixels; ++p) {
+            const float* n = &a.normal[3 * p];
+            if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f) continue;
+            for (int c = 0; c < 3; ++c)
+                rgb[3 * p + c] = uint16_t(std::lround(std::clamp(n[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 65535.0f));
+        }
+        io::write_png_samples(path, w, h, 3, rgb.data());
+        done(path);
+    }
+    for (Aov aov : {Aov::Id, Aov::Material}) {
+        if (!set.contains(aov)) continue;
+        const std::string path = path_of(aov, ".png");
+        const std::vector<uint32_t>& ids = aov == Aov::Id ? a.id : a.material;
+        check_size(path, ids.size(), pixels);
+        io::write_png_samples(path, w, h, 1, to_16_bits(ids).data());
+        done(path);
+    }
+    if (set.contains(Aov::Mask)) {
+        const std::string path = path_of(Aov::Mask, ".png");
+        check_size(path, a.mask.size(), pixels);
+        io::write_png_samples(path, w, h, 1, a.mask.data());
+        done(path);
+    }
+    if (set.contains(Aov::Lines))
+        for (const LineMask& m : a.lines) {
+            const std::string path = aov_path(image_path, "lines-" + m.type, ".png");
+            check_size(path, m.pixels.size(), pixels);
+            io::write_png_samples(path, w, h, 1, m.pixels.data());
+            done(path);
+        }
+    if (!set.empty()) {
+        const std::string path = path_of(Aov::Camera, ".json");
+        io::write_file_atomic(path, format_camera_json(camera));
+        done(path);
+    }
+    return written;
+}
+
+}  // namespace inkshade

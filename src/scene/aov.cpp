@@ -1,0 +1,54 @@
+// The scene's AOVs (inkshade/aov.hpp): the renderer's buffers from the image's frame, and one
+// mask per line type drawn by a frame of its own.
+#include "inkshade/scene.hpp"
+
+namespace inkshade {
+
+namespace {
+
+// Line type `line` alone, white, over a black surface and background: the red channel is the
+// line's coverage, antialiased by the image's MSAA, with the line's own opacity.
+std::vector<uint8_t> line_mask(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
+                               const LineSettings& line) {
+    LineSettings white = line;
+    white.params["color"] = {1.0f, 1.0f, 1.0f};
+    // Black whatever the mesh's colours, textures or unlit materials: they multiply the base colour.
+    ShadingSelection black{.model = "lambert", .params = {}, .base_color = glm::vec3(0.0f),
+                           .base_color_use = BaseColorUse::Multiply};
+    Light dark = light;
+    dark.color = glm::vec3(0.0f);
+    dark.ambient = glm::vec3(0.0f);
+    RenderOptions options = scene.options;
+    options.background = {0.0f, 0.0f, 0.0f, 1.0f};
+    options.srgb_output = false;  // coverage, not a colour to encode
+    options.bit_depth = 8;
+    options.aovs = {};
+    const Image image = renderer.render(camera, dark, black, {white}, options);
+    std::vector<uint8_t> mask(size_t(image.width) * size_t(image.height));
+    for (size_t i = 0; i < mask.size(); ++i) mask[i] = image.rgba[4 * i];
+    return mask;
+}
+
+}  // namespace
+
+Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light, AovImages& aovs,
+                   std::vector<PassTiming>* timings) {
+    aovs = {};
+    Image image = renderer.render(camera, light, scene.shading(), scene.style.lines, scene.options, aovs, timings);
+    aovs.width = image.width;
+    aovs.height = image.height;
+    if (scene.aovs.contains(Aov::Lines))
+        for (const LineSettings& line : scene.style.lines)
+            aovs.lines.push_back({line.type, line_mask(renderer, scene, camera, light, line)});
+    return image;
+}
+
+CameraRecord camera_record(const Scene& scene, const Camera& camera, const BoundingBox& bounds) {
+    return {.camera = camera,
+            .width = scene.options.width,
+            .height = scene.options.height,
+            .up_axis = scene.camera.up_axis.value_or(UpAxis::PosY),
+            .bounds = bounds};
+}
+
+}  // namespace inkshade
