@@ -18,6 +18,10 @@
 // three.js's distance falloff and cone (light_attenuation; Light::physical_falloff).
 // shadow = 1 (lit) .. 0 from the PCF-filtered shadow map when `shadows` is on; it scales t as
 // the shading term of three-vrm does, so shadowed parts take the shade colour.
+// INKSHADE_MTOON_OUTLINE: the outline draw (vertex stage: shading/mtoon_outline.glsl), shaded as
+// three-vrm shades it: the same formula with the back face's normal negated (mtoon.frag's
+// `normal *= -1.0` under OUTLINE), then out = outline-color * mix(1, direct + gi + rim,
+// outline-lighting-mix).
 #include "common/surface.glsl"
 #include "common/shadow.glsl"
 
@@ -30,11 +34,16 @@ uniform float u_rim_lift;
 uniform float u_rim_lighting_mix;
 uniform int u_convention;  // 0 seeds (as written), 1 threejs
 uniform float u_shadow_softness;
+uniform vec3 u_outline_color;
+uniform float u_outline_lighting_mix;
 
 float linearstep(float a, float b, float x) { return clamp((x - a) / max(b - a, 1e-6), 0.0, 1.0); }
 
 void shade() {
     Surface s = surface();
+#ifdef INKSHADE_MTOON_OUTLINE
+    s.n = -normalize(v_world_normal);
+#endif
     const float kInvPi = 0.31830988618;
     float k = (u_convention == 1) ? kInvPi : 1.0;
     float ndotl = clamp(dot(s.n, s.l), -1.0, 1.0);
@@ -46,6 +55,10 @@ void shade() {
     vec3 v = (u_convention == 1) ? normalize(u_eye - s.p) : s.v;
     float fresnel = pow(max(clamp(1.0 - dot(s.n, v) + u_rim_lift, 0.0, 1.0), 1e-6), u_rim_fresnel_power);
     vec3 rim = u_rim_color * fresnel * mix(vec3(1.0), E + A, u_rim_lighting_mix);
-    vec3 c = clamp(direct + gi + rim, 0.0, 1.0);
+    vec3 c = direct + gi + rim;
+#ifdef INKSHADE_MTOON_OUTLINE
+    c = u_outline_color * mix(vec3(1.0), c, u_outline_lighting_mix);
+#endif
+    c = clamp(c, 0.0, 1.0);
     o_color = encode_output(c);
 }

@@ -247,13 +247,13 @@ void GpuMesh::draw() const {
 }
 
 void GpuMesh::draw_by_material(GLuint texture_unit, gpu::Texels texels,
-                               const std::function<void(const Material*)>& before) const {
+                               const std::function<bool(const Material*)>& before) const {
     glBindVertexArray(vao_.id());
     for (const Range& r : ranges_) {
         const bool known = r.material < materials_.size();
+        if (before && !before(known ? &materials_[r.material] : nullptr)) continue;
         if (textured())
             textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit, texels);
-        if (before) before(known ? &materials_[r.material] : nullptr);
         draw_indices(r.first, r.count);
     }
 }

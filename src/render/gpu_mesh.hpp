@@ -47,16 +47,12 @@ public:
     // The faces material by material (sorted by material when the mesh is textured or has
     // material parameters, else one range in file order, exactly as draw()). Before each range
     // its texture is bound to `texture_unit` (a white texel for materials without one), read as
-    // `texels` says, when the mesh is textured, and `before` gets the range's material (null: none).
+    // `texels` says, when the mesh is textured, and `before` gets the range's material (null:
+    // none) and says whether to draw it (mtoon's outline skips materials without one).
     void draw_by_material(GLuint texture_unit, gpu::Texels texels,
-                          const std::function<void(const Material*)>& before) const;
+                          const std::function<bool(const Material*)>& before) const;
     // Some material is drawn without lighting (Material::unlit).
     bool has_unlit_materials() const { return has_unlit_materials_; }
-    // The faces material by material (sorted by material when the mesh is textured, has
-    // material parameters or unlit materials, else one range in file order, exactly as draw()). Before each range
-    // its texture is bound to `texture_unit` (a white texel for materials without one) when the
-    // mesh is textured, and `before` gets the range's material (null: none).
-    void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
 
     // Uploads one float per mesh vertex as attribute 6 (the `kr` debug view's per-view radial
     // curvature); stream vertices duplicated per material take their source vertex's value.

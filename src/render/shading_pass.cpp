@@ -79,6 +79,20 @@ bool casts_shadows(const Frame& frame) {
     return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
 }
 
+// mtoon's outline is on in `values`: a width mode other than none and a width above 0.
+bool outline_on(const ShadingModel& model, const ParamValues& values) {
+    const ParamSpec* mode = model.param("outline-width-mode");
+    const ParamSpec* width = model.param("outline-width");
+    return mode && width && value_or_default(*mode, values).at(0) != 0.0f &&
+           value_or_default(*width, values).at(0) > 0.0f;
+}
+
+// The model draws an outline: its values turn it on, or materials may carry their own
+// (Material::mtoon, whose outline values replace the style's per material).
+bool draws_outline(const ShadingModel& model, const ParamValues& values, bool material_params) {
+    return model.param("outline-width-mode") && (outline_on(model, values) || material_params);
+}
+
 // What C is made of (BaseColorUse, docs/shading.md "Base colour"): the base colour, and
 // whether the mesh's vertex/material colours and textures multiply it.
 struct Albedo {
@@ -140,8 +154,8 @@ public:
         const SurfaceLines surface_lines{frame.line("rim-contour")};
         // A mesh whose colours are all white needs no variant to leave them out.
         const bool base_color_only = !c.mesh_colors && mesh.has_own_colors();
-        gpu::ShaderProgram& program =
-            program_for(model, shading.params, surface_lines, textured, base_color_only, unlit, frame.light);
+        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, base_color_only,
+                                                  unlit, /*outline=*/false, frame.light);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -173,21 +187,61 @@ public:
                 if (material_params)
                     upload_params(program, model, with_material_params(model, shading.params, material));
                 if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
+                return true;
             });
         });
+        if (draws_outline(model, shading.params, material_params))
+            draw_outline(frame, c, convention, textured, base_color_only, material_params);
     }
 
 private:
+    // mtoon's outline (three-vrm's second draw of an MToon material, shaders/shading/mtoon_outline.glsl):
+    // back faces moved out along their normals, depth-tested (three.js's LessEqual) and written
+    // against the model just drawn, material by material when the materials carry their own
+    // outline values; unlit materials have none (they are not MToon materials).
+    void draw_outline(const Frame& frame, const Albedo& c, ColorConvention convention, bool textured,
+                      bool base_color_only, bool material_params) {
+        const ShadingModel& model = frame.model;
+        const ParamValues& params = frame.shading.params;
+        gpu::ShaderProgram& program = program_for(model, params, SurfaceLines{nullptr}, textured, base_color_only,
+                                                  /*unlit=*/false, /*outline=*/true, frame.light);
+        program.use();
+        set_frame_uniforms(program, frame, c, convention);
+        program.set("u_projection", frame.camera.projection(frame.aspect()));
+        if (casts_shadows(frame)) {
+            program.set("u_shadow_map", int(kShadowUnit));
+            program.set("u_light_view_proj", *frame.targets.shadow_light);
+            program.set("u_shadow_texel_world", frame.bounds.diagonal() / float(frame.targets.shadow_map->size()));
+        }
+        upload_params(program, model, params);
+        if (textured || material_params) program.set("u_base_texture", int(kBaseTextureUnit));
+        const gpu::DepthScope depth(GL_LEQUAL, /*write=*/true);
+        const gpu::CullScope cull(GL_FRONT);
+        const BackFacePushScope push(frame, program);
+        GpuMesh& mesh = *frame.mesh;
+        if (!textured && !material_params) return mesh.draw();
+        mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
+            if (!material_params) return true;
+            if (material && material->unlit) return false;
+            const ParamValues merged = with_material_params(model, params, material);
+            if (!outline_on(model, merged)) return false;
+            upload_params(program, model, merged);
+            return true;
+        });
+    }
+
     // One compiled variant per model and compile-time parameter values (#defines, not uniform
     // branches: llvmpipe executes switched-off branches too). A shadow-casting model's
     // `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl). `textured`:
     // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE);
     // `base_color_only`: the one that leaves out the vertex/material colours (BaseColorUse::Only).
     // `unlit`: the one that draws unlit materials as they are (INKSHADE_UNLIT). A model file's
-    // spot light and physical falloff (common/lighting.glsl) are variants too.
+    // spot light and physical falloff (common/lighting.glsl) are variants too, and so is mtoon's
+    // outline draw (`outline`: INKSHADE_MTOON_OUTLINE).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured, bool base_color_only, bool unlit, const Light& light) {
+                                    bool textured, bool base_color_only, bool unlit, bool outline, const Light& light) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
+        if (outline) defines += "#define INKSHADE_MTOON_OUTLINE 1\n";
         if (base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
         if (unlit) defines += "#define INKSHADE_UNLIT 1\n";
