@@ -3,11 +3,12 @@
 // the uvs of a textured mesh (INKSHADE_BASE_TEXTURE: a program variant, so untextured meshes
 // pay nothing; common/surface.glsl samples the texture). INKSHADE_BASE_COLOR_ONLY: the
 // vertex/material colours are left out, C is the base colour alone (BaseColorUse::Only).
-// INKSHADE_MTOON_OUTLINE: mtoon's outline draw, vertices moved out (shading/mtoon_outline.glsl).
+// INKSHADE_MTOON_OUTLINE: mtoon's outline draw, vertices moved out (shading/mtoon_outline.glsl);
+// INKSHADE_MTOON_TEXTURES: a VRM material's MToon textures, read at the uvs.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
-#ifdef INKSHADE_BASE_TEXTURE
+#if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
 layout(location = 5) in vec2 a_uv;
 out vec2 v_uv;
 #endif
@@ -39,7 +40,7 @@ void main() {
     v_color = a_color;
 #endif
     v_object_pos = a_position;
-#ifdef INKSHADE_BASE_TEXTURE
+#if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
     v_uv = a_uv;
 #endif
 #ifdef INKSHADE_RADIAL_CURVATURE
@@ -47,7 +48,7 @@ void main() {
 #endif
     vec4 clip = u_view_proj * world;
 #ifdef INKSHADE_MTOON_OUTLINE
-    clip = mtoon_outline_position(clip, world.xyz, a_normal, 1.0);
+    clip = mtoon_outline_position(clip, world.xyz, a_normal, outline_width_multiply());
 #endif
     gl_Position = pushed_back(clip);
 }

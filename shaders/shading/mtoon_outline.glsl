@@ -11,6 +11,12 @@
 uniform int u_outline_width_mode;  // 1 world, 2 screen (0: not drawn)
 uniform float u_outline_width;
 uniform mat4 u_projection;
+#ifdef INKSHADE_MTOON_TEXTURES
+uniform sampler2D u_outline_width_multiply_texture;  // data: green channel as stored
+float outline_width_multiply() { return textureLod(u_outline_width_multiply_texture, vec2(a_uv.x, 1.0 - a_uv.y), 0.0).g; }
+#else
+float outline_width_multiply() { return 1.0; }
+#endif
 
 vec4 mtoon_outline_position(vec4 clip, vec3 world, vec3 normal, float tex) {
     vec3 n = normalize(normal);

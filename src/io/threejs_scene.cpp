@@ -148,14 +148,15 @@ constexpr MtoonField kMtoonFields[] = {{"shadeColorFactor", "shade-color", true}
                                        {"rimLightingMixFactor", "rim-lighting-mix", false},
                                        {"outlineWidthFactor", "outline-width", false},
                                        {"outlineColorFactor", "outline-color", true},
-                                       {"outlineLightingMixFactor", "outline-lighting-mix", false}};
+                                       {"outlineLightingMixFactor", "outline-lighting-mix", false},
+                                       {"matcapFactor", "matcap-color", true}};
 // MToonMaterial's outlineWidthMode strings (MToonMaterialOutlineWidthMode), in the order of
 // mtoon's outline-width-mode choices.
 constexpr const char* kOutlineWidthModes[] = {"none", "worldCoordinates", "screenCoordinates"};
 // Fields that change nothing in a scene of this format, so they are accepted and ignored:
-// giEqualizationFactor evens out light probes (an AmbientLight is already even), matcapFactor
-// and shadingShiftTextureScale scale textures the format cannot give.
-constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor", "matcapFactor", "shadingShiftTextureScale"};
+// giEqualizationFactor evens out light probes (an AmbientLight is already even) and
+// shadingShiftTextureScale scales a texture the format cannot give.
+constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor", "shadingShiftTextureScale"};
 // Fields accepted only at the value that changes nothing here (three-vrm's default); any other
 // value is a one-line error, as is every texture: the `mtoon` model does not have them yet.
 constexpr const char* kMtoonUnsupported[] = {
@@ -198,10 +199,7 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
             continue;
         }
         if (std::any_of(std::begin(kMtoonIgnored), std::end(kMtoonIgnored), [&](const char* k) { return key == k; })) {
-            if (key == "matcapFactor")
-                r.colour(v, field);
-            else
-                r.number(v, field);
+            r.number(v, field);
             continue;
         }
         if (std::any_of(std::begin(kMtoonUnsupported), std::end(kMtoonUnsupported),

@@ -12,6 +12,7 @@
 #include "render/color_convention.hpp"
 #include "render/back_faces.hpp"
 #include "render/frame.hpp"
+#include "render/mtoon_textures.hpp"
 #include "render/surface_lines.hpp"
 
 namespace inkshade::render {
@@ -77,6 +78,12 @@ bool param_on(const ShadingModel& model, const ParamValues& values, const char* 
 // Shadow map for models that cast shadows, when their "shadows" parameter is on.
 bool casts_shadows(const Frame& frame) {
     return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
+}
+
+// The MToon textures' samplers, in the units after the base colour's (GpuMesh::draw_by_material).
+void set_mtoon_samplers(gpu::ShaderProgram& program) {
+    for (int slot = 0; slot < kMtoonTextureSlotCount; ++slot)
+        program.set(kMtoonTextureSlots[slot].sampler, int(kBaseTextureUnit) + 1 + slot);
 }
 
 // mtoon's outline is on in `values`: a width mode other than none and a width above 0.
@@ -151,11 +158,13 @@ public:
         const bool material_params =
             mesh.has_material_params() && param_on(model, shading.params, "use-material-params");
         const bool unlit = mesh.has_unlit_materials() && !model.debug_view;
+        // A VRM material's MToon textures go with its values (use-material-params).
+        const bool mtoon_textures = material_params && mesh.has_mtoon_textures() && model.param("matcap-color");
         const SurfaceLines surface_lines{frame.line("rim-contour")};
         // A mesh whose colours are all white needs no variant to leave them out.
         const bool base_color_only = !c.mesh_colors && mesh.has_own_colors();
-        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, base_color_only,
-                                                  unlit, /*outline=*/false, frame.light);
+        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, mtoon_textures,
+                                                  base_color_only, unlit, /*outline=*/false, frame.light);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -179,6 +188,7 @@ public:
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
         if (textured || material_params || unlit) program.set("u_base_texture", int(kBaseTextureUnit));
+        if (mtoon_textures) set_mtoon_samplers(program);
         // Two-sided (open meshes show their lit inside), front faces winning depth ties
         // (render/back_faces.hpp); back faces culled when none can be seen.
         draw_front_then_back(frame, program, [&] {
@@ -191,7 +201,7 @@ public:
             });
         });
         if (draws_outline(model, shading.params, material_params))
-            draw_outline(frame, c, convention, textured, base_color_only, material_params);
+            draw_outline(frame, c, convention, textured, mtoon_textures, base_color_only, material_params);
     }
 
 private:
@@ -200,11 +210,12 @@ private:
     // against the model just drawn, material by material when the materials carry their own
     // outline values; unlit materials have none (they are not MToon materials).
     void draw_outline(const Frame& frame, const Albedo& c, ColorConvention convention, bool textured,
-                      bool base_color_only, bool material_params) {
+                      bool mtoon_textures, bool base_color_only, bool material_params) {
         const ShadingModel& model = frame.model;
         const ParamValues& params = frame.shading.params;
-        gpu::ShaderProgram& program = program_for(model, params, SurfaceLines{nullptr}, textured, base_color_only,
-                                                  /*unlit=*/false, /*outline=*/true, frame.light);
+        gpu::ShaderProgram& program =
+            program_for(model, params, SurfaceLines{nullptr}, textured, mtoon_textures, base_color_only,
+                        /*unlit=*/false, /*outline=*/true, frame.light);
         program.use();
         set_frame_uniforms(program, frame, c, convention);
         program.set("u_projection", frame.camera.projection(frame.aspect()));
@@ -215,6 +226,7 @@ private:
         }
         upload_params(program, model, params);
         if (textured || material_params) program.set("u_base_texture", int(kBaseTextureUnit));
+        if (mtoon_textures) set_mtoon_samplers(program);
         const gpu::DepthScope depth(GL_LEQUAL, /*write=*/true);
         const gpu::CullScope cull(GL_FRONT);
         const BackFacePushScope push(frame, program);
@@ -237,10 +249,13 @@ private:
     // `base_color_only`: the one that leaves out the vertex/material colours (BaseColorUse::Only).
     // `unlit`: the one that draws unlit materials as they are (INKSHADE_UNLIT). A model file's
     // spot light and physical falloff (common/lighting.glsl) are variants too, and so is mtoon's
-    // outline draw (`outline`: INKSHADE_MTOON_OUTLINE).
+    // outline draw (`outline`: INKSHADE_MTOON_OUTLINE) and its materials' textures
+    // (`mtoon_textures`: INKSHADE_MTOON_TEXTURES).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured, bool base_color_only, bool unlit, bool outline, const Light& light) {
+                                    bool textured, bool mtoon_textures, bool base_color_only, bool unlit, bool outline,
+                                    const Light& light) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
+        if (mtoon_textures) defines += "#define INKSHADE_MTOON_TEXTURES 1\n";
         if (outline) defines += "#define INKSHADE_MTOON_OUTLINE 1\n";
         if (base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";

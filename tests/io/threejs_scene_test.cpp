@@ -67,6 +67,7 @@ TEST(ThreejsScene, MToonMaterialFieldsMapOntoTheMtoonModel) {
     EXPECT_EQ(s.params.at("convention"), ParamValue{1.0f});  // threejs
     EXPECT_EQ(s.params.at("shadows"), ParamValue{0.0f});     // three.js renders none by default
     EXPECT_EQ(s.param_fields.at("shading-toony"), "material.shadingToonyFactor");
+    EXPECT_EQ(s.params.at("matcap-color"), (ParamValue{1.0f, 1.0f, 1.0f}));
     EXPECT_EQ(s.params.at("outline-width-mode"), ParamValue{0.0f});  // "none"
     EXPECT_EQ(s.params.at("outline-width"), ParamValue{0.02f});
 

@@ -31,6 +31,8 @@ static const ShadingModelRegistration mtoon_model{{
                         "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
             float_param("rim-lighting-mix", 0.0f, 0.0f, 1.0f,
                         "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
+            color_param("matcap-color", glm::vec3(1.0f),
+                        "matcap texture factor, linear (MToon matcapFactor; the texture comes with a VRM material)"),
             choice_param("outline-width-mode", {"none", "world-coordinates", "screen-coordinates"}, 0,
                          "outline: none, or back faces pushed out along the normal by outline-width world "
                          "units or by outline-width of the image height at clip w 1 (MToon outlineWidthMode)"),
