@@ -3,10 +3,12 @@
 // the uvs of a textured mesh (INKSHADE_BASE_TEXTURE: a program variant, so untextured meshes
 // pay nothing; common/surface.glsl samples the texture). INKSHADE_BASE_COLOR_ONLY: the
 // vertex/material colours are left out, C is the base colour alone (BaseColorUse::Only).
+// INKSHADE_MTOON_OUTLINE: mtoon's outline draw, vertices moved out (shading/mtoon_outline.glsl);
+// INKSHADE_MTOON_TEXTURES: a VRM material's MToon textures, read at the uvs.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
-#ifdef INKSHADE_BASE_TEXTURE
+#if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
 layout(location = 5) in vec2 a_uv;
 out vec2 v_uv;
 #endif
@@ -19,6 +21,9 @@ uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform mat3 u_normal_matrix;
 #include "common/back_face_push.glsl"
+#ifdef INKSHADE_MTOON_OUTLINE
+#include "shading/mtoon_outline.glsl"
+#endif
 
 out vec3 v_world_pos;
 out vec3 v_world_normal;
@@ -35,11 +40,15 @@ void main() {
     v_color = a_color;
 #endif
     v_object_pos = a_position;
-#ifdef INKSHADE_BASE_TEXTURE
+#if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
     v_uv = a_uv;
 #endif
 #ifdef INKSHADE_RADIAL_CURVATURE
     v_kr = a_kr;
 #endif
-    gl_Position = pushed_back(u_view_proj * world);
+    vec4 clip = u_view_proj * world;
+#ifdef INKSHADE_MTOON_OUTLINE
+    clip = mtoon_outline_position(clip, world.xyz, a_normal, outline_width_multiply());
+#endif
+    gl_Position = pushed_back(clip);
 }

@@ -37,10 +37,17 @@ struct Material {
     // MToon parameters of a VRM material (VRM 0.x extensions.VRM.materialProperties, converted as
     // three-vrm does, or VRM 1.0 VRMC_materials_mtoon), keyed by the `mtoon` shading model's
     // parameter names: shade-color (3), shading-shift, shading-toony, rim-color (3),
-    // rim-fresnel-power, rim-lift, rim-lighting-mix, plus outline-width-mode (0 none, 1 world,
-    // 2 screen), outline-width, outline-color (3), outline-lighting-mix, gi-equalization.
+    // rim-fresnel-power, rim-lift, rim-lighting-mix, outline-width-mode (0 none, 1 world,
+    // 2 screen), outline-width, outline-color (3), outline-lighting-mix, matcap-color (3), plus
+    // gi-equalization.
     // Colours linear. Empty = not an MToon material.
     std::map<std::string, std::vector<float>> mtoon;
+    // The textures of a VRM MToon material (VRMC_materials_mtoon's matcapTexture,
+    // rimMultiplyTexture, outlineWidthMultiplyTexture; VRM 0.x _SphereAdd, _RimTexture,
+    // _OutlineWidthTexture), keyed "matcap-texture", "rim-multiply-texture",
+    // "outline-width-multiply-texture"; read at the mesh's uvs (the matcap at the view-space
+    // normal). Shared as `texture` is.
+    std::map<std::string, std::shared_ptr<const Texture>> mtoon_textures;
     // glTF KHR_materials_unlit: drawn in its base colour (x texture x vertex colour) without
     // lighting, whatever the shading model.
     bool unlit = false;

@@ -7,11 +7,13 @@ in vec3 v_world_pos;
 in vec3 v_world_normal;
 in vec3 v_color;
 in vec3 v_object_pos;
+#if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
+in vec2 v_uv;
+#endif
 #ifdef INKSHADE_BASE_TEXTURE
 // Base-colour texture, read in the frame's colour convention (bound by the shading pass:
 // the bytes as stored, or decoded from sRGB to linear light); rows stored top first while uvs
 // have v = 0 at the bottom (inkshade::Texture), hence 1 - v.
-in vec2 v_uv;
 uniform sampler2D u_base_texture;
 #endif
 

@@ -42,6 +42,11 @@ BaseTexture BaseTexture::white() {
     return BaseTexture(1, 1, texel);
 }
 
+BaseTexture BaseTexture::black() {
+    const uint8_t texel[4] = {0, 0, 0, 255};
+    return BaseTexture(1, 1, texel);
+}
+
 BaseTexture::BaseTexture(int width, int height, const uint8_t* rgba) : srgb_(GlTexture::create(GL_TEXTURE_2D)) {
     const GLsizei levels = GLsizei(std::bit_width(unsigned(std::max(width, height))));
     glTextureStorage2D(srgb_.id(), levels, GL_SRGB8_ALPHA8, width, height);

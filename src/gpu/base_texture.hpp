@@ -25,6 +25,8 @@ public:
     // A 1x1 white texel: 255 is exactly 1.0 read either way, so untextured materials of a
     // textured mesh keep their colour bit for bit.
     static BaseTexture white();
+    // A 1x1 black texel (alpha 1): an absent texture that adds (MToon's matcap) adds nothing.
+    static BaseTexture black();
 
     void bind(GLuint unit, Texels texels) const {
         glBindTextureUnit(unit, texels == Texels::AsStored ? stored_.id() : srgb_.id());

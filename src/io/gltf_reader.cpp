@@ -598,8 +598,21 @@ std::map<std::string, std::vector<float>> mtoon_defaults() {
     return {{"shade-color", {0, 0, 0}},   {"shading-shift", {0}},        {"shading-toony", {0.9f}},
             {"rim-color", {0, 0, 0}},     {"rim-fresnel-power", {5}},    {"rim-lift", {0}},
             {"rim-lighting-mix", {1}},    {"outline-width-mode", {0}},   {"outline-width", {0}},
-            {"outline-color", {0, 0, 0}}, {"outline-lighting-mix", {1}}, {"gi-equalization", {0.9f}}};
+            {"outline-color", {0, 0, 0}}, {"outline-lighting-mix", {1}}, {"gi-equalization", {0.9f}},
+            {"matcap-color", {1, 1, 1}}};
 }
+
+// The MToon textures (Material::mtoon_textures) by their VRM 1.0 and VRM 0.x names.
+struct MtoonTextureName {
+    const char* key;  // Material::mtoon_textures
+    const char* v1;   // VRMC_materials_mtoon textureInfo
+    const char* v0;   // VRM 0.x textureProperties
+};
+constexpr MtoonTextureName kMtoonTextureNames[] = {
+    {"matcap-texture", "matcapTexture", "_SphereAdd"},
+    {"rim-multiply-texture", "rimMultiplyTexture", "_RimTexture"},
+    {"outline-width-multiply-texture", "outlineWidthMultiplyTexture", "_OutlineWidthTexture"},
+};
 
 // VRM 1.0: materials[i].extensions.VRMC_materials_mtoon, factors linear as written.
 std::map<std::string, std::vector<float>> mtoon_v1(const tinygltf::Value& e) {
@@ -619,6 +632,7 @@ std::map<std::string, std::vector<float>> mtoon_v1(const tinygltf::Value& e) {
     m["outline-color"] = numbers(e, "outlineColorFactor", m["outline-color"]);
     m["outline-lighting-mix"] = {float(number(e, "outlineLightingMixFactor", 1.0))};
     m["gi-equalization"] = {float(number(e, "giEqualizationFactor", 0.9))};
+    m["matcap-color"] = numbers(e, "matcapFactor", m["matcap-color"]);
     return m;
 }
 
@@ -706,6 +720,12 @@ private:
         const auto v1 = g.extensions.find("VRMC_materials_mtoon");
         if (v1 != g.extensions.end()) {
             m.mtoon = mtoon_v1(v1->second);
+            for (const MtoonTextureName& t : kMtoonTextureNames) {
+                const tinygltf::Value& e = v1->second;
+                if (!e.IsObject() || !e.Has(t.v1)) continue;
+                const int index = texture_property(e.Get(t.v1), "index");
+                if (index >= 0) m.mtoon_textures[t.key] = texture_of(index, m.name);
+            }
         } else if (v0_ != nullptr && i < v0_->ArrayLen()) {
             const tinygltf::Value& props = v0_->Get(int(i));
             const std::string shader = props.IsObject() && props.Has("shader") && props.Get("shader").IsString()
@@ -721,6 +741,11 @@ private:
                 if (main >= 0) texture = main;
                 if (shader == "VRM/MToon") {
                     m.mtoon = mtoon_v0(props);
+                    const tinygltf::Value& tex =
+                        props.Has("textureProperties") ? props.Get("textureProperties") : props;
+                    for (const MtoonTextureName& t : kMtoonTextureNames)
+                        if (const int index = texture_property(tex, t.v0); index >= 0)
+                            m.mtoon_textures[t.key] = texture_of(index, m.name);
                 } else {  // unlit: an MToon whose shade colour is the lit colour
                     m.mtoon = mtoon_defaults();
                     m.mtoon["shade-color"] = {m.diffuse.r, m.diffuse.g, m.diffuse.b};

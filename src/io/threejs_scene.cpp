@@ -145,18 +145,22 @@ constexpr MtoonField kMtoonFields[] = {{"shadeColorFactor", "shade-color", true}
                                        {"parametricRimColorFactor", "rim-color", true},
                                        {"parametricRimFresnelPowerFactor", "rim-fresnel-power", false},
                                        {"parametricRimLiftFactor", "rim-lift", false},
-                                       {"rimLightingMixFactor", "rim-lighting-mix", false}};
+                                       {"rimLightingMixFactor", "rim-lighting-mix", false},
+                                       {"outlineWidthFactor", "outline-width", false},
+                                       {"outlineColorFactor", "outline-color", true},
+                                       {"outlineLightingMixFactor", "outline-lighting-mix", false},
+                                       {"matcapFactor", "matcap-color", true}};
+// MToonMaterial's outlineWidthMode strings (MToonMaterialOutlineWidthMode), in the order of
+// mtoon's outline-width-mode choices.
+constexpr const char* kOutlineWidthModes[] = {"none", "worldCoordinates", "screenCoordinates"};
 // Fields that change nothing in a scene of this format, so they are accepted and ignored:
-// giEqualizationFactor evens out light probes (an AmbientLight is already even), matcapFactor
-// and shadingShiftTextureScale scale textures the format cannot give, and the outline values
-// apply only with an outlineWidthMode other than "none".
-constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor",   "matcapFactor",
-                                         "shadingShiftTextureScale", "outlineWidthFactor",
-                                         "outlineColorFactor",     "outlineLightingMixFactor"};
+// giEqualizationFactor evens out light probes (an AmbientLight is already even) and
+// shadingShiftTextureScale scales a texture the format cannot give.
+constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor", "shadingShiftTextureScale"};
 // Fields accepted only at the value that changes nothing here (three-vrm's default); any other
 // value is a one-line error, as is every texture: the `mtoon` model does not have them yet.
 constexpr const char* kMtoonUnsupported[] = {
-    "emissive",          "emissiveIntensity",   "outlineWidthMode", "uvAnimationScrollXSpeedFactor",
+    "emissive",          "emissiveIntensity",   "uvAnimationScrollXSpeedFactor",
     "uvAnimationScrollYSpeedFactor", "uvAnimationRotationSpeedFactor", "transparentWithZWrite", "v0CompatShade",
     "map",               "normalMap",           "emissiveMap",      "shadeMultiplyTexture",
     "shadingShiftTexture", "matcapTexture",     "rimMultiplyTexture", "outlineWidthMultiplyTexture",
@@ -170,6 +174,15 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
         if (key == "type" || key == "name") continue;
         if (key == "color") {
             scene.base_color = r.colour(v, field).linear();
+            continue;
+        }
+        if (key == "outlineWidthMode") {
+            const std::string mode = r.string(v, field);
+            const auto* it = std::find(std::begin(kOutlineWidthModes), std::end(kOutlineWidthModes), mode);
+            if (it == std::end(kOutlineWidthModes))
+                r.fail(field, "expected \"none\", \"worldCoordinates\" or \"screenCoordinates\", got \"" + mode + "\"");
+            scene.params["outline-width-mode"] = {float(it - std::begin(kOutlineWidthModes))};
+            scene.param_fields["outline-width-mode"] = field;
             continue;
         }
         const MtoonField* f = nullptr;
@@ -186,10 +199,7 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
             continue;
         }
         if (std::any_of(std::begin(kMtoonIgnored), std::end(kMtoonIgnored), [&](const char* k) { return key == k; })) {
-            if (key == "matcapFactor" || key == "outlineColorFactor")
-                r.colour(v, field);
-            else
-                r.number(v, field);
+            r.number(v, field);
             continue;
         }
         if (std::any_of(std::begin(kMtoonUnsupported), std::end(kMtoonUnsupported),
@@ -197,7 +207,6 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
             // three-vrm's defaults, at which these change nothing.
             const bool harmless = (key == "emissive" && r.colour(v, field).linear() == glm::vec3(0.0f)) ||
                                   key == "emissiveIntensity" ||
-                                  (key == "outlineWidthMode" && v.is_string() && v.get<std::string>() == "none") ||
                                   (key.starts_with("uvAnimation") && v.is_number() && v.get<double>() == 0.0) ||
                                   ((key == "transparentWithZWrite" || key == "v0CompatShade") && v.is_boolean() &&
                                    !v.get<bool>());
@@ -206,7 +215,7 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
                 r.fail(field, "not supported by Inkshade's mtoon model yet (accepted only as three-vrm's default)");
             continue;
         }
-        std::string list = "type, name, color";
+        std::string list = "type, name, color, outlineWidthMode";
         for (const MtoonField& k : kMtoonFields) list += ", " + std::string(k.three_name);
         for (const char* k : kMtoonIgnored) list += ", " + std::string(k);
         r.fail(field, "unknown field (allowed: " + list + ")");

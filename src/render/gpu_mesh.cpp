@@ -105,7 +105,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
                 if (faces[f][k] < vertex_ids.size()) vertex_ids[faces[f][k]] = face_ids[f];
         object_id_vbo_ = upload_buffer(GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data());
     }
-    if (textured()) {
+    if (textured() || has_mtoon_textures()) {
         std::vector<glm::vec2> uvs(stream_size);
         for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source_of(i)];
         uv_vbo_ = upload_buffer(GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data());
@@ -125,6 +125,7 @@ void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
     materials_ = mesh.materials;
     for (Material& m : materials_) {
         m.texture.reset();
+        m.mtoon_textures.clear();
         has_material_params_ |= !m.mtoon.empty();
         has_unlit_materials_ |= m.unlit;
     }
@@ -143,14 +144,42 @@ void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
             textures_.push_back(gpu::BaseTexture::white());
             for (size_t& t : material_texture_) t = std::min(t, textures_.size() - 1);
         }
+        upload_mtoon_textures(mesh);
     }
+}
+
+void GpuMesh::upload_mtoon_textures(const Mesh& mesh) {
+    constexpr size_t kWhite = std::numeric_limits<size_t>::max(), kBlack = kWhite - 1;
+    std::map<const Texture*, size_t> index;
+    material_mtoon_.assign(mesh.materials.size(), {});
+    for (size_t m = 0; m < mesh.materials.size(); ++m)
+        for (int slot = 0; slot < kMtoonTextureSlotCount; ++slot) {
+            const MtoonTextureSlot& s = kMtoonTextureSlots[slot];
+            const auto& textures = mesh.materials[m].mtoon_textures;
+            const auto it = textures.find(s.name);
+            size_t& at = material_mtoon_[m][size_t(slot)];
+            at = s.black_when_absent ? kBlack : kWhite;
+            if (it == textures.end() || !it->second) continue;
+            auto [known, inserted] = index.try_emplace(it->second.get(), mtoon_textures_.size());
+            if (inserted) mtoon_textures_.emplace_back(*it->second);
+            at = known->second;
+        }
+    if (mtoon_textures_.empty()) {
+        material_mtoon_.clear();
+        return;
+    }
+    mtoon_textures_.push_back(gpu::BaseTexture::white());
+    mtoon_textures_.push_back(gpu::BaseTexture::black());
+    for (auto& slots : material_mtoon_)
+        for (size_t& at : slots)
+            if (at == kWhite || at == kBlack) at = mtoon_textures_.size() - (at == kWhite ? 2 : 1);
 }
 
 void GpuMesh::upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& faces, bool has_face_materials) {
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
-    if (has_face_materials && (textured() || has_material_params_ || has_unlit_materials_)) {
+    if (has_face_materials && (textured() || has_mtoon_textures() || has_material_params_ || has_unlit_materials_)) {
         std::vector<uint32_t> order(faces.size());
         std::iota(order.begin(), order.end(), 0u);
         auto key = [&](uint32_t f) {
@@ -247,13 +276,19 @@ void GpuMesh::draw() const {
 }
 
 void GpuMesh::draw_by_material(GLuint texture_unit, gpu::Texels texels,
-                               const std::function<void(const Material*)>& before) const {
+                               const std::function<bool(const Material*)>& before) const {
     glBindVertexArray(vao_.id());
     for (const Range& r : ranges_) {
         const bool known = r.material < materials_.size();
+        if (before && !before(known ? &materials_[r.material] : nullptr)) continue;
         if (textured())
             textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit, texels);
-        if (before) before(known ? &materials_[r.material] : nullptr);
+        for (int slot = 0; has_mtoon_textures() && slot < kMtoonTextureSlotCount; ++slot) {
+            const MtoonTextureSlot& s = kMtoonTextureSlots[slot];
+            const size_t fallback = mtoon_textures_.size() - (s.black_when_absent ? 1 : 2);
+            mtoon_textures_[known ? material_mtoon_[r.material][size_t(slot)] : fallback].bind(
+                texture_unit + 1 + GLuint(slot), s.color ? texels : gpu::Texels::AsStored);
+        }
         draw_indices(r.first, r.count);
     }
 }

@@ -7,12 +7,14 @@
 #pragma once
 #include <epoxy/gl.h>
 
+#include <array>
 #include <functional>
 #include <vector>
 
 #include "gpu/base_texture.hpp"
 #include "gpu/gl_handle.hpp"
 #include "inkshade/mesh.hpp"
+#include "render/mtoon_textures.hpp"
 
 namespace inkshade::render {
 
@@ -39,6 +41,9 @@ public:
 
     // Uvs and a texture are uploaded: shaders read them under INKSHADE_BASE_TEXTURE.
     bool textured() const { return !textures_.empty(); }
+    // Some material has MToon textures (Material::mtoon_textures) and the mesh has uvs: each
+    // draw_by_material range binds them (render/mtoon_textures.hpp).
+    bool has_mtoon_textures() const { return !mtoon_textures_.empty(); }
     // Some material carries VRM MToon values (Material::mtoon).
     bool has_material_params() const { return has_material_params_; }
     // Colours of its own: a vertex or material colour other than white, or a texture (what a
@@ -47,16 +52,14 @@ public:
     // The faces material by material (sorted by material when the mesh is textured or has
     // material parameters, else one range in file order, exactly as draw()). Before each range
     // its texture is bound to `texture_unit` (a white texel for materials without one), read as
-    // `texels` says, when the mesh is textured, and `before` gets the range's material (null: none).
+    // `texels` says, when the mesh is textured, its MToon textures to the units after it (an
+    // absent one as its slot's fallback; colour ones read as `texels` says, data as stored) when
+    // the mesh has them, and `before` gets the range's material (null: none) and says whether
+    // to draw it (mtoon's outline skips materials without one).
     void draw_by_material(GLuint texture_unit, gpu::Texels texels,
-                          const std::function<void(const Material*)>& before) const;
+                          const std::function<bool(const Material*)>& before) const;
     // Some material is drawn without lighting (Material::unlit).
     bool has_unlit_materials() const { return has_unlit_materials_; }
-    // The faces material by material (sorted by material when the mesh is textured, has
-    // material parameters or unlit materials, else one range in file order, exactly as draw()). Before each range
-    // its texture is bound to `texture_unit` (a white texel for materials without one) when the
-    // mesh is textured, and `before` gets the range's material (null: none).
-    void draw_by_material(GLuint texture_unit, const std::function<void(const Material*)>& before) const;
 
     // The (part, material) ids of each object id (attribute 4) from 1: the id and material AOVs.
     const std::vector<glm::uvec2>& object_parts() const { return object_parts_; }
@@ -67,6 +70,7 @@ public:
 
 private:
     void upload_materials(const Mesh& mesh, bool has_face_materials);
+    void upload_mtoon_textures(const Mesh& mesh);
     // Faces sorted by material when materials change what a draw binds, else in file order.
     void upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& faces, bool has_face_materials);
     void make_vertex_array();
@@ -85,6 +89,10 @@ private:
     std::vector<Material> materials_;         // names, colours and MToon values; no pixels
     std::vector<gpu::BaseTexture> textures_;  // each distinct image once, then the white texel
     std::vector<size_t> material_texture_;    // per material: index into textures_
+    // MToon textures: each distinct image once, then white and black; per material and slot an
+    // index into them.
+    std::vector<gpu::BaseTexture> mtoon_textures_;
+    std::vector<std::array<size_t, kMtoonTextureSlotCount>> material_mtoon_;
     bool has_material_params_ = false;
     bool has_own_colors_ = false;
     bool has_unlit_materials_ = false;

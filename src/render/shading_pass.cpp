@@ -12,6 +12,7 @@
 #include "render/color_convention.hpp"
 #include "render/back_faces.hpp"
 #include "render/frame.hpp"
+#include "render/mtoon_textures.hpp"
 #include "render/surface_lines.hpp"
 
 namespace inkshade::render {
@@ -79,6 +80,26 @@ bool casts_shadows(const Frame& frame) {
     return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
 }
 
+// The MToon textures' samplers, in the units after the base colour's (GpuMesh::draw_by_material).
+void set_mtoon_samplers(gpu::ShaderProgram& program) {
+    for (int slot = 0; slot < kMtoonTextureSlotCount; ++slot)
+        program.set(kMtoonTextureSlots[slot].sampler, int(kBaseTextureUnit) + 1 + slot);
+}
+
+// mtoon's outline is on in `values`: a width mode other than none and a width above 0.
+bool outline_on(const ShadingModel& model, const ParamValues& values) {
+    const ParamSpec* mode = model.param("outline-width-mode");
+    const ParamSpec* width = model.param("outline-width");
+    return mode && width && value_or_default(*mode, values).at(0) != 0.0f &&
+           value_or_default(*width, values).at(0) > 0.0f;
+}
+
+// The model draws an outline: its values turn it on, or materials may carry their own
+// (Material::mtoon, whose outline values replace the style's per material).
+bool draws_outline(const ShadingModel& model, const ParamValues& values, bool material_params) {
+    return model.param("outline-width-mode") && (outline_on(model, values) || material_params);
+}
+
 // What C is made of (BaseColorUse, docs/shading.md "Base colour"): the base colour, and
 // whether the mesh's vertex/material colours and textures multiply it.
 struct Albedo {
@@ -137,11 +158,13 @@ public:
         const bool material_params =
             mesh.has_material_params() && param_on(model, shading.params, "use-material-params");
         const bool unlit = mesh.has_unlit_materials() && !model.debug_view;
+        // A VRM material's MToon textures go with its values (use-material-params).
+        const bool mtoon_textures = material_params && mesh.has_mtoon_textures() && model.param("matcap-color");
         const SurfaceLines surface_lines{frame.line("rim-contour")};
         // A mesh whose colours are all white needs no variant to leave them out.
         const bool base_color_only = !c.mesh_colors && mesh.has_own_colors();
-        gpu::ShaderProgram& program =
-            program_for(model, shading.params, surface_lines, textured, base_color_only, unlit, frame.light);
+        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, mtoon_textures,
+                                                  base_color_only, unlit, /*outline=*/false, frame.light);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -165,6 +188,7 @@ public:
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
         if (textured || material_params || unlit) program.set("u_base_texture", int(kBaseTextureUnit));
+        if (mtoon_textures) set_mtoon_samplers(program);
         // Two-sided (open meshes show their lit inside), front faces winning depth ties
         // (render/back_faces.hpp); back faces culled when none can be seen.
         draw_front_then_back(frame, program, [&] {
@@ -173,21 +197,66 @@ public:
                 if (material_params)
                     upload_params(program, model, with_material_params(model, shading.params, material));
                 if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
+                return true;
             });
         });
+        if (draws_outline(model, shading.params, material_params))
+            draw_outline(frame, c, convention, textured, mtoon_textures, base_color_only, material_params);
     }
 
 private:
+    // mtoon's outline (three-vrm's second draw of an MToon material, shaders/shading/mtoon_outline.glsl):
+    // back faces moved out along their normals, depth-tested (three.js's LessEqual) and written
+    // against the model just drawn, material by material when the materials carry their own
+    // outline values; unlit materials have none (they are not MToon materials).
+    void draw_outline(const Frame& frame, const Albedo& c, ColorConvention convention, bool textured,
+                      bool mtoon_textures, bool base_color_only, bool material_params) {
+        const ShadingModel& model = frame.model;
+        const ParamValues& params = frame.shading.params;
+        gpu::ShaderProgram& program =
+            program_for(model, params, SurfaceLines{nullptr}, textured, mtoon_textures, base_color_only,
+                        /*unlit=*/false, /*outline=*/true, frame.light);
+        program.use();
+        set_frame_uniforms(program, frame, c, convention);
+        program.set("u_projection", frame.camera.projection(frame.aspect()));
+        if (casts_shadows(frame)) {
+            program.set("u_shadow_map", int(kShadowUnit));
+            program.set("u_light_view_proj", *frame.targets.shadow_light);
+            program.set("u_shadow_texel_world", frame.bounds.diagonal() / float(frame.targets.shadow_map->size()));
+        }
+        upload_params(program, model, params);
+        if (textured || material_params) program.set("u_base_texture", int(kBaseTextureUnit));
+        if (mtoon_textures) set_mtoon_samplers(program);
+        const gpu::DepthScope depth(GL_LEQUAL, /*write=*/true);
+        const gpu::CullScope cull(GL_FRONT);
+        const BackFacePushScope push(frame, program);
+        GpuMesh& mesh = *frame.mesh;
+        if (!textured && !material_params) return mesh.draw();
+        mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
+            if (!material_params) return true;
+            if (material && material->unlit) return false;
+            const ParamValues merged = with_material_params(model, params, material);
+            if (!outline_on(model, merged)) return false;
+            upload_params(program, model, merged);
+            return true;
+        });
+    }
+
     // One compiled variant per model and compile-time parameter values (#defines, not uniform
     // branches: llvmpipe executes switched-off branches too). A shadow-casting model's
     // `shadows` parameter is one of them (INKSHADE_SHADOWS, common/shadow.glsl). `textured`:
     // the variant that samples the base-colour texture (INKSHADE_BASE_TEXTURE);
     // `base_color_only`: the one that leaves out the vertex/material colours (BaseColorUse::Only).
     // `unlit`: the one that draws unlit materials as they are (INKSHADE_UNLIT). A model file's
-    // spot light and physical falloff (common/lighting.glsl) are variants too.
+    // spot light and physical falloff (common/lighting.glsl) are variants too, and so is mtoon's
+    // outline draw (`outline`: INKSHADE_MTOON_OUTLINE) and its materials' textures
+    // (`mtoon_textures`: INKSHADE_MTOON_TEXTURES).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured, bool base_color_only, bool unlit, const Light& light) {
+                                    bool textured, bool mtoon_textures, bool base_color_only, bool unlit, bool outline,
+                                    const Light& light) {
         std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
+        if (mtoon_textures) defines += "#define INKSHADE_MTOON_TEXTURES 1\n";
+        if (outline) defines += "#define INKSHADE_MTOON_OUTLINE 1\n";
         if (base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
         if (unlit) defines += "#define INKSHADE_UNLIT 1\n";

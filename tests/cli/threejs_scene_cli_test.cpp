@@ -105,15 +105,16 @@ TEST(ThreejsSceneCli, ToonOutlineSceneAndEquivalentStyleAndFlagsGiveByteIdentica
     EXPECT_GT(outline, 50);
 }
 
-// three-vrm's MToonMaterial under a point light with intensity, decay and distance and an
-// orthographic camera: the scene and the flags it stands for (the mtoon model's threejs
+// three-vrm's MToonMaterial with a screen-coordinates outline under a point light with intensity,
+// decay and distance and an orthographic camera: the scene and the flags it stands for (the mtoon model's threejs
 // convention is its default; the scene turns shadows off as three.js does by default).
 const char* kMtoonScene = R"({
   "mesh": "builtin:torus-knot",
   "material": {"type": "MToonMaterial", "color": [0.9, 0.6, 0.4], "shadeColorFactor": [0.3, 0.2, 0.45],
                "shadingShiftFactor": -0.1, "shadingToonyFactor": 0.7, "parametricRimColorFactor": [0.5, 0.4, 0.3],
                "parametricRimFresnelPowerFactor": 2, "parametricRimLiftFactor": 0.05, "rimLightingMixFactor": 0.5,
-               "giEqualizationFactor": 0.9},
+               "giEqualizationFactor": 0.9, "outlineWidthMode": "screenCoordinates", "outlineWidthFactor": 0.02,
+               "outlineColorFactor": [0.1, 0.05, 0.2], "outlineLightingMixFactor": 0.5},
   "lights": [
     {"type": "PointLight", "color": [1, 0.9, 0.8], "intensity": 30, "position": [2, 3, 4], "decay": 1.5,
      "distance": 12},
@@ -128,7 +129,8 @@ const char* kMtoonScene = R"({
 const char* kMtoonFlags =
     "builtin:torus-knot --shading mtoon --base-color 0.9,0.6,0.4 --set shade-color=0.3,0.2,0.45 "
     "--set shading-shift=-0.1 --set shading-toony=0.7 --set rim-color=0.5,0.4,0.3 --set rim-fresnel-power=2 "
-    "--set rim-lift=0.05 --set rim-lighting-mix=0.5 --set shadows=false --light-type point "
+    "--set rim-lift=0.05 --set rim-lighting-mix=0.5 --set shadows=false --set outline-width-mode=screen-coordinates "
+    "--set outline-width=0.02 --set outline-color=0.1,0.05,0.2 --set outline-lighting-mix=0.5 --light-type point "
     "--light-color 1,0.9,0.8 --light-intensity 30 --light-decay 1.5 --light-distance 12 --light-pos 2,3,4 "
     "--ambient 0.2,0.2,0.25 --ortho --ortho-height 3 --near 0.1 --far 40 --eye 3,2,6 --target 0,0,0 "
     "--background '#ffffff' --size 160x120 --samples 1";

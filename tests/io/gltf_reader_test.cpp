@@ -320,6 +320,50 @@ TEST(GltfReader, VrmOneMToonExtensionIsRead) {
     EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.5f, 0.25f, 1.0f));  // VRM 1.0 keeps the glTF base colour
 }
 
+// VRMC_materials_mtoon's textureInfo objects become the material's MToon textures, decoded
+// like the base colour texture (images shared), and matcapFactor its matcap colour.
+TEST(GltfReader, VrmOneMToonTexturesAreRead) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    const std::vector<uint8_t> grey = {40, 80, 120, 255};
+    const int matcap = g.texture_in_buffer(png_bytes(1, 1, grey));
+    g.doc["materials"][0]["extensions"]["VRMC_materials_mtoon"] = {{"specVersion", "1.0"},
+                                                                   {"matcapFactor", {0.5, 0.25, 1}},
+                                                                   {"matcapTexture", {{"index", matcap}}},
+                                                                   {"rimMultiplyTexture", {{"index", 0}}},
+                                                                   {"outlineWidthMultiplyTexture", {{"index", 0}}}};
+    Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    const Material& mat = m.materials[0];
+    EXPECT_EQ(mat.mtoon.at("matcap-color"), (std::vector<float>{0.5f, 0.25f, 1}));
+    ASSERT_TRUE(mat.mtoon_textures.at("matcap-texture"));
+    EXPECT_EQ(mat.mtoon_textures.at("matcap-texture")->rgba, grey);
+    ASSERT_TRUE(mat.mtoon_textures.at("rim-multiply-texture"));
+    EXPECT_EQ(mat.mtoon_textures.at("rim-multiply-texture"), mat.texture);  // one image, decoded once
+    EXPECT_EQ(mat.mtoon_textures.at("outline-width-multiply-texture"), mat.texture);
+
+    // Without them: no MToon textures, the specification's matcap factor 1.
+    g.doc["materials"][0]["extensions"]["VRMC_materials_mtoon"] = {{"specVersion", "1.0"}};
+    Mesh plain = load_mesh(dir.write("plain.vrm", g.glb()));
+    EXPECT_TRUE(plain.materials[0].mtoon_textures.empty());
+    EXPECT_EQ(plain.materials[0].mtoon.at("matcap-color"), (std::vector<float>{1, 1, 1}));
+}
+
+// VRM 0.x: _SphereAdd, _RimTexture and _OutlineWidthTexture, as three-vrm's
+// VRMMaterialsV0CompatPlugin ports them.
+TEST(GltfReader, VrmZeroMToonTexturesAreRead) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    nlohmann::json props = vrm0_material_properties();
+    props[0]["textureProperties"] = {{"_SphereAdd", 0}, {"_RimTexture", 0}, {"_OutlineWidthTexture", 0}};
+    g.doc["extensions"]["VRM"] = {{"materialProperties", props}};
+    Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    const Material& mat = m.materials[0];
+    for (const char* key : {"matcap-texture", "rim-multiply-texture", "outline-width-multiply-texture"}) {
+        ASSERT_TRUE(mat.mtoon_textures.count(key)) << key;
+        EXPECT_EQ(mat.mtoon_textures.at(key)->rgba, kTexturePixels) << key;
+    }
+}
+
 TEST(GltfReader, PlainGltfMaterialHasNoMToonParameters) {
     TempDir dir;
     Mesh m = load_mesh(dir.write("quad.glb", textured_quad().glb()));

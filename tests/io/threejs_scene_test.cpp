@@ -67,6 +67,23 @@ TEST(ThreejsScene, MToonMaterialFieldsMapOntoTheMtoonModel) {
     EXPECT_EQ(s.params.at("convention"), ParamValue{1.0f});  // threejs
     EXPECT_EQ(s.params.at("shadows"), ParamValue{0.0f});     // three.js renders none by default
     EXPECT_EQ(s.param_fields.at("shading-toony"), "material.shadingToonyFactor");
+    EXPECT_EQ(s.params.at("matcap-color"), (ParamValue{1.0f, 1.0f, 1.0f}));
+    EXPECT_EQ(s.params.at("outline-width-mode"), ParamValue{0.0f});  // "none"
+    EXPECT_EQ(s.params.at("outline-width"), ParamValue{0.02f});
+
+    // The outline: outlineWidthMode by three-vrm's strings, the colour linear as THREE.Color holds it.
+    const ThreejsScene o = parse(R"({"mesh": "m.obj", "material": {"type": "MToonMaterial",
+        "outlineWidthMode": "screenCoordinates", "outlineWidthFactor": 0.004, "outlineColorFactor": "#ff0000",
+        "outlineLightingMixFactor": 0.25}})");
+    EXPECT_EQ(o.params.at("outline-width-mode"), ParamValue{2.0f});
+    EXPECT_EQ(o.params.at("outline-width"), ParamValue{0.004f});
+    EXPECT_EQ(o.params.at("outline-color"), (ParamValue{1.0f, 0.0f, 0.0f}));
+    EXPECT_EQ(o.params.at("outline-lighting-mix"), ParamValue{0.25f});
+    EXPECT_EQ(o.param_fields.at("outline-width-mode"), "material.outlineWidthMode");
+    EXPECT_EQ(
+        parse(R"({"mesh": "m.obj", "material": {"type": "MToonMaterial", "outlineWidthMode": "worldCoordinates"}})")
+            .params.at("outline-width-mode"),
+        ParamValue{1.0f});
 
     const std::string m = R"({"mesh": "m.obj", "material": {"type": "MToonMaterial", )";
     const auto error = [&](const std::string& fields) {
@@ -78,8 +95,9 @@ TEST(ThreejsScene, MToonMaterialFieldsMapOntoTheMtoonModel) {
         return std::string();
     };
     const std::string unsupported = "not supported by Inkshade's mtoon model yet";
-    EXPECT_EQ(error(R"("outlineWidthMode": "screenCoordinates")"),
-              "scene.json: material.outlineWidthMode: " + unsupported + " (accepted only as three-vrm's default)");
+    EXPECT_EQ(error(R"("outlineWidthMode": "screen")"),
+              "scene.json: material.outlineWidthMode: expected \"none\", \"worldCoordinates\" or "
+              "\"screenCoordinates\", got \"screen\"");
     EXPECT_NE(error(R"("emissive": "#100000")").find("material.emissive: " + unsupported), std::string::npos);
     EXPECT_NE(error(R"("matcapTexture": 0)").find("material.matcapTexture: " + unsupported), std::string::npos);
     EXPECT_NE(error(R"("uvAnimationRotationSpeedFactor": 1)").find(unsupported), std::string::npos);

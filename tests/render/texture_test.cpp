@@ -303,7 +303,7 @@ TEST(Texture, MtoonTakesEachMaterialsVrmParameters) {
     vrm.name = "face";
     vrm.mtoon["shade-color"] = {1.0f, 0.0f, 0.0f};
     vrm.mtoon["shading-toony"] = {0.9f};
-    vrm.mtoon["outline-width"] = {0.01f};  // not an mtoon model parameter: ignored
+    vrm.mtoon["outline-width"] = {0.01f};  // without an outline-width-mode: no outline
     plain.name = "plain";
     Mesh mesh = quad({vrm, plain}, 1);
     mesh.uvs.clear();  // no texture: material draws happen for the parameters alone

@@ -4,7 +4,8 @@ namespace inkshade {
 // Defaults are three-vrm 3.5's MToonMaterial's (its uniforms' initial values, linear colours),
 // so `--shading mtoon` renders what `new MToonMaterial()` renders on three.js r187: shade colour
 // (0.97, 0.81, 0.86), shift 0, toony 0.9, rim colour 0, fresnel power 1, lift 0, rim lighting
-// mix 0, and the threejs convention (1/pi light units, sRGB output). A VRM file's materials
+// mix 0, no outline (width 0, colour black, lighting mix 1), and the threejs convention (1/pi
+// light units, sRGB output). A VRM file's materials
 // carry the VRMC_materials_mtoon specification's defaults instead (io/gltf_reader.cpp).
 // Shadows on: anime-style renderers cast hard shadows from a shadow map.
 // use-material-params: a VRM avatar's materials (face, hair, clothes) each carry their own
@@ -30,13 +31,24 @@ static const ShadingModelRegistration mtoon_model{{
                         "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
             float_param("rim-lighting-mix", 0.0f, 0.0f, 1.0f,
                         "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
+            color_param("matcap-color", glm::vec3(1.0f),
+                        "matcap texture factor, linear (MToon matcapFactor; the texture comes with a VRM material)"),
+            choice_param("outline-width-mode", {"none", "world-coordinates", "screen-coordinates"}, 0,
+                         "outline: none, or back faces pushed out along the normal by outline-width world "
+                         "units or by outline-width of the image height at clip w 1 (MToon outlineWidthMode)"),
+            float_param("outline-width", 0.0f, 0.0f, 100.0f,
+                        "outline width: world units, or a fraction of the image height (MToon outlineWidthFactor)"),
+            color_param("outline-color", glm::vec3(0.0f), "outline colour, linear (MToon outlineColorFactor)"),
+            float_param("outline-lighting-mix", 1.0f, 0.0f, 1.0f,
+                        "0: outline-color as is, 1: times the lit MToon colour (MToon outlineLightingMixFactor)"),
             choice_param("convention", {"seeds", "threejs"}, 1,
                          "threejs: 1/pi light units, three.js's point-light falloff, sRGB output (three-vrm); "
                          "seeds: values as they are, no 1/pi, no sRGB (the display convention of the other models)"),
             compile_time(bool_param("shadows", true, "cast shadows from a shadow map (2048^2, PCF)")),
             float_param("shadow-softness", 1.5f, 0.0f, 4.0f, "PCF filter radius in shadow-map texels"),
-            bool_param("use-material-params", true,
-                       "materials' VRM MToon values (shade colour, shift, toony, rim) replace these per material"),
+            bool_param(
+                "use-material-params", true,
+                "materials' VRM MToon values (shade colour, shift, toony, rim, outline) replace these per material"),
         },
 }};
 }  // namespace inkshade
