@@ -35,6 +35,7 @@ struct BatchArgs {
     std::string up_axis;
     std::optional<float> smooth_angle;
     std::optional<float> light_intensity;
+    std::string occlusion_levels;
     std::string lights = "style";
     std::string aov;
     float margin = 0.05f;
@@ -117,6 +118,7 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.lights = parse_light_source("--lights", a.lights);
     d.margin = a.margin;
     d.aovs = parse_aov_list("--aov", a.aov);
+    if (!a.occlusion_levels.empty()) d.occlusion_levels = parse_occlusion_levels(a.occlusion_levels);
     return d;
 }
 
@@ -235,6 +237,10 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--light-intensity", args->light_intensity,
                     "light intensity (E = light colour x intensity, as render --light-intensity) where the "
                     "manifest gives none");
+    cmd->add_option("--occlusion-levels", args->occlusion_levels,
+                    "occlusion levels of each SVG where the manifest gives none, A-B as `lines --occlusion-levels` "
+                    "(default 0-0 = visible only; levels above 0 are dashed layers TYPE-hidden-N; the PNG draws "
+                    "visible lines)");
     cmd->add_option("--aov", args->aov,
                     "AOVs beside each image where the manifest gives none: depth, normal, id, material, mask, lines, "
                     "camera (docs/aov.md)");

@@ -12,6 +12,7 @@
 
 #include "inkshade/aov.hpp"
 #include "inkshade/camera.hpp"
+#include "inkshade/scene.hpp"
 
 namespace inkshade {
 
@@ -40,6 +41,9 @@ struct BatchJob {
     LightSource lights = LightSource::Style;  // File: the model file's light (SceneRequest::lights)
     std::optional<float> light_intensity;     // SceneRequest::light_intensity; unset: the style's
     AovSet aovs;                              // AOV files beside STEM.png (docs/aov.md)
+    // SceneRequest::occlusion_levels of STEM.svg (dashed layers TYPE-hidden-N); unset: visible
+    // lines only. The image draws visible lines whatever this says.
+    std::optional<OcclusionLevels> occlusion_levels;
 };
 
 // What a manifest line (or --models) leaves out.
@@ -56,6 +60,7 @@ struct BatchDefaults {
     float margin = 0.05f;  // auto-framing's margin (CameraOptions::margin)
     std::optional<float> light_intensity;  // SceneRequest::light_intensity
     AovSet aovs;                           // --aov
+    std::optional<OcclusionLevels> occlusion_levels;  // --occlusion-levels
 };
 
 // A view list: items separated by ',' or ';' —
@@ -81,7 +86,7 @@ std::string model_name(const std::string& model);
 // of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
 // Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
 // name, views (or view), styles (or style), size, format, fov, ortho, up-axis, smooth-angle,
-// lights, light-intensity, margin, aov, output;
+// lights, light-intensity, margin, aov, occlusion-levels, output;
 // docs/cli.md#batch.
 // Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
 // Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two

@@ -57,6 +57,10 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
             " svg=" + (job.outputs.svg ? "1" : "0");
     // Only jobs with AOVs add to the text, so earlier jobs keep their hashes.
     if (!job.aovs.empty()) text += " aov=" + format_aov_set(job.aovs);
+    // Likewise only jobs with occlusion levels (their SVG has other layers).
+    if (job.occlusion_levels)
+        text += " occlusion-levels=" + std::to_string(job.occlusion_levels->min) + "-" +
+                std::to_string(job.occlusion_levels->max);
     text += "\n";
     text += "style=" + job.style + "\n";
     text += style_text;

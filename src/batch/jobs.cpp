@@ -96,6 +96,7 @@ JobGroup default_group(const BatchDefaults& d) {
     g.lights = d.lights;
     g.margin = d.margin;
     g.aovs = d.aovs;
+    g.occlusion_levels = d.occlusion_levels;
     return g;
 }
 
@@ -140,6 +141,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.smooth_angle = group.smooth_angle;
             job.light_intensity = group.light_intensity;
             job.aovs = group.aovs;
+            job.occlusion_levels = group.occlusion_levels;
             out.push_back(std::move(job));
         }
     }

@@ -27,6 +27,7 @@ struct JobGroup {
     LightSource lights = LightSource::Style;
     float margin = 0.05f;  // CameraOptions::margin
     AovSet aovs;
+    std::optional<OcclusionLevels> occlusion_levels;
     std::string source;
 };
 

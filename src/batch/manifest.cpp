@@ -25,10 +25,11 @@ using batch::JobGroup;
 
 const std::set<std::string> kColumns = {"model",   "name",         "views",  "view",   "styles",          "style",
                                         "size",    "format",       "fov",    "ortho",  "up-axis",         "smooth-angle",
-                                        "lights",  "light-intensity", "margin", "aov", "output"};
+                                        "lights",  "light-intensity", "margin", "aov", "occlusion-levels",
+                                        "output"};
 const char* kColumnList =
     "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, light-intensity, margin, "
-    "aov, output";
+    "aov, occlusion-levels, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -93,6 +94,8 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.lights = parse_light_source("lights", value);
     } else if (key == "aov") {
         g.aovs = parse_aov_list("aov", value);
+    } else if (key == "occlusion-levels") {
+        g.occlusion_levels = parse_occlusion_levels(value);
     } else if (key == "light-intensity") {
         double v = 0;
         auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
@@ -195,6 +198,7 @@ void parse_csv(const std::vector<std::pair<int, std::string_view>>& lines, const
 std::string json_text(const std::string& key, const nlohmann::json& v) {
     if (v.is_string()) return v.get<std::string>();
     if (v.is_boolean() && key == "ortho") return v.get<bool>() ? "true" : "false";
+    if (v.is_number_integer() && key == "occlusion-levels") return std::to_string(v.get<long long>());
     if (v.is_number() && (key == "fov" || key == "margin" || key == "light-intensity")) {
         const double d = v.get<double>();
         if (!std::isfinite(d)) throw InputError(key + ": not a finite number");

@@ -99,6 +99,7 @@ std::string format_metadata(const JobRecord& r) {
     if (!job.view.file_camera.empty()) j["view"]["file_camera"] = job.view.file_camera;  // camera=NAME
     if (job.lights == LightSource::File) j["lights"] = "file";
     if (job.light_intensity) j["light_intensity"] = *job.light_intensity;
+    if (job.occlusion_levels) j["occlusion_levels"] = {job.occlusion_levels->min, job.occlusion_levels->max};
     j["camera"] = {{"eye", vec3(r.camera.eye)},
                    {"target", vec3(r.camera.target)},
                    {"up", vec3(r.camera.up)},

@@ -288,6 +288,7 @@ private:
         request.file_camera = job.view.file_camera;
         request.lights = job.lights;
         request.light_intensity = job.light_intensity;
+        request.occlusion_levels = job.occlusion_levels;
         request.samples = options_.samples;
         for (size_t a = 0; a < aov_names().size(); ++a)
             if (job.aovs.contains(Aov(a))) request.aovs.push_back(aov_names()[a]);

@@ -159,6 +159,31 @@ TEST(BatchManifest, LightIntensityColumnAndDefaultReachTheJob) {
     }
 }
 
+TEST(BatchManifest, OcclusionLevelsColumnAndDefaultReachTheJob) {
+    BatchDefaults d;
+    d.occlusion_levels = OcclusionLevels{0, 1};
+    const auto jobs = parse_manifest("model,occlusion-levels\nx.stl,1-\ny.stl,\n", "m.csv", d);
+    ASSERT_EQ(jobs.size(), 2u);
+    ASSERT_TRUE(jobs[0].occlusion_levels && jobs[1].occlusion_levels);
+    EXPECT_EQ(jobs[0].occlusion_levels->min, 1);
+    EXPECT_EQ(jobs[0].occlusion_levels->max, kMaxOcclusionLevel);
+    EXPECT_EQ(jobs[1].occlusion_levels->max, 1);  // the default
+    const auto json = parse_manifest("{\"model\": \"x.stl\", \"occlusion-levels\": 2}\n", "m.jsonl");
+    ASSERT_TRUE(json[0].occlusion_levels);
+    EXPECT_EQ(json[0].occlusion_levels->min, 2);
+    EXPECT_EQ(json[0].occlusion_levels->max, 2);
+    // Part of the job hash when given (other SVG layers), absent otherwise (earlier jobs keep
+    // their hashes).
+    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    BatchJob plain = jobs[1];
+    plain.occlusion_levels.reset();
+    EXPECT_EQ(job_hash(plain, "", -1, 4).size(), job_hash(jobs[1], "", -1, 4).size());
+    EXPECT_NE(job_hash(plain, "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    EXPECT_EQ(input_error([] { parse_manifest("model,occlusion-levels\nx.stl,2-1\n", "m.csv"); }),
+              "m.csv:2: occlusion levels: expected A-B with 0 <= A <= B <= 253 (0 = visible), A, or A- for A and "
+              "deeper; got '2-1'");
+}
+
 TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
     // No extension: '{' means JSON Lines, anything else CSV.
     EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);

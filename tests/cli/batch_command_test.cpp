@@ -353,6 +353,24 @@ TEST_F(BatchCommand, OutputsEqualRenderAndLinesCommands) {
     EXPECT_EQ(meta["svg_lines"], nlohmann::json({"contour", "suggestive", "crease", "border"}));
 }
 
+// Occlusion levels per job give the SVG `inkshade lines --occlusion-levels` gives (its dashed
+// layers), in the metadata too; the PNG still draws visible lines only.
+TEST_F(BatchCommand, OcclusionLevelsGiveTheLinesCommandsSvg) {
+    const std::string manifest = dir_.write("levels.csv",
+                                            "model,views,styles,format,up-axis,occlusion-levels\n"
+                                            "builtin:torus,20:20,ink-vector,\"png,svg\",z,0-1\n");
+    ASSERT_EQ(batch(manifest + " -o " + out() + " --size 120x90 -q").status, 0);
+    const std::string camera = " --style ink-vector --size 120x90 --up-axis z --azimuth 20 --elevation 20 ";
+    ASSERT_EQ(run_cli("lines builtin:torus" + camera + "--occlusion-levels 0-1 -o " + dir_.file("l.svg")).status, 0);
+    ASSERT_EQ(run_cli("render builtin:torus" + camera + "-o " + dir_.file("r.png")).status, 0);
+    const std::string svg = slurp(out() + "/torus/ink-vector/az020_el20.svg");
+    EXPECT_EQ(svg, slurp(dir_.file("l.svg")));
+    EXPECT_NE(svg.find("<g id=\"contour-hidden-1\""), std::string::npos) << "a torus hides part of its contour";
+    EXPECT_EQ(slurp(out() + "/torus/ink-vector/az020_el20.png"), slurp(dir_.file("r.png")));
+    const auto meta = nlohmann::json::parse(slurp(out() + "/torus/ink-vector/az020_el20.json"));
+    EXPECT_EQ(meta["occlusion_levels"], nlohmann::json({0, 1}));
+}
+
 TEST_F(BatchCommand, ModelsDirectoryWithDryRunListsJobsAndWritesNothing) {
     fs::create_directories(dir_.path() / "models/sub");
     dir_.write("models/a.obj", cube_obj());
