@@ -1,7 +1,8 @@
 """Inkshade: toon/NPR shading and line drawing for triangle meshes (headless OpenGL).
 
 The renderer is the compiled extension ``inkshade._inkshade``; this package re-exports all of
-it (docs/library.md); pure-Python parts sit beside it.
+it (docs/library.md) and adds pure-Python parts: ``inkshade.dask`` maps a batch manifest over a
+Dask cluster (docs/cluster.md).
 """
 from . import _inkshade
 from ._inkshade import *  # noqa: F401,F403 - every function and class of the extension

@@ -20,10 +20,10 @@ import zipfile
 SOURCE_DIR = os.environ["INKSHADE_SOURCE_DIR"]
 BUILD_DIR = os.environ["INKSHADE_CMAKE_BUILD_DIR"]
 
-# From another directory: the installed package, working, its metadata.
+# From another directory: the installed package, working, its metadata, its Dask part.
 CHECK = """
 import importlib.metadata, os, sys
-import inkshade
+import inkshade, inkshade.dask
 r = inkshade.Renderer()
 r.set_mesh(inkshade.load_mesh("builtin:sphere"))
 image = r.render("anime", size=(40, 30))
@@ -90,6 +90,7 @@ class PackageTest(unittest.TestCase):
                 names = wheel.namelist()
                 package = sorted(n for n in names if not n.startswith("inkshade-"))
                 self.assertIn("inkshade/__init__.py", package)
+                self.assertIn("inkshade/dask.py", package)
                 extensions = [n for n in package if n.endswith(".so")]
                 self.assertEqual(len(extensions), 1, package)  # no libinkshade.so beside it
                 self.assertRegex(extensions[0], r"^inkshade/_inkshade\.cpython-.*\.so$")
