@@ -14,6 +14,7 @@
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/scene.hpp"
+#include "inkshade/version.hpp"
 
 namespace py = pybind11;
 using namespace inkshade;
@@ -243,8 +244,9 @@ Scene line_scene(std::optional<std::vector<std::string>> types, const std::strin
 
 }  // namespace
 
-PYBIND11_MODULE(inkshade, m) {
+PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inkshade
     m.doc() = "Inkshade: toon/NPR shading and line drawing for triangle meshes (headless OpenGL).";
+    m.attr("__version__") = kVersion;
     // InputError (bad files, names, values) arrives as ValueError, RuntimeError as RuntimeError.
     py::register_exception_translator([](std::exception_ptr p) {
         try {
