@@ -28,6 +28,16 @@ struct Texture {
     std::vector<uint8_t> rgba;  // width * height * 4 bytes, row-major, top row first
 };
 
+// glTF 2.0 section 3.9.4 alpha modes: alpha ignored (OPAQUE), a cut-out where alpha is below
+// the cutoff (MASK), or blended over what lies behind (BLEND).
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// Which faces of a material are drawn and how their back faces are lit: both, each lit as the
+// side the viewer sees (Inkshade's default for formats that say nothing); front faces only
+// (glTF doubleSided false, three.js FrontSide); both, back faces lit with the normal negated
+// (glTF doubleSided true, three.js DoubleSide).
+enum class FaceSides { Seen, Front, Double };
+
 struct Material {
     std::string name;
     glm::vec3 diffuse{0.8f, 0.8f, 0.8f};  // MTL Kd / glTF baseColorFactor.rgb, linear (glTF 2.0 §3.9.2)
@@ -51,6 +61,17 @@ struct Material {
     // glTF KHR_materials_unlit: drawn in its base colour (x texture x vertex colour) without
     // lighting, whatever the shading model.
     bool unlit = false;
+    // Coverage (glTF baseColorFactor.a, times the texture's alpha), what it does, and the sides.
+    float alpha = 1.0f;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;  // MASK: kept where alpha >= cutoff (three.js alphaTest)
+    FaceSides sides = FaceSides::Seen;
+    // BLEND: depth written too (VRMC_materials_mtoon transparentWithZWrite; glTF BLEND writes none,
+    // as three.js's GLTFLoader sets depthWrite false), and the draw order among blended materials,
+    // lowest first (three.js Object3D.renderOrder, which three-vrm sets to renderQueueOffsetNumber
+    // plus 19 without z-write, 0 with it, for MToon materials).
+    bool blend_depth_write = false;
+    int render_order = 0;
 };
 
 struct BoundingBox {

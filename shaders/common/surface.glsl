@@ -19,6 +19,27 @@ uniform sampler2D u_base_texture;
 
 layout(location = 0) out vec4 o_color;
 
+// Per draw, a glTF material's sides: 1 lights back faces with the normal negated, as three.js's
+// DoubleSide does (normal *= faceDirection); 0 keeps Inkshade's seen_normal.
+uniform int u_double_sided;
+
+#ifdef INKSHADE_MATERIAL_ALPHA
+// Per draw, a glTF material's alpha mode (0 OPAQUE, 1 MASK, 2 BLEND; Material::alpha_mode),
+// baseColorFactor.a and alphaCutoff; common/shading_main.glsl applies them.
+uniform int u_alpha_mode;
+uniform float u_base_alpha;
+uniform float u_alpha_cutoff;
+
+// three.js's diffuseColor.a: opacity (baseColorFactor.a) x the base-colour texture's alpha.
+float surface_alpha() {
+    float a = u_base_alpha;
+#ifdef INKSHADE_BASE_TEXTURE
+    a *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).a;
+#endif
+    return a;
+}
+#endif
+
 uniform vec3 u_bbox_min;      // model-space bounding box, for patterns normalised to the model
 uniform vec3 u_bbox_max;
 uniform vec2 u_viewport_size; // pixels
@@ -32,7 +53,7 @@ vec3 normalized_object_pos() {
 
 struct Surface {
     vec3 p;       // world position
-    vec3 n;       // unit normal, turned towards the viewer on back faces (two-sided, seen_normal)
+    vec3 n;       // unit normal, turned towards the viewer on back faces (seen_normal) or negated (u_double_sided)
     vec3 v;       // unit vector towards the viewer
     vec3 l;       // unit vector towards the light
     vec3 albedo;  // C = base colour x vertex/material colour x texture
@@ -43,7 +64,8 @@ Surface surface() {
     s.p = v_world_pos;
     s.v = to_viewer(s.p);
     // Back faces of open meshes are lit as seen (no inside-out rim glow or lighting).
-    s.n = seen_normal(normalize(v_world_normal), s.v, gl_FrontFacing);
+    vec3 n = normalize(v_world_normal);
+    s.n = (u_double_sided == 1) ? (gl_FrontFacing ? n : -n) : seen_normal(n, s.v, gl_FrontFacing);
     s.l = to_light(s.p);
     s.albedo = u_base_color * v_color;
 #ifdef INKSHADE_BASE_TEXTURE

@@ -12,8 +12,8 @@
 // - TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN primitives (3.7.2.1); points and lines skipped;
 // - POSITION, NORMAL, TEXCOORD_n, COLOR_0 in any component type the spec or
 //   KHR_mesh_quantization allows, sparse accessors (3.6.2.3), accessors without a bufferView;
-// - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), KHR_materials_unlit,
-//   VRM 0.x and VRM 1.0 MToon parameters;
+// - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), alphaMode, alphaCutoff
+//   and doubleSided (3.9.4-3.9.5), KHR_materials_unlit, VRM 0.x and VRM 1.0 MToon parameters;
 // - the nodes' cameras (3.10) and KHR_lights_punctual lights (gltf_cameras_lights.cpp).
 #include <fstream>  // tiny_gltf.h's writers use std::ofstream but include <fstream> only without TINYGLTF_NO_FS
 
@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -593,6 +594,31 @@ std::vector<float> gamma_decode(std::vector<float> c) {
     return c;
 }
 
+// glTF alphaMode, alphaCutoff, doubleSided and baseColorFactor's alpha (sections 3.9.4, 3.9.5),
+// as three.js's GLTFLoader reads them; the default material is opaque and single-sided.
+void read_alpha_and_sides(const tinygltf::Material& g, Material& m) {
+    const std::vector<double>& f = g.pbrMetallicRoughness.baseColorFactor;
+    m.alpha = f.size() >= 4 && std::isfinite(f[3]) ? std::clamp(float(f[3]), 0.0f, 1.0f) : 1.0f;
+    m.alpha_mode = g.alphaMode == "MASK"    ? AlphaMode::Mask
+                   : g.alphaMode == "BLEND" ? AlphaMode::Blend
+                                            : AlphaMode::Opaque;
+    m.alpha_cutoff = std::isfinite(g.alphaCutoff) ? float(std::max(g.alphaCutoff, 0.0)) : 0.5f;
+    m.sides = g.doubleSided ? FaceSides::Double : FaceSides::Front;
+}
+
+// three-vrm's MToonMaterialLoaderPlugin: an MToon material's mesh gets renderOrder
+// renderQueueOffsetNumber + (transparentWithZWrite ? 0 : 19), and the z-write flag sets depthWrite.
+void mtoon_render_order(Material& m, bool z_write, double queue_offset) {
+    m.blend_depth_write = z_write;
+    m.render_order = (z_write ? 0 : 19) + int(std::clamp(queue_offset, -1e6, 1e6));
+}
+
+bool keyword_on(const tinygltf::Value& props, const char* key) {
+    if (!props.IsObject() || !props.Has("keywordMap")) return false;
+    const tinygltf::Value& k = props.Get("keywordMap");
+    return k.IsObject() && k.Has(key) && k.Get(key).IsBool() && k.Get(key).Get<bool>();
+}
+
 // MToon 1.0 defaults (the VRM MToon 1.0 specification, VRMC_materials_mtoon; docs/shading.md).
 std::map<std::string, std::vector<float>> mtoon_defaults() {
     return {{"shade-color", {0, 0, 0}},   {"shading-shift", {0}},        {"shading-toony", {0.9f}},
@@ -680,6 +706,7 @@ public:
             const tinygltf::Value& list = vrm->second.Get("materialProperties");
             if (list.IsArray()) v0_ = &list;
         }
+        if (v0_) v0_queue_maps();
     }
 
     // Mesh material index for glTF material `gltf` (-1 or out of range: the default material,
@@ -689,8 +716,9 @@ public:
             gltf >= 0 && size_t(gltf) < model_.materials.size() ? size_t(gltf) : model_.materials.size();
         if (index_[slot] == kNone) {
             index_[slot] = uint32_t(mesh_.materials.size());
-            mesh_.materials.push_back(slot == model_.materials.size() ? Material{"default", glm::vec3(1.0f)}
-                                                                      : build(slot));
+            Material fallback{"default", glm::vec3(1.0f)};
+            fallback.sides = FaceSides::Front;  // section 3.9.6: single-sided, opaque
+            mesh_.materials.push_back(slot == model_.materials.size() ? fallback : build(slot));
         }
         return index_[slot];
     }
@@ -703,6 +731,72 @@ public:
 
 private:
     static constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+    // VRM 0.x blending as three-vrm's VRMMaterialsV0CompatPlugin turns it into glTF and MToon 1.0:
+    // MToon's keywords _ALPHABLEND_ON / _ALPHATEST_ON (cutoff _Cutoff), _ZWrite, _CullMode 0 for
+    // double-sided, _Color's alpha as written; the VRM/Unlit* shaders by name (their whole _Color
+    // gamma-decoded, alpha too, and sides as the glTF material says).
+    void v0_alpha_and_sides(const tinygltf::Value& props, const std::string& shader, Material& m) const {
+        const tinygltf::Value& f = props.Has("floatProperties") ? props.Get("floatProperties") : props;
+        const tinygltf::Value& v = props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
+        const float alpha = numbers(v, "_Color", {1, 1, 1, 1})[3];
+        bool blend = false, z_write = false, cutout = false;
+        if (shader == "VRM/MToon") {
+            blend = keyword_on(props, "_ALPHABLEND_ON");
+            z_write = blend && number(f, "_ZWrite", 0.0) == 1.0;
+            cutout = keyword_on(props, "_ALPHATEST_ON");
+            m.alpha = std::clamp(alpha, 0.0f, 1.0f);
+            m.sides = number(f, "_CullMode", 2.0) == 0.0 ? FaceSides::Double : FaceSides::Front;
+        } else {
+            z_write = shader == "VRM/UnlitTransparentZWrite";
+            blend = z_write || shader == "VRM/UnlitTransparent";
+            cutout = shader == "VRM/UnlitCutout";
+            m.alpha = std::clamp(std::pow(std::max(alpha, 0.0f), 2.2f), 0.0f, 1.0f);
+        }
+        m.alpha_mode = blend ? AlphaMode::Blend : cutout ? AlphaMode::Mask : AlphaMode::Opaque;
+        m.alpha_cutoff = cutout ? float(std::max(number(f, "_Cutoff", 0.5), 0.0)) : 0.5f;
+        mtoon_render_order(m, z_write, v0_queue_offset(props, shader));
+    }
+
+    // VRM 0.x renderQueue of a transparent material as a 1.0 renderQueueOffsetNumber: the
+    // queues in use, in order, mapped to -n+1..0 (transparent, clamped at -9) or 0..n-1 (with
+    // z-write, clamped at 9), as three-vrm's _populateRenderQueueMap does.
+    static bool v0_transparent(const tinygltf::Value& props, const std::string& shader, bool* z_write) {
+        const tinygltf::Value& f = props.Has("floatProperties") ? props.Get("floatProperties") : props;
+        const bool unlit_z = shader == "VRM/UnlitTransparentZWrite";
+        const bool has_blend = props.Has("keywordMap") && props.Get("keywordMap").IsObject() &&
+                               props.Get("keywordMap").Has("_ALPHABLEND_ON");
+        *z_write = number(f, "_ZWrite", 0.0) == 1.0 || unlit_z;
+        return has_blend || shader == "VRM/UnlitTransparent" || unlit_z;
+    }
+    static std::string shader_of(const tinygltf::Value& props) {
+        return props.IsObject() && props.Has("shader") && props.Get("shader").IsString()
+                   ? props.Get("shader").Get<std::string>()
+                   : std::string();
+    }
+    void v0_queue_maps() {
+        std::set<double> plain, z;
+        for (size_t i = 0; i < v0_->ArrayLen(); ++i) {
+            const tinygltf::Value& props = v0_->Get(int(i));
+            bool z_write = false;
+            if (!props.IsObject() || !v0_transparent(props, shader_of(props), &z_write)) continue;
+            if (props.Has("renderQueue") && props.Get("renderQueue").IsNumber())
+                (z_write ? z : plain).insert(props.Get("renderQueue").GetNumberAsDouble());
+        }
+        int i = 0;
+        for (double q : plain) queue_plain_[q] = std::clamp(i++ - int(plain.size()) + 1, -9, 0);
+        i = 0;
+        for (double q : z) queue_z_[q] = std::clamp(i++, 0, 9);
+    }
+    double v0_queue_offset(const tinygltf::Value& props, const std::string& shader) const {
+        bool z_write = false;
+        if (!v0_transparent(props, shader, &z_write) || !props.Has("renderQueue") ||
+            !props.Get("renderQueue").IsNumber())
+            return 0.0;
+        const auto& map = z_write ? queue_z_ : queue_plain_;
+        const auto it = map.find(props.Get("renderQueue").GetNumberAsDouble());
+        return it == map.end() ? 0.0 : it->second;
+    }
 
     Material build(size_t i) {
         const tinygltf::Material& g = model_.materials[i];
@@ -717,11 +811,15 @@ private:
             mesh_.warnings.push_back(path_ + ": material '" + one_line(m.name) +
                                      "' uses KHR_texture_transform, which is ignored");
 
+        read_alpha_and_sides(g, m);
         const auto v1 = g.extensions.find("VRMC_materials_mtoon");
         if (v1 != g.extensions.end()) {
             m.mtoon = mtoon_v1(v1->second);
+            const tinygltf::Value& e = v1->second;
+            const bool z_write = e.IsObject() && e.Has("transparentWithZWrite") &&
+                                 e.Get("transparentWithZWrite").IsBool() && e.Get("transparentWithZWrite").Get<bool>();
+            mtoon_render_order(m, z_write, number(e, "renderQueueOffsetNumber", 0.0));
             for (const MtoonTextureName& t : kMtoonTextureNames) {
-                const tinygltf::Value& e = v1->second;
                 if (!e.IsObject() || !e.Has(t.v1)) continue;
                 const int index = texture_property(e.Get(t.v1), "index");
                 if (index >= 0) m.mtoon_textures[t.key] = texture_of(index, m.name);
@@ -736,6 +834,7 @@ private:
                 const tinygltf::Value& v = props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
                 std::vector<float> c = gamma_decode(numbers(v, "_Color", {1, 1, 1}));
                 m.diffuse = glm::clamp(glm::vec3(c[0], c[1], c[2]), 0.0f, 1.0f);
+                v0_alpha_and_sides(props, shader, m);
                 int main = texture_property(props.Has("textureProperties") ? props.Get("textureProperties") : props,
                                             "_MainTex");
                 if (main >= 0) texture = main;
@@ -816,6 +915,7 @@ private:
     std::vector<char> tried_;
     std::vector<uint32_t> index_;  // glTF material (last slot: default) -> Mesh material
     const tinygltf::Value* v0_ = nullptr;
+    std::map<double, int> queue_plain_, queue_z_;  // v0_queue_maps
 };
 
 // --- assembling the mesh ------------------------------------------------------------------

@@ -32,16 +32,20 @@ float back_face_depth_push(const Camera& camera, float aspect, int height) {
 }
 
 void draw_front_then_back(const Frame& frame, gpu::ShaderProgram& program, const std::function<void()>& draw) {
+    draw_front_then_back(frame, program, [&](bool) { draw(); });
+}
+
+void draw_front_then_back(const Frame& frame, gpu::ShaderProgram& program, const std::function<void(bool back)>& draw) {
     {
         const gpu::CullScope cull(GL_BACK);
         program.set("u_back_face_push", 0.0f);
-        draw();
+        draw(false);
     }
     if (frame.cull_back_faces) return;
     const gpu::CullScope cull(GL_FRONT);
     const gpu::PolygonOffsetScope offset(kSlopeFactor, 0.0f);
     program.set("u_back_face_push", frame_push(frame));
-    draw();
+    draw(true);
 }
 
 BackFacePushScope::BackFacePushScope(const Frame& frame, gpu::ShaderProgram& program) {

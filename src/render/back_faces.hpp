@@ -31,6 +31,9 @@ float back_face_depth_push(const Camera& camera, float aspect, int height);
 // the front faces and, unless the frame culls back faces, once more for the back faces pushed
 // back. Cull and polygon-offset state are as before afterwards.
 void draw_front_then_back(const Frame& frame, gpu::ShaderProgram& program, const std::function<void()>& draw);
+// The same, `draw` told whether it draws the back faces (a material may have none: glTF's
+// single-sided materials).
+void draw_front_then_back(const Frame& frame, gpu::ShaderProgram& program, const std::function<void(bool back)>& draw);
 
 // A draw of back faces only (the hull and outline shells) that is compared against the depth
 // the shading pass wrote: pushed as that pass pushed its back faces, while it lives.

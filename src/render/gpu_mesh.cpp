@@ -128,6 +128,9 @@ void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
         m.mtoon_textures.clear();
         has_material_params_ |= !m.mtoon.empty();
         has_unlit_materials_ |= m.unlit;
+        has_material_rules_ |= m.alpha_mode != AlphaMode::Opaque || m.sides != FaceSides::Seen;
+        has_alpha_materials_ |= m.alpha_mode != AlphaMode::Opaque;
+        has_blend_materials_ |= m.alpha_mode == AlphaMode::Blend;
     }
     if (has_face_materials && mesh.uvs.size() == mesh.positions.size()) {
         constexpr size_t kWhite = std::numeric_limits<size_t>::max();
@@ -179,7 +182,8 @@ void GpuMesh::upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& fa
     // Faces sorted by material (stable) when materials change what a draw binds; otherwise the
     // file's order, so untextured meshes draw exactly as they always did.
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
-    if (has_face_materials && (textured() || has_mtoon_textures() || has_material_params_ || has_unlit_materials_)) {
+    if (has_face_materials &&
+        (textured() || has_mtoon_textures() || has_material_params_ || has_unlit_materials_ || has_material_rules_)) {
         std::vector<uint32_t> order(faces.size());
         std::iota(order.begin(), order.end(), 0u);
         auto key = [&](uint32_t f) {
@@ -188,15 +192,25 @@ void GpuMesh::upload_indices(const Mesh& mesh, const std::vector<glm::uvec3>& fa
         };
         std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
         std::vector<glm::uvec3> sorted(faces.size());
+        std::vector<BoundingBox> boxes;
         for (size_t i = 0; i < order.size(); ++i) {
             sorted[i] = faces[order[i]];
-            if (ranges_.empty() || ranges_.back().material != key(order[i]))
+            if (ranges_.empty() || ranges_.back().material != key(order[i])) {
                 ranges_.push_back({i * 3, 0, key(order[i])});
+                const glm::vec3 p = mesh.positions[mesh.triangles[order[i]][0]];
+                boxes.push_back({p, p});
+            }
             ranges_.back().count += 3;
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3& p = mesh.positions[mesh.triangles[order[i]][k]];
+                boxes.back().min = glm::min(boxes.back().min, p);
+                boxes.back().max = glm::max(boxes.back().max, p);
+            }
         }
+        for (size_t r = 0; r < ranges_.size(); ++r) ranges_[r].center = boxes[r].center();
         ibo_ = upload_buffer(GLsizeiptr(sorted.size() * sizeof(glm::uvec3)), sorted.data());
     } else {
-        ranges_.push_back({0, index_count_, kNoMaterial});
+        ranges_.push_back({0, index_count_, kNoMaterial, mesh.bounds().center()});
         ibo_ = upload_buffer(GLsizeiptr(faces.size() * sizeof(glm::uvec3)), faces.data());
     }
 }
@@ -275,22 +289,31 @@ void GpuMesh::draw() const {
     draw_indices(0, index_count_);
 }
 
+const Material* GpuMesh::range_material(size_t range) const {
+    const uint32_t m = ranges_[range].material;
+    return m < materials_.size() ? &materials_[m] : nullptr;
+}
+
 void GpuMesh::draw_by_material(GLuint texture_unit, gpu::Texels texels,
                                const std::function<bool(const Material*)>& before) const {
-    glBindVertexArray(vao_.id());
-    for (const Range& r : ranges_) {
-        const bool known = r.material < materials_.size();
-        if (before && !before(known ? &materials_[r.material] : nullptr)) continue;
-        if (textured())
-            textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit, texels);
-        for (int slot = 0; has_mtoon_textures() && slot < kMtoonTextureSlotCount; ++slot) {
-            const MtoonTextureSlot& s = kMtoonTextureSlots[slot];
-            const size_t fallback = mtoon_textures_.size() - (s.black_when_absent ? 1 : 2);
-            mtoon_textures_[known ? material_mtoon_[r.material][size_t(slot)] : fallback].bind(
-                texture_unit + 1 + GLuint(slot), s.color ? texels : gpu::Texels::AsStored);
-        }
-        draw_indices(r.first, r.count);
+    for (size_t r = 0; r < ranges_.size(); ++r) {
+        if (before && !before(range_material(r))) continue;
+        draw_range(r, texture_unit, texels);
     }
+}
+
+void GpuMesh::draw_range(size_t range, GLuint texture_unit, gpu::Texels texels) const {
+    glBindVertexArray(vao_.id());
+    const Range& r = ranges_[range];
+    const bool known = r.material < materials_.size();
+    if (textured()) textures_[known ? material_texture_[r.material] : textures_.size() - 1].bind(texture_unit, texels);
+    for (int slot = 0; has_mtoon_textures() && slot < kMtoonTextureSlotCount; ++slot) {
+        const MtoonTextureSlot& s = kMtoonTextureSlots[slot];
+        const size_t fallback = mtoon_textures_.size() - (s.black_when_absent ? 1 : 2);
+        mtoon_textures_[known ? material_mtoon_[r.material][size_t(slot)] : fallback].bind(
+            texture_unit + 1 + GLuint(slot), s.color ? texels : gpu::Texels::AsStored);
+    }
+    draw_indices(r.first, r.count);
 }
 
 }  // namespace inkshade::render

@@ -60,6 +60,20 @@ public:
                           const std::function<bool(const Material*)>& before) const;
     // Some material is drawn without lighting (Material::unlit).
     bool has_unlit_materials() const { return has_unlit_materials_; }
+    // Some material has a glTF alpha mode other than OPAQUE or glTF sides (Material::alpha_mode,
+    // Material::sides): draws go material by material.
+    bool has_material_rules() const { return has_material_rules_; }
+    // Some material is MASK or BLEND (the variant INKSHADE_MATERIAL_ALPHA), or BLEND.
+    bool has_alpha_materials() const { return has_alpha_materials_; }
+    bool has_blend_materials() const { return has_blend_materials_; }
+
+    // The ranges draw_by_material draws, one material each: the material (null: none), the
+    // centre of its faces' bounding box (blended ones are sorted by it), and a draw of one range
+    // binding its textures as draw_by_material does.
+    size_t range_count() const { return ranges_.size(); }
+    const Material* range_material(size_t range) const;
+    glm::vec3 range_center(size_t range) const { return ranges_[range].center; }
+    void draw_range(size_t range, GLuint texture_unit, gpu::Texels texels) const;
 
     // The (part, material) ids of each object id (attribute 4) from 1: the id and material AOVs.
     const std::vector<glm::uvec2>& object_parts() const { return object_parts_; }
@@ -79,10 +93,11 @@ private:
         size_t first = 0;  // index offset into the index buffer
         GLsizei count = 0;
         uint32_t material = 0;
+        glm::vec3 center{0.0f};
     };
     gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_, scalar_vbo_;
     gpu::GlVertexArray vao_;
-    std::vector<uint32_t> source_;  // mesh vertex of each stream vertex (set_vertex_scalar)
+    std::vector<uint32_t> source_;          // mesh vertex of each stream vertex (set_vertex_scalar)
     std::vector<glm::uvec2> object_parts_;  // object_parts()
     GLsizei index_count_ = 0;
     std::vector<Range> ranges_;
@@ -96,6 +111,9 @@ private:
     bool has_material_params_ = false;
     bool has_own_colors_ = false;
     bool has_unlit_materials_ = false;
+    bool has_material_rules_ = false;
+    bool has_alpha_materials_ = false;
+    bool has_blend_materials_ = false;
 };
 
 }  // namespace inkshade::render

@@ -4,6 +4,7 @@
 // (render/color_convention.hpp), and C made as the selection's BaseColorUse says.
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <map>
 
 #include "gpu/gl_state.hpp"
@@ -100,6 +101,25 @@ bool draws_outline(const ShadingModel& model, const ParamValues& values, bool ma
     return model.param("outline-width-mode") && (outline_on(model, values) || material_params);
 }
 
+// The program variant's switches besides the model's own (ShadingPass::program_for).
+struct Variant {
+    bool textured = false;
+    bool mtoon_textures = false;
+    bool base_color_only = false;
+    bool unlit = false;
+    bool alpha = false;
+};
+
+bool blended(const Material* material) { return material && material->alpha_mode == AlphaMode::Blend; }
+
+// A material's glTF alpha mode, coverage and sides (common/surface.glsl); null: opaque, lit as seen.
+void set_material_rules(gpu::ShaderProgram& program, const Material* material) {
+    program.set("u_alpha_mode", material ? int(material->alpha_mode) : 0);
+    program.set("u_base_alpha", material ? material->alpha : 1.0f);
+    program.set("u_alpha_cutoff", material ? material->alpha_cutoff : 0.5f);
+    program.set("u_double_sided", material && material->sides == FaceSides::Double ? 1 : 0);
+}
+
 // What C is made of (BaseColorUse, docs/shading.md "Base colour"): the base colour, and
 // whether the mesh's vertex/material colours and textures multiply it.
 struct Albedo {
@@ -163,8 +183,12 @@ public:
         const SurfaceLines surface_lines{frame.line("rim-contour")};
         // A mesh whose colours are all white needs no variant to leave them out.
         const bool base_color_only = !c.mesh_colors && mesh.has_own_colors();
-        gpu::ShaderProgram& program = program_for(model, shading.params, surface_lines, textured, mtoon_textures,
-                                                  base_color_only, unlit, /*outline=*/false, frame.light);
+        // glTF alpha modes and sides (debug views show geometry: every face, opaque).
+        const bool rules = mesh.has_material_rules() && !model.debug_view;
+        const bool alpha = rules && mesh.has_alpha_materials();
+        const Variant variant{textured, mtoon_textures, base_color_only, unlit, alpha};
+        gpu::ShaderProgram& program =
+            program_for(model, shading.params, surface_lines, variant, /*outline=*/false, frame.light);
 
         const glm::vec4& bg = frame.options.background;
         // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
@@ -187,21 +211,37 @@ public:
         }
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
-        if (textured || material_params || unlit) program.set("u_base_texture", int(kBaseTextureUnit));
+        if (textured || material_params || unlit || rules) program.set("u_base_texture", int(kBaseTextureUnit));
         if (mtoon_textures) set_mtoon_samplers(program);
+        set_material_rules(program, nullptr);
+        // Per material: its values, unlit flag, alpha mode and sides.
+        auto prepare = [&](const Material* material) {
+            if (material_params) upload_params(program, model, with_material_params(model, shading.params, material));
+            if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
+            if (rules) set_material_rules(program, material);
+        };
         // Two-sided (open meshes show their lit inside), front faces winning depth ties
-        // (render/back_faces.hpp); back faces culled when none can be seen.
-        draw_front_then_back(frame, program, [&] {
-            if (!textured && !material_params && !unlit) return mesh.draw();
-            mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
-                if (material_params)
-                    upload_params(program, model, with_material_params(model, shading.params, material));
-                if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
-                return true;
-            });
+        // (render/back_faces.hpp); back faces culled when none can be seen. Opaque and cut-out
+        // materials first, blended ones after them (three.js's opaque, then transparent list);
+        // glTF single-sided materials without back faces (three.js FrontSide).
+        draw_front_then_back(frame, program, [&](bool back) {
+            if (!textured && !material_params && !unlit && !rules) return mesh.draw();
+            for (size_t r = 0; r < mesh.range_count(); ++r) {
+                const Material* material = mesh.range_material(r);
+                if (rules && material && (blended(material) || (back && material->sides == FaceSides::Front))) continue;
+                prepare(material);
+                mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
+            }
         });
-        if (draws_outline(model, shading.params, material_params))
-            draw_outline(frame, c, convention, textured, mtoon_textures, base_color_only, material_params);
+        const bool outline = draws_outline(model, shading.params, material_params);
+        if (outline)
+            draw_outline(frame, c, convention, variant, material_params,
+                         [&](size_t r) { return !(rules && blended(mesh.range_material(r))); });
+        if (rules && mesh.has_blend_materials())
+            draw_blended(frame, program, prepare, convention, [&](size_t r) {
+                if (outline)
+                    draw_outline(frame, c, convention, variant, material_params, [r](size_t o) { return o == r; });
+            });
     }
 
 private:
@@ -209,13 +249,16 @@ private:
     // back faces moved out along their normals, depth-tested (three.js's LessEqual) and written
     // against the model just drawn, material by material when the materials carry their own
     // outline values; unlit materials have none (they are not MToon materials).
-    void draw_outline(const Frame& frame, const Albedo& c, ColorConvention convention, bool textured,
-                      bool mtoon_textures, bool base_color_only, bool material_params) {
+    // `which`: the ranges drawn (a blended material's outline is drawn right after it, with its
+    // surface's blending, as three.js draws the second geometry group of the same mesh).
+    void draw_outline(const Frame& frame, const Albedo& c, ColorConvention convention, Variant variant,
+                      bool material_params, const std::function<bool(size_t)>& which) {
         const ShadingModel& model = frame.model;
         const ParamValues& params = frame.shading.params;
+        const bool textured = variant.textured;
+        variant.unlit = false;
         gpu::ShaderProgram& program =
-            program_for(model, params, SurfaceLines{nullptr}, textured, mtoon_textures, base_color_only,
-                        /*unlit=*/false, /*outline=*/true, frame.light);
+            program_for(model, params, SurfaceLines{nullptr}, variant, /*outline=*/true, frame.light);
         program.use();
         set_frame_uniforms(program, frame, c, convention);
         program.set("u_projection", frame.camera.projection(frame.aspect()));
@@ -225,21 +268,69 @@ private:
             program.set("u_shadow_texel_world", frame.bounds.diagonal() / float(frame.targets.shadow_map->size()));
         }
         upload_params(program, model, params);
-        if (textured || material_params) program.set("u_base_texture", int(kBaseTextureUnit));
-        if (mtoon_textures) set_mtoon_samplers(program);
-        const gpu::DepthScope depth(GL_LEQUAL, /*write=*/true);
+        const bool rules = frame.mesh->has_material_rules() && !model.debug_view;
+        if (textured || material_params || rules) program.set("u_base_texture", int(kBaseTextureUnit));
+        if (variant.mtoon_textures) set_mtoon_samplers(program);
+        set_material_rules(program, nullptr);
+        GLboolean depth_write = GL_TRUE;
+        glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_write);  // a blended material's, when drawn with it
+        const gpu::DepthScope depth(GL_LEQUAL, depth_write == GL_TRUE);
         const gpu::CullScope cull(GL_FRONT);
         const BackFacePushScope push(frame, program);
         GpuMesh& mesh = *frame.mesh;
-        if (!textured && !material_params) return mesh.draw();
-        mesh.draw_by_material(kBaseTextureUnit, texels_of(convention), [&](const Material* material) {
-            if (!material_params) return true;
-            if (material && material->unlit) return false;
-            const ParamValues merged = with_material_params(model, params, material);
-            if (!outline_on(model, merged)) return false;
-            upload_params(program, model, merged);
-            return true;
+        if (!textured && !material_params && !rules) return mesh.draw();
+        for (size_t r = 0; r < mesh.range_count(); ++r) {
+            if (!which(r)) continue;
+            const Material* material = mesh.range_material(r);
+            if (material_params) {
+                if (material && material->unlit) continue;
+                const ParamValues merged = with_material_params(model, params, material);
+                if (!outline_on(model, merged)) continue;
+                upload_params(program, model, merged);
+            }
+            if (rules) set_material_rules(program, material);
+            mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
+        }
+    }
+
+    // BLEND materials after everything opaque, as three.js draws its transparent list: by
+    // renderOrder (three-vrm's render queue), then back to front by the distance of each
+    // material's faces (the centre of their box; three.js takes each object's origin), blended
+    // "over" (premultiplied: the shader writes colour x alpha) with depth tested and written
+    // only with transparentWithZWrite. A double-sided one draws its back faces first, then its
+    // front faces (three.js's two passes for a transparent DoubleSide material).
+    void draw_blended(const Frame& frame, gpu::ShaderProgram& program,
+                      const std::function<void(const Material*)>& prepare, ColorConvention convention,
+                      const std::function<void(size_t)>& after) {
+        const GpuMesh& mesh = *frame.mesh;
+        const glm::vec3 forward = glm::normalize(frame.camera.target - frame.camera.eye);
+        std::vector<size_t> order;
+        for (size_t r = 0; r < mesh.range_count(); ++r)
+            if (blended(mesh.range_material(r))) order.push_back(r);
+        auto depth_of = [&](size_t r) { return glm::dot(mesh.range_center(r) - frame.camera.eye, forward); };
+        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+            const int oa = mesh.range_material(a)->render_order, ob = mesh.range_material(b)->render_order;
+            if (oa != ob) return oa < ob;
+            return depth_of(a) > depth_of(b);
         });
+        const gpu::BlendScope blend(gpu::BlendFunc{GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});
+        for (size_t r : order) {
+            const Material* material = mesh.range_material(r);
+            program.use();
+            prepare(material);
+            const gpu::DepthScope depth(GL_LESS, material->blend_depth_write);
+            if (material->sides != FaceSides::Front) {
+                const gpu::CullScope cull(GL_FRONT);
+                const BackFacePushScope push(frame, program);
+                mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
+            }
+            {
+                const gpu::CullScope cull(GL_BACK);
+                program.set("u_back_face_push", 0.0f);
+                mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
+            }
+            after(r);
+        }
     }
 
     // One compiled variant per model and compile-time parameter values (#defines, not uniform
@@ -250,16 +341,17 @@ private:
     // `unlit`: the one that draws unlit materials as they are (INKSHADE_UNLIT). A model file's
     // spot light and physical falloff (common/lighting.glsl) are variants too, and so is mtoon's
     // outline draw (`outline`: INKSHADE_MTOON_OUTLINE) and its materials' textures
-    // (`mtoon_textures`: INKSHADE_MTOON_TEXTURES).
+    // (`mtoon_textures`: INKSHADE_MTOON_TEXTURES), and glTF's MASK and BLEND alpha modes
+    // (`alpha`: INKSHADE_MATERIAL_ALPHA; a discard, which llvmpipe's early depth test avoids).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
-                                    bool textured, bool mtoon_textures, bool base_color_only, bool unlit, bool outline,
-                                    const Light& light) {
-        std::string defines = textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
-        if (mtoon_textures) defines += "#define INKSHADE_MTOON_TEXTURES 1\n";
+                                    const Variant& variant, bool outline, const Light& light) {
+        std::string defines = variant.textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
+        if (variant.mtoon_textures) defines += "#define INKSHADE_MTOON_TEXTURES 1\n";
         if (outline) defines += "#define INKSHADE_MTOON_OUTLINE 1\n";
-        if (base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
+        if (variant.base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
-        if (unlit) defines += "#define INKSHADE_UNLIT 1\n";
+        if (variant.unlit) defines += "#define INKSHADE_UNLIT 1\n";
+        if (variant.alpha) defines += "#define INKSHADE_MATERIAL_ALPHA 1\n";
         if (light.type == LightType::Spot) defines += "#define INKSHADE_SPOT_LIGHT 1\n";
         if (light.physical_falloff && light.type != LightType::Directional)
             defines += "#define INKSHADE_PHYSICAL_FALLOFF 1\n";

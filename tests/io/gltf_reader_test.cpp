@@ -370,6 +370,94 @@ TEST(GltfReader, PlainGltfMaterialHasNoMToonParameters) {
     EXPECT_TRUE(m.materials[0].mtoon.empty());
 }
 
+// glTF alphaMode, alphaCutoff, doubleSided and baseColorFactor's alpha (sections 3.9.4-3.9.5),
+// with the specification's defaults (OPAQUE, 0.5, single-sided) where absent.
+TEST(GltfReader, AlphaModesCutoffAndDoubleSidedAreRead) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    Mesh plain = load_mesh(dir.write("plain.glb", g.glb()));
+    EXPECT_EQ(plain.materials[0].alpha_mode, AlphaMode::Opaque);
+    EXPECT_EQ(plain.materials[0].sides, FaceSides::Front);
+    EXPECT_FLOAT_EQ(plain.materials[0].alpha, 1.0f);
+    EXPECT_FLOAT_EQ(plain.materials[0].alpha_cutoff, 0.5f);
+
+    g.doc["materials"][0]["alphaMode"] = "MASK";
+    g.doc["materials"][0]["alphaCutoff"] = 0.3;
+    g.doc["materials"][0]["doubleSided"] = true;
+    g.doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.5, 0.25, 1.0, 0.75};
+    Mesh mask = load_mesh(dir.write("mask.glb", g.glb()));
+    EXPECT_EQ(mask.materials[0].alpha_mode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(mask.materials[0].alpha_cutoff, 0.3f);
+    EXPECT_EQ(mask.materials[0].sides, FaceSides::Double);
+    EXPECT_FLOAT_EQ(mask.materials[0].alpha, 0.75f);
+
+    g.doc["materials"][0]["alphaMode"] = "BLEND";
+    Mesh blend = load_mesh(dir.write("blend.glb", g.glb()));
+    EXPECT_EQ(blend.materials[0].alpha_mode, AlphaMode::Blend);
+    EXPECT_FALSE(blend.materials[0].blend_depth_write);  // GLTFLoader: depthWrite false
+    EXPECT_EQ(blend.materials[0].render_order, 0);
+}
+
+// three-vrm's MToonMaterialLoaderPlugin: renderOrder = renderQueueOffsetNumber + (19 without
+// transparentWithZWrite, 0 with it); the z-write flag writes depth.
+TEST(GltfReader, VrmOneTransparentWithZWriteAndRenderQueueAreRead) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    g.doc["materials"][0]["alphaMode"] = "BLEND";
+    g.doc["materials"][0]["extensions"]["VRMC_materials_mtoon"] = {
+        {"specVersion", "1.0"}, {"transparentWithZWrite", true}, {"renderQueueOffsetNumber", 3}};
+    Mesh z = load_mesh(dir.write("z.vrm", g.glb()));
+    EXPECT_TRUE(z.materials[0].blend_depth_write);
+    EXPECT_EQ(z.materials[0].render_order, 3);
+    g.doc["materials"][0]["extensions"]["VRMC_materials_mtoon"] = {{"specVersion", "1.0"},
+                                                                   {"renderQueueOffsetNumber", -2}};
+    Mesh plain = load_mesh(dir.write("plain.vrm", g.glb()));
+    EXPECT_FALSE(plain.materials[0].blend_depth_write);
+    EXPECT_EQ(plain.materials[0].render_order, 17);
+}
+
+// VRM 0.x, as three-vrm's VRMMaterialsV0CompatPlugin ports it: _ALPHABLEND_ON / _ALPHATEST_ON
+// and _Cutoff, _ZWrite, _CullMode 0 = double-sided, _Color's alpha as written, and the
+// transparent materials' render queues mapped in order to offsets ending at 0 (z-write:
+// starting at 0).
+TEST(GltfReader, VrmZeroBlendModesCullModeAndRenderQueuesAreConverted) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    for (int i = 0; i < 3; ++i) g.doc["materials"].push_back(g.doc["materials"][0]);
+    json props = json::array();
+    for (int i = 0; i < 4; ++i) props.push_back(vrm0_material_properties()[0]);
+    props[0]["keywordMap"] = {{"_ALPHATEST_ON", true}};
+    props[0]["floatProperties"]["_Cutoff"] = 0.25;
+    props[0]["floatProperties"]["_CullMode"] = 0;
+    props[0]["vectorProperties"]["_Color"] = {1, 1, 1, 0.5};
+    props[1]["keywordMap"] = {{"_ALPHABLEND_ON", true}};
+    props[1]["renderQueue"] = 3005;
+    props[2]["keywordMap"] = {{"_ALPHABLEND_ON", true}};
+    props[2]["renderQueue"] = 3001;
+    props[3]["keywordMap"] = {{"_ALPHABLEND_ON", true}};
+    props[3]["floatProperties"]["_ZWrite"] = 1;
+    props[3]["renderQueue"] = 2501;
+    g.doc["extensions"]["VRM"] = {{"materialProperties", props}};
+    // One primitive per material.
+    json prim = g.doc["meshes"][0]["primitives"][0];
+    for (int i = 1; i < 4; ++i) {
+        prim["material"] = i;
+        g.doc["meshes"][0]["primitives"].push_back(prim);
+    }
+    Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    ASSERT_EQ(m.materials.size(), 4u);
+    EXPECT_EQ(m.materials[0].alpha_mode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(m.materials[0].alpha_cutoff, 0.25f);
+    EXPECT_EQ(m.materials[0].sides, FaceSides::Double);
+    EXPECT_FLOAT_EQ(m.materials[0].alpha, 0.5f);  // alpha is stored linear
+    EXPECT_EQ(m.materials[1].alpha_mode, AlphaMode::Blend);
+    EXPECT_EQ(m.materials[1].sides, FaceSides::Front);  // _CullMode 2 (back) by default
+    EXPECT_EQ(m.materials[1].render_order, 19 + 0);     // queues 3001, 3005 -> offsets -1, 0
+    EXPECT_EQ(m.materials[2].render_order, 19 - 1);
+    EXPECT_TRUE(m.materials[3].blend_depth_write);
+    EXPECT_EQ(m.materials[3].render_order, 0);
+}
+
 TEST(GltfReader, PointsAndLinesAreSkippedWithAWarning) {
     TempDir dir;
     GltfBuilder g;
