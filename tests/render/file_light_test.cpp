@@ -9,13 +9,6 @@
 namespace inkshade::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-
-float encode(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
-
 float smoothstep(float a, float b, float x) {
     const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
@@ -81,7 +74,7 @@ TEST(FileLight, SpotLightUnderThreejsLambertIsThreejsPhysicalSpot) {
         const float d = glm::length(to_light), cos_theta = to_light.z / d;
         const float cone = smoothstep(spot.cos_outer, spot.cos_inner, cos_theta);
         const glm::vec3 c = spot.color * 4.0f / (d * d) * cone * cos_theta / kPi;
-        return glm::vec3(encode(c.r), encode(c.g), encode(c.b));
+        return reference_srgb(c);
     };
     EXPECT_GT(compare_row(img, 32, expected), 45);
     EXPECT_GT(compare_row(img, 20, expected), 45);
@@ -113,7 +106,7 @@ TEST(FileLight, RangedPointLightUnderMtoonThreejsConventionFallsOffAsThreejs) {
         const float x = d / point.range, window = std::clamp(1.0f - x * x * x * x, 0.0f, 1.0f);
         const float e = 3.0f / std::max(d * d, 0.01f) * window * window;
         const float c = e / kPi * 0.8f * 0.5f * (ndotl + 1.0f);  // E k mix(S = 0, C, t)
-        return glm::vec3(encode(c));
+        return glm::vec3(reference_srgb(c));
     };
     EXPECT_GT(compare_row(img, 32, expected), 45);
     EXPECT_GT(compare_row(img, 12, expected), 45);
@@ -136,7 +129,7 @@ TEST(FileLight, UnlitMaterialIsItsBaseColourUnderEveryModel) {
         const glm::vec3 c = unlit.diffuse * s.base_color;
         // mtoon's default convention is three-vrm's: sRGB output, as the threejs-* models.
         const bool srgb = std::string(model).starts_with("threejs-") || std::string(model) == "mtoon";
-        const glm::vec3 want = srgb ? glm::vec3(encode(c.r), encode(c.g), encode(c.b)) : c;
+        const glm::vec3 want = srgb ? reference_srgb(c) : c;
         const uint8_t* px = img.pixel(48, 32);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(int(px[k]), to_byte(want[k]), 1) << k;
         if (std::string(model) == "lambert") {  // the lit half is lit: C (E n.l + A)

@@ -12,12 +12,6 @@
 namespace inkshade::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-
-float srgb(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 enum class Mode { World = 1, Screen = 2 };
 
@@ -162,7 +156,7 @@ TEST(MtoonOutline, ColourMixesTheOutlineColourWithTheLitColour) {
             const int x = int(128.0f + middle * std::cos(a)), y = int(128.0f + middle * std::sin(a));
             for (int k = 0; k < 3; ++k) {
                 const float lit = A[k] / kPi * C[k];
-                EXPECT_NEAR(int(img.pixel(x, y)[k]), to_byte(srgb(oc[k] * (1.0f + (lit - 1.0f) * mix))), 1)
+                EXPECT_NEAR(int(img.pixel(x, y)[k]), to_byte(reference_srgb(oc[k] * (1.0f + (lit - 1.0f) * mix))), 1)
                     << "mix " << mix << " channel " << k << " at " << x << "," << y;
             }
         }

@@ -13,13 +13,6 @@
 namespace inkshade::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-
-float srgb(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
-glm::vec3 srgb(const glm::vec3& c) { return {srgb(c.r), srgb(c.g), srgb(c.b)}; }
 float smoothstep(float a, float b, float x) {
     const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
@@ -80,7 +73,7 @@ glm::vec3 three_vrm(const Mtoon& m, const glm::vec3& C, const Light& light, cons
     const glm::vec3 v = view_axis ? *view_axis : glm::normalize(eye - p);
     const float f = std::pow(std::clamp(1.0f - glm::dot(v, n) + m.lift, 0.0f, 1.0f), m.power);
     const glm::vec3 rim = m.rim * f * glm::mix(glm::vec3(1.0f), (E + A) / kPi, m.rim_mix);
-    return srgb(direct + gi + rim);
+    return reference_srgb(direct + gi + rim);
 }
 
 Light light_of(LightType type, const glm::vec3& position, float intensity) {
@@ -244,7 +237,7 @@ TEST(MtoonParity, LightIntensityThreeInEveryModel) {
                                 [&](const glm::vec3& n) {
                                     const glm::vec3 c =
                                         kBase / kPi * (3.0f * E * std::max(glm::dot(n, to_light), 0.0f) + A);
-                                    return srgb(c);
+                                    return reference_srgb(c);
                                 }),
               150);
 }

@@ -13,7 +13,6 @@
 namespace inkshade::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr int kTexels = 32;
 
 float srgb_encode(float c) {

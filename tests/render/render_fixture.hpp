@@ -3,6 +3,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -24,6 +25,15 @@ inline Renderer& shared_renderer() {
 }
 
 constexpr int kSize = 256;
+constexpr float kPi = 3.14159265358979f;
+
+// The sRGB transfer function (IEC 61966-2-1) of the tests' CPU references, clamped to [0, 1]:
+// written out here, apart from the product's linear_to_srgb.
+inline float reference_srgb(float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+inline glm::vec3 reference_srgb(const glm::vec3& c) { return {reference_srgb(c.r), reference_srgb(c.g), reference_srgb(c.b)}; }
 
 // The unit sphere most pixel tests render: fine enough (128 x 256) that interpolated normals
 // match the analytic ones within the 2/255 tolerance. Built once per test binary.

@@ -13,7 +13,6 @@
 namespace inkshade::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 // IEC 61966-2-1, the reference both for decoding the sRGB parameters and for the output.
 float decode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
