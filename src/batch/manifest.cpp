@@ -53,6 +53,15 @@ bool skipped(std::string_view line) {
 }
 
 // Sets one field of a group from its text form (CSV cells; JSON strings).
+// A number of a column in [lo, hi] ("KEY: expected EXPECTED, got 'x'" else).
+float number_in(const std::string& key, const std::string& value, double lo, double hi, const char* expected) {
+    double v = 0;
+    auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+    if (ec != std::errc() || ptr != value.data() + value.size() || !(v >= lo && v <= hi))
+        throw InputError(key + ": expected " + expected + ", got " + io::quote_token(value));
+    return float(v);
+}
+
 void set_field(JobGroup& g, const std::string& key, const std::string& value) {
     if (key == "model")
         g.model = value;
@@ -85,11 +94,7 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
     } else if (key == "up-axis") {
         g.up_axis = parse_up_axis("up-axis", value);
     } else if (key == "smooth-angle") {
-        double v = 0;
-        auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-        if (ec != std::errc() || ptr != value.data() + value.size() || !(v >= 0.0 && v <= 180.0))
-            throw InputError("smooth-angle: expected degrees in [0, 180], got " + io::quote_token(value));
-        g.smooth_angle = float(v);
+        g.smooth_angle = number_in(key, value, 0.0, 180.0, "degrees in [0, 180]");
     } else if (key == "lights") {
         g.lights = parse_light_source("lights", value);
     } else if (key == "aov") {
@@ -97,11 +102,7 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
     } else if (key == "occlusion-levels") {
         g.occlusion_levels = parse_occlusion_levels(value);
     } else if (key == "light-intensity") {
-        double v = 0;
-        auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-        if (ec != std::errc() || ptr != value.data() + value.size() || !(v >= 0.0 && v <= 1e6))
-            throw InputError("light-intensity: expected a number in [0, 1e6], got " + io::quote_token(value));
-        g.light_intensity = float(v);
+        g.light_intensity = number_in(key, value, 0.0, 1e6, "a number in [0, 1e6]");
     } else if (key == "ortho") {
         if (value == "true" || value == "1" || value == "yes")
             g.orthographic = true;
