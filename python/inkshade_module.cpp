@@ -325,6 +325,7 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
            int samples, const std::string& lights, float margin, const std::vector<std::string>& aov,
+           std::optional<float> light_intensity, std::optional<std::string> occlusion_levels,
            std::optional<py::function> progress) {
         BatchDefaults defaults;
         defaults.views = views;
@@ -337,8 +338,11 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         shared.size = {defaults.width, defaults.height};
         shared.samples = samples;
         shared.camera.margin = margin;
+        shared.light_intensity = light_intensity;
         make_scene(shared);
         defaults.margin = margin;
+        defaults.light_intensity = light_intensity;
+        if (occlusion_levels) defaults.occlusion_levels = parse_occlusion_levels(*occlusion_levels);
         defaults.aovs = aov_set("aov", aov);
         defaults.outputs = {};
         defaults.outputs.png = false;
@@ -384,8 +388,10 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
         py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
         py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("lights") = "style",
-        py::arg("margin") = 0.05f, py::arg("aov") = std::vector<std::string>{}, py::arg("progress") = py::none(),
-        "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}.");
+        py::arg("margin") = 0.05f, py::arg("aov") = std::vector<std::string>{}, py::arg("light_intensity") = py::none(),
+        py::arg("occlusion_levels") = py::none(), py::arg("progress") = py::none(),
+        "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}. "
+        "light_intensity= and occlusion_levels='A-B' are the defaults of the columns of those names.");
 
     py::class_<PyRenderer>(m, "Renderer", "A headless OpenGL 4.5 renderer (EGL) holding one mesh.")
         .def(py::init<>())

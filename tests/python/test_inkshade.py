@@ -204,6 +204,32 @@ class ModuleTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "exactly one of"):
             inkshade.batch("/tmp/x")
 
+    def test_batch_occlusion_levels_and_light_intensity(self):
+        """occlusion_levels= gives the SVG the lines command gives; light_intensity= reaches the job."""
+        with tempfile.TemporaryDirectory() as tmp:
+            manifest = os.path.join(tmp, "jobs.csv")
+            with open(manifest, "w") as f:
+                f.write("model,views,styles,size,up-axis\nbuiltin:torus,20:20,ink-vector,96x72,z\n")
+            summary = inkshade.batch(os.path.join(tmp, "out"), manifest=manifest, formats=["svg"],
+                                     occlusion_levels="0-1", light_intensity=2.5)
+            self.assertEqual((summary["done"], summary["failed"]), (1, 0))
+            stem = os.path.join(tmp, "out", "torus", "ink-vector", "az020_el20")
+            with open(stem + ".svg") as f:
+                svg = f.read()
+            self.assertIn('<g id="contour-hidden-1"', svg)
+            ref = os.path.join(tmp, "l.svg")
+            subprocess.run([os.environ["INKSHADE_BIN"], "lines", "builtin:torus", "--style", "ink-vector", "--size",
+                            "96x72", "--up-axis", "z", "--azimuth", "20", "--elevation", "20",
+                            "--occlusion-levels", "0-1", "-o", ref], check=True)
+            with open(ref) as f:
+                self.assertEqual(svg, f.read())
+            with open(stem + ".json") as f:
+                meta = json.load(f)
+            self.assertEqual(meta["occlusion_levels"], [0, 1])
+            self.assertEqual(meta["light_intensity"], 2.5)
+        with self.assertRaisesRegex(ValueError, "occlusion levels"):
+            inkshade.batch("/tmp/x", models="/tmp", occlusion_levels="3-1")
+
     def test_gltf_camera_and_lights_are_the_clis(self):
         """camera= and lights= as `inkshade render --camera --lights file` and a batch view camera=NAME."""
         import base64
