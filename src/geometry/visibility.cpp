@@ -671,7 +671,7 @@ uint32_t segment_steps(const ImageProjection& view, const LineSegment& s, double
 
 // A change of level inside a task's segment, between parameters lo (level `level_lo`) and hi.
 struct Bracket {
-    uint32_t task, step;
+    uint32_t task;
     double lo, hi;
     uint8_t level_lo;
 };
@@ -702,7 +702,7 @@ void resolve_segments(const Tester& tester, const std::vector<LineSegment>& segm
         const SegmentTask& t = tasks[i];
         for (uint32_t k = 0; k < t.steps; ++k)
             if (level_at(t, k) != level_at(t, k + 1))
-                brackets.push_back({i, k, double(k) / t.steps, double(k + 1) / t.steps, level_at(t, k)});
+                brackets.push_back({i, double(k) / t.steps, double(k + 1) / t.steps, level_at(t, k)});
     }
     std::vector<uint32_t> active(brackets.size());
     for (uint32_t b = 0; b < active.size(); ++b) active[b] = b;
