@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <set>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -253,6 +254,55 @@ TEST_F(BatchCommand, SigtermStopsCleanlyAndResumeRendersOnlyTheRest) {
     for (const auto& [name, ino] : inodes) EXPECT_EQ(inode(out() + "/" + name), ino) << name << " was rendered again";
     expect_clean_outputs(out());
     EXPECT_EQ(count_ending(files_under(out()), ".png"), 80u);
+}
+
+// A worker killed outright (SIGKILL, no chance to clean up) loses at most its in-flight job:
+// every output under its final name is complete (written to a temporary, then renamed), at most
+// the temporaries of one job are left, and the rerun renders exactly the jobs without metadata.
+TEST_F(BatchCommand, SigkillLosesAtMostTheJobInFlightAndTheRerunCompletesTheRest) {
+    const std::string manifest = dir_.write("long.csv",
+                                            "model,views,styles\n"
+                                            "builtin:teapot,turntable:20,\"anime,toon\"\n"
+                                            "builtin:torus,turntable:20,\"anime,toon\"\n");
+    const std::vector<std::string> args = {"batch", manifest, "-o", out(), "--size", "32x32"};
+    const pid_t pid = spawn(args, dir_.file("stdout"), dir_.file("stderr"));
+    ASSERT_GT(pid, 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (count_ending(files_under(out()), ".json") < 3 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_EQ(kill(pid, SIGKILL), 0);
+    int raw = 0;
+    ASSERT_EQ(waitpid(pid, &raw, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(raw));
+
+    const auto left = files_under(out());
+    std::set<std::string> temp_stems;  // the outputs the temporaries were for, by stem
+    size_t complete = 0;
+    for (const auto& [name, bytes] : left) {
+        const fs::path p(name);
+        const std::string file = p.filename().string();
+        if (file.front() == '.') {
+            ASSERT_NE(file.find(".tmp-"), std::string::npos) << name;
+            temp_stems.insert((p.parent_path() / fs::path(file.substr(1, file.find(".tmp-") - 1)).stem()).string());
+            continue;
+        }
+        if (name.ends_with(".png")) {
+            EXPECT_NO_THROW(read_png(out() + "/" + name)) << name;
+        }
+        if (name.ends_with(".json")) {
+            EXPECT_NO_THROW(nlohmann::json::parse(bytes)) << name;
+            ++complete;
+        }
+    }
+    EXPECT_LE(temp_stems.size(), 1u) << "temporaries of more than the job in flight";
+    ASSERT_GE(complete, 3u);
+    ASSERT_LT(complete, 80u) << "finished before the signal: the test needs more jobs";
+
+    auto r = run_cli("batch " + manifest + " -o " + out() + " --size 32x32 -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(summary(r.out).skipped, int(complete)) << r.out;
+    EXPECT_EQ(summary(r.out).done, 80 - int(complete));
+    EXPECT_EQ(count_ending(files_under(out()), ".json"), 80u);
 }
 
 TEST_F(BatchCommand, ShardsTogetherGiveTheUnshardedSetWithoutOverlap) {
