@@ -217,18 +217,29 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& stdout_path
     return pid;
 }
 
-TEST_F(BatchCommand, SigtermStopsCleanlyAndResumeRendersOnlyTheRest) {
-    const std::string manifest = dir_.write("long.csv",
-                                            "model,views,styles\n"
-                                            "builtin:teapot,turntable:20,\"anime,toon\"\n"
-                                            "builtin:torus,turntable:20,\"anime,toon\"\n");
-    const std::vector<std::string> args = {"batch", manifest, "-o", out(), "--size", "32x32"};
-    const pid_t pid = spawn(args, dir_.file("stdout"), dir_.file("stderr"));
-    ASSERT_GT(pid, 0);
-    // Wait until a few jobs are complete, then stop it.
+// 80 small jobs (two models x 20 views x 2 styles) in `dir`: enough to signal a batch midway.
+std::string write_long_manifest(TempDir& dir) {
+    return dir.write("long.csv",
+                     "model,views,styles\n"
+                     "builtin:teapot,turntable:20,\"anime,toon\"\n"
+                     "builtin:torus,turntable:20,\"anime,toon\"\n");
+}
+
+// `inkshade batch MANIFEST -o OUT --size 32x32` in the background (stdout and stderr to files in
+// `dir`), returned once three jobs are complete (or after two minutes); its pid, ≤ 0 on failure.
+pid_t start_batch_until_three_done(TempDir& dir, const std::string& manifest, const std::string& out) {
+    const pid_t pid = spawn({"batch", manifest, "-o", out, "--size", "32x32"}, dir.file("stdout"), dir.file("stderr"));
+    if (pid <= 0) return pid;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (count_ending(files_under(out()), ".json") < 3 && std::chrono::steady_clock::now() < deadline)
+    while (count_ending(files_under(out), ".json") < 3 && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return pid;
+}
+
+TEST_F(BatchCommand, SigtermStopsCleanlyAndResumeRendersOnlyTheRest) {
+    const std::string manifest = write_long_manifest(dir_);
+    const pid_t pid = start_batch_until_three_done(dir_, manifest, out());
+    ASSERT_GT(pid, 0);
     ASSERT_EQ(kill(pid, SIGTERM), 0);
     int raw = 0;
     ASSERT_EQ(waitpid(pid, &raw, 0), pid);
@@ -260,16 +271,9 @@ TEST_F(BatchCommand, SigtermStopsCleanlyAndResumeRendersOnlyTheRest) {
 // every output under its final name is complete (written to a temporary, then renamed), at most
 // the temporaries of one job are left, and the rerun renders exactly the jobs without metadata.
 TEST_F(BatchCommand, SigkillLosesAtMostTheJobInFlightAndTheRerunCompletesTheRest) {
-    const std::string manifest = dir_.write("long.csv",
-                                            "model,views,styles\n"
-                                            "builtin:teapot,turntable:20,\"anime,toon\"\n"
-                                            "builtin:torus,turntable:20,\"anime,toon\"\n");
-    const std::vector<std::string> args = {"batch", manifest, "-o", out(), "--size", "32x32"};
-    const pid_t pid = spawn(args, dir_.file("stdout"), dir_.file("stderr"));
+    const std::string manifest = write_long_manifest(dir_);
+    const pid_t pid = start_batch_until_three_done(dir_, manifest, out());
     ASSERT_GT(pid, 0);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (count_ending(files_under(out()), ".json") < 3 && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     ASSERT_EQ(kill(pid, SIGKILL), 0);
     int raw = 0;
     ASSERT_EQ(waitpid(pid, &raw, 0), pid);
