@@ -626,8 +626,8 @@ struct Tester {
 
     // The levels of many samples (kClipped outside the near/far range) as ray streams
     // (rtcOccluded1M), in fixed blocks on TBB tasks: the same blocks, so the same ray packets,
-    // whatever the thread count. The bisection's rounds go through here too: a stream costs a
-    // third of what the same rays cost one by one.
+    // whatever the thread count. Coherent rays (a chain's nodes) trace faster as packets; the
+    // bisection's scattered rounds gain nothing, but go through here for the fixed blocks.
     void levels(const std::vector<Sample>& samples, std::vector<uint8_t>& out) const {
         constexpr size_t kBlock = 64;
         out.resize(samples.size());
@@ -850,16 +850,22 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             i = j;
         }
     });
-    // Their levels, in one stream.
-    std::vector<size_t> first(chains.size() + 1, 0);
-    for (size_t c = 0; c < chains.size(); ++c) first[c + 1] = first[c] + sampled[c].size();
-    std::vector<Sample> samples(first.back());
-    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
-        for (size_t k = 0; k < sampled[c].size(); ++k)
-            samples[first[c] + k] = node_sample(mesh, chain_node(segments, chains[c], sampled[c][k]));
-    });
+    // The levels of chosen nodes of every chain (`nodes[c]`), in one stream: chain c's are at
+    // first[c] onwards in `levels`.
+    auto node_levels_of = [&](const std::vector<std::vector<uint32_t>>& nodes, std::vector<size_t>& first,
+                              std::vector<uint8_t>& levels) {
+        first.assign(chains.size() + 1, 0);
+        for (size_t c = 0; c < chains.size(); ++c) first[c + 1] = first[c] + nodes[c].size();
+        std::vector<Sample> samples(first.back());
+        tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
+            for (size_t k = 0; k < nodes[c].size(); ++k)
+                samples[first[c] + k] = node_sample(mesh, chain_node(segments, chains[c], nodes[c][k]));
+        });
+        tester.levels(samples, levels);
+    };
+    std::vector<size_t> first;
     std::vector<uint8_t> node_levels;
-    tester.levels(samples, node_levels);
+    node_levels_of(sampled, first, node_levels);
 
     // Between two samples of one level, every segment takes it. Between samples of different
     // levels, every node in between is tested as well (one stream for all), then each segment
@@ -871,15 +877,9 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
             if (node_levels[first[c] + m] != node_levels[first[c] + m + 1])
                 for (uint32_t i = nodes[m] + 1; i < nodes[m + 1]; ++i) inner[c].push_back(i);
     });
-    std::vector<size_t> inner_first(chains.size() + 1, 0);
-    for (size_t c = 0; c < chains.size(); ++c) inner_first[c + 1] = inner_first[c] + inner[c].size();
-    samples.resize(inner_first.back());
-    tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
-        for (size_t k = 0; k < inner[c].size(); ++k)
-            samples[inner_first[c] + k] = node_sample(mesh, chain_node(segments, chains[c], inner[c][k]));
-    });
+    std::vector<size_t> inner_first;
     std::vector<uint8_t> inner_levels;
-    tester.levels(samples, inner_levels);
+    node_levels_of(inner, inner_first, inner_levels);
 
     std::vector<std::vector<SegmentTask>> chain_tasks(chains.size());
     tbb::parallel_for(size_t(0), chains.size(), [&](size_t c) {
