@@ -16,6 +16,7 @@
 #include <string>
 
 #include "geometry/chaining.hpp"
+#include "geometry/face_segments.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/lines.hpp"
 
@@ -356,14 +357,9 @@ EdgeNeighbours::EdgeNeighbours(const Mesh& mesh, const std::vector<uint32_t>& ve
     // order); their edges (at most three a face: the table is at most three quarters full) then
     // go in with compare-and-swap. Which slot an edge lands in depends on the threads; what a
     // lookup finds does not.
-    constexpr size_t kBlock = size_t(1) << 16;
-    std::vector<std::vector<uint32_t>> found((nf + kBlock - 1) / kBlock);
-    tbb::parallel_for(size_t(0), found.size(), [&](size_t block) {
-        for (size_t f = block * kBlock; f < std::min(nf, (block + 1) * kBlock); ++f)
-            if (near(mesh.triangles[f])) found[block].push_back(uint32_t(f));
+    const std::vector<uint32_t> faces = collect_per_face<uint32_t>(nf, [&](size_t f, std::vector<uint32_t>& out) {
+        if (near(mesh.triangles[f])) out.push_back(uint32_t(f));
     });
-    std::vector<uint32_t> faces;
-    for (const auto& list : found) faces.insert(faces.end(), list.begin(), list.end());
     capacity_ = 4 * faces.size() + 16;
     slots_ = std::make_unique<Slot[]>(capacity_);
     std::atomic<size_t> distinct{0};
