@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "inkshade/file_scene.hpp"
@@ -73,6 +75,10 @@ struct Material {
     bool blend_depth_write = false;
     int render_order = 0;
 };
+
+// All three coordinates finite (no NaN, no infinity): what the loaders, welding, normals and
+// the line code accept as a point or a direction.
+inline bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 struct BoundingBox {
     glm::vec3 min{0.0f};

@@ -6,15 +6,9 @@
 
 namespace inkshade::geometry {
 
-namespace {
-
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-}  // namespace
-
 float bounding_sphere_radius(const Mesh& mesh) {
     const auto& p = mesh.positions;
-    auto first = std::find_if(p.begin(), p.end(), finite);
+    auto first = std::find_if(p.begin(), p.end(), is_finite);
     if (first == p.end()) return 0.0f;
     // Ritter: from any point the farthest x, from x the farthest y; the sphere on xy grows to
     // take in every point left outside it.
@@ -22,7 +16,7 @@ float bounding_sphere_radius(const Mesh& mesh) {
         glm::dvec3 best = from;
         double best_d = -1.0;
         for (const glm::vec3& q : p)
-            if (finite(q)) {
+            if (is_finite(q)) {
                 const double d = glm::dot(glm::dvec3(q) - from, glm::dvec3(q) - from);
                 if (d > best_d) best_d = d, best = glm::dvec3(q);
             }
@@ -32,7 +26,7 @@ float bounding_sphere_radius(const Mesh& mesh) {
     glm::dvec3 center = 0.5 * (x + y);
     double radius = 0.5 * glm::length(y - x);
     for (const glm::vec3& q : p) {
-        if (!finite(q)) continue;
+        if (!is_finite(q)) continue;
         const double d = glm::length(glm::dvec3(q) - center);
         if (d <= radius) continue;
         const double grown = 0.5 * (radius + d);

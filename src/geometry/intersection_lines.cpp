@@ -79,14 +79,12 @@ Box face_box(const Mesh& mesh, const glm::uvec3& t) {
     return {glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c)};
 }
 
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
 // In-range, distinct indices, finite positions and a nonzero normal.
 bool usable(const Mesh& mesh, const glm::uvec3& t) {
     const size_t nv = mesh.positions.size();
     if (t.x >= nv || t.y >= nv || t.z >= nv || t.x == t.y || t.y == t.z || t.x == t.z) return false;
     const glm::vec3 &a = mesh.positions[t.x], &b = mesh.positions[t.y], &c = mesh.positions[t.z];
-    if (!finite(a) || !finite(b) || !finite(c)) return false;
+    if (!is_finite(a) || !is_finite(b) || !is_finite(c)) return false;
     return glm::cross(dvec3(b) - dvec3(a), dvec3(c) - dvec3(a)) != dvec3(0.0);
 }
 

@@ -12,8 +12,6 @@ namespace {
 
 constexpr size_t kGrain = 16384;  // faces per TBB task: small meshes stay on one thread
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 bool valid(const glm::uvec3& t, size_t n) { return t.x < n && t.y < n && t.z < n; }
 
 }  // namespace
@@ -92,7 +90,7 @@ bool normals_are_sane(const Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size()) return false;
     for (const glm::vec3& n : mesh.normals) {
         const float len2 = glm::dot(n, n);
-        if (!finite(n) || !(len2 > 0.0f) || !std::isfinite(len2)) return false;
+        if (!is_finite(n) || !(len2 > 0.0f) || !std::isfinite(len2)) return false;
     }
     return true;
 }

@@ -163,9 +163,6 @@ void weld(Mesh& mesh, const WeldOptions& options) {
     // every index fits in 21 bits.
     double cell = std::max(16.0 * eps, diagonal / double(kAxisCells / 2));
     if (!(cell > 0.0)) cell = 1.0;  // all finite positions coincide
-    const auto finite = [](const glm::vec3& p) {
-        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-    };
     // Grid coordinates of p: integer cell index and (unit-free) position inside the cell.
     const auto locate = [&](const glm::vec3& p, int64_t idx[3], double in_cell[3]) {
         for (int a = 0; a < 3; ++a) {
@@ -181,14 +178,14 @@ void weld(Mesh& mesh, const WeldOptions& options) {
     CellTable table(n / 4);
     constexpr size_t kPrefetchDistance = 16;  // vertices ahead: hides the table's cache misses
     for (size_t v = 0; v < n; ++v) {
-        if (v + kPrefetchDistance < n && finite(mesh.positions[v + kPrefetchDistance])) {
+        if (v + kPrefetchDistance < n && is_finite(mesh.positions[v + kPrefetchDistance])) {
             int64_t ahead[3];
             double unused[3];
             locate(mesh.positions[v + kPrefetchDistance], ahead, unused);
             table.prefetch(pack(ahead[0], ahead[1], ahead[2]));
         }
         const glm::vec3 p = mesh.positions[v];
-        if (!finite(p)) {
+        if (!is_finite(p)) {
             remap[v] = uint32_t(reps.size());
             reps.push_back(uint32_t(v));
             next.push_back(kNone);

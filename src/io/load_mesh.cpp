@@ -22,8 +22,6 @@
 namespace inkshade {
 namespace {
 
-bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // Largest accepted coordinate magnitude. Cameras, bounding boxes and line projection work in
 // float: a squared distance across a model spanning +-1e34 overflows, and auto-framing would
 // put the eye at infinity. 1e15 leaves those products 7 orders of magnitude of headroom and is
@@ -44,14 +42,15 @@ void validate(Mesh& mesh, const std::string& path) {
     if (mesh.face_materials.size() != mesh.triangles.size()) mesh.face_materials.clear();
 
     for (size_t i = 0; i < n; ++i) {
-        if (!finite(mesh.positions[i]))
+        if (!is_finite(mesh.positions[i]))
             throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
         if (!in_range(mesh.positions[i]))
             throw InputError(path,
                              "vertex " + std::to_string(i) + " has a coordinate beyond +-1e15 (too large to draw)");
     }
     for (size_t i = 0; i < mesh.colors.size(); ++i)
-        if (!finite(mesh.colors[i])) throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite colour");
+        if (!is_finite(mesh.colors[i]))
+            throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite colour");
     for (size_t i = 0; i < mesh.uvs.size(); ++i)
         if (!std::isfinite(mesh.uvs[i].x) || !std::isfinite(mesh.uvs[i].y))
             throw InputError(path, "vertex " + std::to_string(i) + " has a non-finite texture coordinate");

@@ -17,8 +17,6 @@ namespace inkshade {
 
 namespace {
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNames names) {
     if (!c) return;
     for (int i = 0; i < 4; ++i)
@@ -222,7 +220,7 @@ void check_camera_options(const CameraOptions& o, OptionNames names) {
     if (o.distance && !(*o.distance > 0.0f && std::isfinite(*o.distance)))
         throw InputError(name("distance") + ": must be a positive number");
     for (auto [value, option] : {std::pair{o.eye, "eye"}, std::pair{o.target, "target"}, std::pair{o.up, "up"}})
-        if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
+        if (value && !is_finite(*value)) throw InputError(name(option) + ": must be finite");
     if (o.up && glm::length(*o.up) == 0.0f) throw InputError(name("up") + ": must not be zero");
     if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
         throw InputError(name("fov") + ": expected degrees in (0, 180)");
@@ -279,7 +277,7 @@ Scene make_scene(const SceneRequest& r) {
         throw InputError(name("bit-depth") + ": expected 8 or 16, got " + std::to_string(r.bit_depth));
     check_camera_options(r.camera, r.names);
     for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
-        if (value && !finite(*value)) throw InputError(name(option) + ": must be finite");
+        if (value && !is_finite(*value)) throw InputError(name(option) + ": must be finite");
     for (auto [value, option] : {std::pair{r.light_color, "light-color"}, std::pair{r.ambient, "ambient"},
                                  std::pair{r.base_color, "base-color"}})
         check_color(value ? std::optional<glm::vec4>(glm::vec4(*value, 1.0f)) : std::nullopt, option, r.names);
