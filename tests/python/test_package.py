@@ -1,6 +1,7 @@
-"""`pip install .` and `python3 -m build --wheel`, as docs/library.md gives them: offline
-(--no-build-isolation --no-index), into a temporary venv that sees Debian's numpy, then
-`import inkshade` from another directory without any path edit.
+"""`pip install .`, `python3 -m build --wheel` and `--sdist`, as docs/library.md gives them:
+offline (--no-build-isolation --no-index), into a temporary venv that sees Debian's numpy, then
+`import inkshade` from another directory without any path edit; the sdist holds every file the
+extension's CMake build reads (MANIFEST.in) and configures on its own.
 
 setup.py reuses this CMake build (INKSHADE_CMAKE_BUILD_DIR, set by ctest), so on an
 up-to-date tree its build step is a no-op and the test takes seconds; a build from scratch is
@@ -12,6 +13,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tarfile
 import tempfile
 import time
 import unittest
@@ -33,6 +35,22 @@ assert importlib.metadata.version("inkshade") == inkshade.__version__, inkshade.
 print(os.path.dirname(inkshade.__file__))
 print(inkshade._inkshade.__file__)
 """
+
+
+# What setup.py's CMake build reads (MANIFEST.in), relative to the source tree: files, then folders.
+SDIST_FILES = ["CMakeLists.txt", "setup.py", "pyproject.toml", "README.md", "MANIFEST.in",
+               "python/CMakeLists.txt", "python/extension.map", "python/inkshade_module.cpp"]
+SDIST_FOLDERS = ["cmake", "include", "src", "apps", "shaders", "python/inkshade"]
+
+
+def source_files():
+    """The files of SDIST_FILES and SDIST_FOLDERS in the source tree, without Python caches."""
+    files = set(SDIST_FILES)
+    for folder in SDIST_FOLDERS:
+        for root, dirs, names in os.walk(os.path.join(SOURCE_DIR, folder)):
+            dirs[:] = [d for d in dirs if d != "__pycache__"]
+            files.update(os.path.relpath(os.path.join(root, n), SOURCE_DIR) for n in names if not n.endswith(".pyc"))
+    return files
 
 
 def run(*args, **kwargs):
@@ -106,6 +124,26 @@ class PackageTest(unittest.TestCase):
                     self.assertRegex(line.split("=>")[1].strip(), r"^/(usr/)?lib", line)
             symbols = run("nm", "-D", "--defined-only", extension).stdout.split()
             self.assertEqual([s for s in symbols if s.startswith("Py")], ["PyInit__inkshade"])
+
+    def test_sdist_holds_the_sources_and_configures_on_its_own(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run(sys.executable, "-m", "build", "--sdist", "--no-isolation", "--outdir", tmp, SOURCE_DIR, env=self.env)
+            archives = glob.glob(os.path.join(tmp, "*.tar.gz"))
+            self.assertEqual(len(archives), 1, archives)
+            name = os.path.basename(archives[0])[: -len(".tar.gz")]
+            self.assertRegex(name, r"^inkshade-\d+\.\d+\.\d+$")
+            with tarfile.open(archives[0]) as sdist:
+                members = {m.name[len(name) + 1:] for m in sdist.getmembers() if m.isfile()}
+                sdist.extractall(tmp, **({"filter": "data"} if hasattr(tarfile, "data_filter") else {}))
+            self.assertEqual(members - source_files(), {"PKG-INFO", "setup.cfg"})
+            self.assertEqual(source_files() - members, set(), "files the build reads, missing from the sdist")
+            # The configure step of `pip install inkshade-X.Y.Z.tar.gz`, on the sdist alone: every
+            # file CMake reads at configure time is there (the compile reads the files checked above).
+            build = os.path.join(tmp, "build")
+            run("cmake", "-S", os.path.join(tmp, name), "-B", build, "-DINKSHADE_BUILD_TESTS=OFF",
+                "-DINKSHADE_BUILD_BENCH=OFF", f"-DPython3_EXECUTABLE={sys.executable}", env=self.env)
+            self.assertTrue(os.path.exists(os.path.join(build, "inkshadeConfig.cmake")))
+            self.assertIn("inkshade_python", run("cmake", "--build", build, "--target", "help").stdout)
 
 
 if __name__ == "__main__":
