@@ -15,9 +15,10 @@
 namespace inkshade::geometry {
 
 std::vector<LineSegment> extract_isolines(const Mesh& mesh, const std::vector<float>& f,
-                                          const std::vector<double>& levels) {
+                                          const std::vector<double>& levels, const std::vector<float>* facing) {
     const size_t n = mesh.positions.size();
-    if (f.size() != n) throw std::invalid_argument("extract_isolines: need one value per vertex");
+    if (f.size() != n || (facing && facing->size() != n))
+        throw std::invalid_argument("extract_isolines: need one value per vertex");
     if (levels.empty()) return {};
 
     // The point where f = level on edge (i, j), from the ordered pair alone.
@@ -33,6 +34,7 @@ std::vector<LineSegment> extract_isolines(const Mesh& mesh, const std::vector<fl
     return collect_face_segments(tris.size(), [&](size_t face, std::vector<LineSegment>& out) {
         const glm::uvec3 t = tris[face];
         if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x) return;
+        if (facing && (*facing)[t.x] <= 0.0f && (*facing)[t.y] <= 0.0f && (*facing)[t.z] <= 0.0f) return;
         const double v[3] = {f[t.x], f[t.y], f[t.z]};
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return;
         const double lo = std::min({v[0], v[1], v[2]}), hi = std::max({v[0], v[1], v[2]});

@@ -17,10 +17,13 @@ namespace inkshade::geometry {
 // g = 0 as positive), so a face has at most one segment per level, and the crossing on an edge
 // is computed from that edge alone: the two faces of an edge get bit-identical points. Walking
 // a → b keeps the higher values on the left (counter-clockwise side). Faces with an index out
-// of range, a repeated index or a non-finite value give no segment. Strength 1. Throws
-// std::invalid_argument when f does not have one value per vertex.
+// of range, a repeated index or a non-finite value give no segment. Strength 1. With `facing`
+// (n·v per vertex, view_dot_normal), faces whose three corners face away (n·v ≤ 0) give none
+// either: rtsc's back-face cull, which spares visibility the lines on the far side. Throws
+// std::invalid_argument when f (or facing) does not have one value per vertex.
 std::vector<LineSegment> extract_isolines(const Mesh& mesh, const std::vector<float>& f,
-                                          const std::vector<double>& levels);
+                                          const std::vector<double>& levels,
+                                          const std::vector<float>* facing = nullptr);
 
 // The unit world vector of `direction` given in the camera's frame (x right, y up, z towards
 // the viewer: OpenGL eye space, Camera::view()), as rtsc turns its light with the camera.

@@ -35,7 +35,9 @@ std::vector<LineSegment> extract_isophotes(const Mesh& mesh, const std::vector<g
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kFaceGrain), [&](const auto& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) ndotl[i] = float(glm::dot(glm::dvec3(normals[i]), light));
     });
-    return extract_isolines(mesh, ndotl, isophote_levels(options));
+    if (options.back_faces) return extract_isolines(mesh, ndotl, isophote_levels(options));
+    const std::vector<float> facing = view_dot_normal(mesh, normals, camera);
+    return extract_isolines(mesh, ndotl, isophote_levels(options), &facing);
 }
 
 }  // namespace inkshade::geometry

@@ -23,6 +23,9 @@ struct IsophoteOptions {
     int levels = 20;
     // The n·l values drawn when levels is 0 (each in [-1, 1]; order and repeats do not matter).
     std::vector<float> values;
+    // Also on faces turned away from the viewer (rtsc culls those whose three corners have
+    // n·v ≤ 0: on a closed model they are hidden, and under a headlight they hold the unlit half).
+    bool back_faces = false;
 };
 
 // The n·l of each isoline, strictly increasing: LineSegment::isoline indexes it.

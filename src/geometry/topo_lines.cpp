@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "geometry/face_segments.hpp"
@@ -50,7 +51,10 @@ std::vector<double> topo_levels(const Mesh& mesh, const Camera& camera, const To
     return levels;
 }
 
-std::vector<LineSegment> extract_topo_lines(const Mesh& mesh, const Camera& camera, const TopoOptions& options) {
+std::vector<LineSegment> extract_topo_lines(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                            const Camera& camera, const TopoOptions& options) {
+    if (normals.size() != mesh.positions.size())
+        throw std::invalid_argument("extract_topo_lines: need one normal per vertex");
     const std::vector<double> levels = topo_levels(mesh, camera, options);
     if (levels.empty()) return {};
     const glm::dvec3 axis = height_axis(camera, options);
@@ -60,7 +64,9 @@ std::vector<LineSegment> extract_topo_lines(const Mesh& mesh, const Camera& came
         for (size_t i = range.begin(); i != range.end(); ++i)
             height[i] = float(glm::dot(glm::dvec3(mesh.positions[i]), axis));
     });
-    return extract_isolines(mesh, height, levels);
+    if (options.back_faces) return extract_isolines(mesh, height, levels);
+    const std::vector<float> facing = view_dot_normal(mesh, normals, camera);
+    return extract_isolines(mesh, height, levels, &facing);
 }
 
 }  // namespace inkshade::geometry

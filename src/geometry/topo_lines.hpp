@@ -23,6 +23,9 @@ struct TopoOptions {
     float spacing = 0.0f;
     // Shift of every line, in units of the spacing (rtsc's topo_offset, 0).
     float offset = 0.0f;
+    // Also on faces turned away from the viewer (rtsc culls those whose three corners have
+    // n·v ≤ 0).
+    bool back_faces = false;
 };
 
 // The most lines one drawing may ask for: a spacing giving more is an InputError.
@@ -33,7 +36,9 @@ constexpr size_t kMaxTopoLines = 10000;
 // for a zero direction or more than kMaxTopoLines lines.
 std::vector<double> topo_levels(const Mesh& mesh, const Camera& camera, const TopoOptions& options);
 
-// Topographic segments: extract_isolines of p·d, d the unit world direction.
-std::vector<LineSegment> extract_topo_lines(const Mesh& mesh, const Camera& camera, const TopoOptions& options = {});
+// Topographic segments: extract_isolines of p·d, d the unit world direction. `normals` (one per
+// vertex; std::invalid_argument otherwise) tell the faces turned away.
+std::vector<LineSegment> extract_topo_lines(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                            const Camera& camera, const TopoOptions& options = {});
 
 }  // namespace inkshade::geometry

@@ -33,11 +33,11 @@ glm::dvec3 camera_axis_in_world(const Camera& c, const glm::dvec3& d) {
 
 // On the unit sphere n = p, so the isophote n·l = c is the circle at angle acos(c) from l.
 // The light comes from the upper right behind the viewer's shoulder, so both lit and unlit
-// levels face the camera; every level's circle is one closed loop.
+// levels face the camera; with the back faces every level's circle is one closed loop.
 TEST(Isophotes, SphereIsophotesAreCirclesAtTheirAngleFromTheLight) {
     const Mesh m = builtin::sphere(64, 128, 1.0f);
     const Camera camera = perspective({1.0f, 1.5f, 4.0f});
-    const IsophoteOptions options{.direction = {1.0f, 1.0f, 1.0f}, .levels = 5};
+    const IsophoteOptions options{.direction = {1.0f, 1.0f, 1.0f}, .levels = 5, .back_faces = true};
     const glm::dvec3 l = camera_axis_in_world(camera, {1.0, 1.0, 1.0});
     const std::vector<double> levels = isophote_levels(options);
     ASSERT_EQ(levels, (std::vector<double>{-0.8, -0.6, -0.4, -0.2, 0.0, 0.2, 0.4, 0.6, 0.8}));
@@ -73,8 +73,36 @@ TEST(Isophotes, DefaultIsAHeadlightWithRtscsTwentyLevels) {
     }
 }
 
+// By default, as rtsc, faces whose three corners face away from the eye draw nothing: what is
+// left is the back-face drawing without those faces' segments.
+TEST(Isophotes, FacesTurnedAwayAreCulledByDefault) {
+    const Mesh m = builtin::sphere(64, 128, 1.0f);
+    const Camera camera = perspective({1.0f, 1.5f, 4.0f});
+    const std::vector<float> ndotv = view_dot_normal(m, m.normals, camera);
+    const auto away = [&](uint32_t f) {
+        const glm::uvec3 t = m.triangles[f];
+        return ndotv[t.x] <= 0.0f && ndotv[t.y] <= 0.0f && ndotv[t.z] <= 0.0f;
+    };
+    IsophoteOptions options{.direction = {1.0f, 1.0f, 1.0f}, .levels = 5};
+    const auto culled = extract_isophotes(m, m.normals, camera, options);
+    options.back_faces = true;
+    const auto all = extract_isophotes(m, m.normals, camera, options);
+    size_t kept = 0, dropped = 0;
+    for (const LineSegment& s : all) (away(s.face) ? dropped : kept) += 1;
+    EXPECT_GT(dropped, 100u);
+    ASSERT_EQ(culled.size(), kept);
+    size_t i = 0;
+    for (const LineSegment& s : all)
+        if (!away(s.face)) {
+            EXPECT_EQ(culled[i].face, s.face);
+            EXPECT_EQ(culled[i].a, s.a);
+            ++i;
+        }
+}
+
 TEST(Isophotes, ListedValuesWhenLevelsIsZero) {
-    const IsophoteOptions options{.levels = 0, .values = {0.5f, -0.25f, 0.5f, 2.0f}};
+    // (n·l = −0.25 under this headlight lies beyond the outline: drawn with the back faces.)
+    const IsophoteOptions options{.levels = 0, .values = {0.5f, -0.25f, 0.5f, 2.0f}, .back_faces = true};
     EXPECT_EQ(isophote_levels(options), (std::vector<double>{-0.25, 0.5, 1.0}));
     const Mesh m = builtin::sphere(32, 64, 1.0f);
     const Camera camera = perspective({0.0f, 0.0f, 4.0f});

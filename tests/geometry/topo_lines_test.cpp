@@ -40,7 +40,7 @@ TEST(TopoLines, SphereDepthSlicesAreCirclesAtTheirHeights) {
     }
     EXPECT_GE(levels.front(), bottom - 1e-6);
     EXPECT_LE(levels.back(), bottom + 2.0 * sphere.radius + 1e-6);
-    const auto segs = extract_topo_lines(m, camera);
+    const auto segs = extract_topo_lines(m, m.normals, camera, {.back_faces = true});
     std::map<uint32_t, int> used;
     for (const LineSegment& s : segs) {
         const double h = levels.at(s.isoline);
@@ -57,6 +57,11 @@ TEST(TopoLines, SphereDepthSlicesAreCirclesAtTheirHeights) {
     const auto loops = chain_segments(segs);
     EXPECT_EQ(loops.size(), inside);
     for (const Polyline& loop : loops) EXPECT_TRUE(loop.closed);
+    // By default faces turned away are culled, as rtsc does: the eye at distance 4.6 sees the
+    // sphere down to h = 1 / 4.6, so slices below h = 0.2 − a ring or two are gone.
+    for (const LineSegment& s : extract_topo_lines(m, m.normals, camera))
+        EXPECT_GT(levels.at(s.isoline), 0.217 - 0.08) << "on a face turned away";
+    EXPECT_LT(extract_topo_lines(m, m.normals, camera).size(), segs.size() / 2);
 }
 
 // A map's contour lines of the torus around the z axis, z = (k + ½) · 0.1: at height h the
@@ -65,7 +70,8 @@ TEST(TopoLines, TorusWorldHeightsWithSpacingAndOffset) {
     const double R = 1.0, r = 0.4;
     const Mesh m = builtin::torus(float(R), float(r), 256, 128);
     const Camera camera = perspective({3.0f, 1.0f, 2.0f});
-    const TopoOptions options{.direction = {0.0f, 0.0f, 2.0f}, .world = true, .spacing = 0.1f, .offset = 0.5f};
+    const TopoOptions options{
+        .direction = {0.0f, 0.0f, 2.0f}, .world = true, .spacing = 0.1f, .offset = 0.5f, .back_faces = true};
     // Every height (k + ½) · 0.1 inside the bounding sphere (radius about 1.4), of which those
     // with |h| < r cut the torus.
     const std::vector<double> levels = topo_levels(m, camera, options);
@@ -73,7 +79,7 @@ TEST(TopoLines, TorusWorldHeightsWithSpacingAndOffset) {
     for (size_t k = 0; k < levels.size(); ++k) EXPECT_NEAR(levels[k], levels[0] + 0.1 * double(k), 1e-6);
     const double k0 = levels[0] / 0.1 - 0.5;
     EXPECT_NEAR(k0, std::round(k0), 1e-5);
-    const auto segs = extract_topo_lines(m, camera, options);
+    const auto segs = extract_topo_lines(m, m.normals, camera, options);
     ASSERT_FALSE(segs.empty());
     std::set<long> cut;
     for (const LineSegment& s : segs) {
@@ -103,7 +109,7 @@ TEST(TopoLines, OffsetShiftsAndSpacingIsChecked) {
     EXPECT_THROW(topo_levels(m, camera, {.spacing = 1e-6f}), InputError);
     EXPECT_THROW(topo_levels(m, camera, {.direction = glm::vec3(0.0f), .world = true}), InputError);
     EXPECT_THROW(topo_levels(m, camera, {.direction = glm::vec3(0.0f)}), InputError);
-    EXPECT_TRUE(extract_topo_lines(Mesh{}, camera).empty());
+    EXPECT_TRUE(extract_topo_lines(Mesh{}, {}, camera).empty());
 }
 
 }  // namespace

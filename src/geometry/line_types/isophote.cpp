@@ -13,6 +13,7 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     options.direction = line_direction(settings, "direction");
     options.levels = int(line_number(settings, "levels"));
     options.values = line_param(settings, "values");
+    options.back_faces = line_number(settings, "back-faces") != 0.0f;
     return extract_isophotes(data.mesh(), data.normals(), camera, options);
 }
 
@@ -26,7 +27,9 @@ const ObjectLineRegistration registration{
                      "turns with the camera, default along its z axis (a headlight)"),
           int_param("levels", 20, 0, 1000,
                     "draw n·l = k / levels for every integer |k| < levels (rtsc's niso, 20); 0 = draw `values`"),
-          list_param("values", {0.2f, 0.4f, 0.6f, 0.8f}, 32, -1.0f, 1.0f, "the n·l values drawn when levels = 0")},
+          list_param("values", {0.2f, 0.4f, 0.6f, 0.8f}, 32, -1.0f, 1.0f, "the n·l values drawn when levels = 0"),
+          bool_param("back-faces", false,
+                     "also on faces turned away from the viewer (rtsc culls faces whose three corners have n·v <= 0)")},
          1.0f)},
     extract};
 

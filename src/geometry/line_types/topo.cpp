@@ -14,7 +14,8 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     options.count = int(line_number(settings, "count"));
     options.spacing = line_number(settings, "spacing");
     options.offset = line_number(settings, "offset");
-    return extract_topo_lines(data.mesh(), camera, options);
+    options.back_faces = line_number(settings, "back-faces") != 0.0f;
+    return extract_topo_lines(data.mesh(), data.normals(), camera, options);
 }
 
 const ObjectLineRegistration registration{
@@ -34,7 +35,9 @@ const ObjectLineRegistration registration{
           float_param("spacing", 0.0f, 0.0f, 1e9f,
                       "world units between lines, heights measured from the origin; 0 = the diameter / count"),
           float_param("offset", 0.0f, -1000.0f, 1000.0f,
-                      "shift of every line in units of the spacing (rtsc's topo_offset, 0)")},
+                      "shift of every line in units of the spacing (rtsc's topo_offset, 0)"),
+          bool_param("back-faces", false,
+                     "also on faces turned away from the viewer (rtsc culls faces whose three corners have n·v <= 0)")},
          1.0f)},
     extract};
 
