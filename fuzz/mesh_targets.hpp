@@ -78,7 +78,8 @@ inline void gltf_input(std::string_view data) {
 
 // The mesh pipeline after loading, on whatever a loader accepts: welding and normals (load_mesh),
 // then adjacency, curvature and object-space line extraction with visibility (LineExtractor) for
-// contour, suggestive, crease, border, ridge and valley lines, and the SVG and JSON writers.
+// contour, suggestive, crease, border, ridge, valley, isophote, topographic and highlight lines,
+// and the SVG and JSON writers.
 // Byte 0 picks the format, byte 1 the view and options; the rest is the file. Meshes over
 // kMaxPipelineTriangles are skipped to keep executions fast.
 inline constexpr size_t kMaxPipelineTriangles = 5000;
@@ -100,7 +101,8 @@ inline void mesh_pipeline_input(std::string_view data) {
     const int width = 48, height = 32;
     const Camera camera = frame_camera(mesh.bounds(), view, float(width) / float(height));
     std::vector<LineSettings> lines;
-    for (const char* type : {"contour", "suggestive", "crease", "border", "ridge", "valley"}) {
+    for (const char* type : {"contour", "suggestive", "crease", "border", "ridge", "valley", "isophote", "topo",
+                             "suggestive-highlight", "principal-highlight"}) {
         LineSettings settings{type, {}};
         if (options & 32) {
             settings.params["hidden"] = {1.0f};

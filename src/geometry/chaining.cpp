@@ -1,6 +1,7 @@
-// Chaining: nodes are edge keys, segments are graph edges. A flat hash table numbers the nodes, a
-// counting pass builds compressed adjacency (CSR) in segment order, then each segment is
-// walked once — O(n) overall, and the order depends only on the input order.
+// Chaining: nodes are edge keys (one set per isoline), segments are graph edges. A flat hash
+// table numbers the nodes, a counting pass builds compressed adjacency (CSR) in segment order,
+// then each segment is walked once — O(n) overall, and the order depends only on the input
+// order.
 #include "geometry/chaining.hpp"
 
 #include <algorithm>
@@ -16,8 +17,8 @@ std::vector<Chain> chain_order(const std::vector<LineSegment>& segments) {
     std::vector<std::array<uint32_t, 2>> seg_node(n);
     std::vector<char> used(n, 0);
     std::vector<uint32_t> degree;
-    auto node = [&](uint64_t key) {
-        const uint32_t v = node_of.insert(key);
+    auto node = [&](uint64_t key, uint32_t isoline) {
+        const uint32_t v = node_of.insert(key, isoline);
         if (v == degree.size()) degree.push_back(0);
         return v;
     };
@@ -26,7 +27,7 @@ std::vector<Chain> chain_order(const std::vector<LineSegment>& segments) {
             used[s] = 1;  // no direction: dropped
             continue;
         }
-        seg_node[s] = {node(segments[s].edge_a), node(segments[s].edge_b)};
+        seg_node[s] = {node(segments[s].edge_a, segments[s].isoline), node(segments[s].edge_b, segments[s].isoline)};
         ++degree[seg_node[s][0]];
         ++degree[seg_node[s][1]];
     }

@@ -30,15 +30,15 @@ struct Chain {
 // whose two ends share a key are left out.
 std::vector<Chain> chain_order(const std::vector<LineSegment>& segments);
 
-// Joins segments that share a node key into polylines, in O(n) (hash map from key to segment
-// ends). A node with one segment end, or more than two (non-manifold, crease junction), ends a
-// chain; chains through nodes of degree two only are closed loops. Output order is
-// deterministic: first the open chains, in the order of the first segment end (by segment
-// index, a before b) at a chain-ending node; then the loops, by their lowest segment index.
-// Each polyline runs along its first segment's a → b direction (an open chain walked from that
-// segment's b end is reversed), so on a consistently oriented mesh a contour keeps the
-// front-facing side on its left. A point takes the strength of the segment end it came from.
-// Segments whose two ends share a key are dropped.
+// Joins segments that share a node key, on the same LineSegment::isoline, into polylines, in
+// O(n) (hash map from key to segment ends). A node with one segment end, or more than two
+// (non-manifold, crease junction), ends a chain; chains through nodes of degree two only are
+// closed loops. Output order is deterministic: first the open chains, in the order of the
+// first segment end (by segment index, a before b) at a chain-ending node; then the loops, by
+// their lowest segment index. Each polyline runs along its first segment's a → b direction
+// (an open chain walked from that segment's b end is reversed), so on a consistently oriented
+// mesh a contour keeps the front-facing side on its left. A point takes the strength of the
+// segment end it came from. Segments whose two ends share a key are dropped.
 std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments);
 
 // Polyline length in the units of its points, the closing step of a loop included.

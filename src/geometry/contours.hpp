@@ -48,6 +48,10 @@ struct LineSegment {
     float strength_a = 1.0f, strength_b = 1.0f;  // in [0, 1], for fading; contours and creases 1
     // The second face an intersection line lies on (the other surface), else kNoFace.
     uint32_t face_b = kNoFace;
+    // Which of its type's isolines the segment is on, for types that draw several level sets
+    // of one function (isophotes, topographic lines: the level's index). Chaining joins only
+    // ends of one isoline: two levels crossing the same mesh edge share its node key.
+    uint32_t isoline = 0;
 };
 
 // The contour's name for the shared segment type.

@@ -6,10 +6,10 @@
 
 namespace inkshade::geometry {
 
-float bounding_sphere_radius(const Mesh& mesh) {
+BoundingSphere bounding_sphere(const Mesh& mesh) {
     const auto& p = mesh.positions;
     auto first = std::find_if(p.begin(), p.end(), is_finite);
-    if (first == p.end()) return 0.0f;
+    if (first == p.end()) return {};
     // Ritter: from any point the farthest x, from x the farthest y; the sphere on xy grows to
     // take in every point left outside it.
     auto farthest = [&](const glm::dvec3& from) {
@@ -33,7 +33,7 @@ float bounding_sphere_radius(const Mesh& mesh) {
         center += (grown - radius) / d * (glm::dvec3(q) - center);
         radius = grown;
     }
-    return float(radius);
+    return {glm::vec3(center), float(radius)};
 }
 
 float line_feature_size(const Mesh& mesh, const Curvature& curvature) {

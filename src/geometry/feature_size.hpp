@@ -8,10 +8,15 @@
 
 namespace inkshade::geometry {
 
-// Radius of a sphere around every vertex (Ritter 1990, "An efficient bounding sphere"): within
-// a few percent of the smallest one, in two passes. 0 for no vertex; non-finite vertices are
-// skipped.
-float bounding_sphere_radius(const Mesh& mesh);
+// A sphere around every vertex (Ritter 1990, "An efficient bounding sphere"): within a few
+// percent of the smallest one, in two passes. Radius 0 at the origin for no vertex; non-finite
+// vertices are skipped.
+struct BoundingSphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+BoundingSphere bounding_sphere(const Mesh& mesh);
+inline float bounding_sphere_radius(const Mesh& mesh) { return bounding_sphere(mesh).radius; }
 
 // rtsc 1.6's feature size (compute_feature_size): 1 % of the reciprocal of the 10th percentile
 // of |k1| and |k2| over a sample of 500 vertices (its linear congruential generator, so the same

@@ -129,7 +129,8 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), kGrain), [&](const auto& range) {
         for (size_t f = range.begin(); f != range.end(); ++f)
             if (crossed(tris[f]))
-                for (int k = 0; k < 3; ++k) std::atomic_ref<uint8_t>(needed[tris[f][k]]).store(1, std::memory_order_relaxed);
+                for (int k = 0; k < 3; ++k)
+                    std::atomic_ref<uint8_t>(needed[tris[f][k]]).store(1, std::memory_order_relaxed);
     });
     struct Trim {
         float dwkr = 0.0f, ndotv = 0.0f;
@@ -142,9 +143,11 @@ std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std
                 trim[i] = {vc.dwkr, vc.ndotv};
             }
     });
-    // The trim test's numerator (D_w κr − threshold·n·v) and denominator (n·v) at vertex i.
+    // The trim test's numerator (±D_w κr − threshold·n·v; minus for highlights) and
+    // denominator (n·v) at vertex i.
+    const double sign = options.highlights ? -1.0 : 1.0;
     auto test = [&](uint32_t i) {
-        return std::pair{double(trim[i].dwkr) - threshold * double(trim[i].ndotv), double(trim[i].ndotv)};
+        return std::pair{sign * double(trim[i].dwkr) - threshold * double(trim[i].ndotv), double(trim[i].ndotv)};
     };
 
     // The crossing on edge (i, j) with its test values, from the edge alone (bit-identical

@@ -24,6 +24,11 @@ struct SuggestiveOptions {
     // The length (world units) that makes the two values above dimensionless; 0 = rtsc's
     // automatic one from the curvature (feature_size.hpp).
     float feature_size = 0.0f;
+    // Suggestive highlights instead (line type `suggestive-highlight`; DeCarlo & Rusinkiewicz
+    // 2007, "Highlight Lines for Conveying Shape"): the zeros of κr where D_w κr < 0, trimmed
+    // where −D_w κr / (n·v) > threshold / feature_size² (rtsc's sh_thresh default 0.02) and
+    // faded alike.
+    bool highlights = false;
 };
 
 // Per-vertex view-dependent curvature for one view (a debug view shows kr).
@@ -48,8 +53,9 @@ RadialCurvature radial_curvature(const Mesh& mesh, const std::vector<glm::vec3>&
 // extract_contours does for n·v, so neighbouring faces share bit-identical points, node keys
 // and strengths. Each segment is then cut to where it is front-facing (n·v > 0) and passes the
 // threshold, with D_w κr and n·v interpolated linearly along it (rtsc's sctest_num /
-// sctest_den); a cut end gets face_interior_key and strength 0 (or 1 where it meets a contour).
-// Walking a → b keeps κr ≥ 0 on the left.
+// sctest_den; with options.highlights the sign of D_w κr turned, rtsc's shtest_num); a cut end
+// gets face_interior_key and strength 0 (or 1 where it meets a contour). Walking a → b keeps
+// κr ≥ 0 on the left.
 std::vector<LineSegment> extract_suggestive_contours(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                                                      const Curvature& curvature, const Camera& camera,
                                                      const SuggestiveOptions& options = {});

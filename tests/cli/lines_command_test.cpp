@@ -131,6 +131,43 @@ TEST(LinesCommand, TimingPrintsStagesAndTotal) {
         EXPECT_NE(r.out.find(stage), std::string::npos) << r.out;
 }
 
+// The rtsc line types beyond contours: each has its SVG layer with paths on the teapot, in the
+// order asked for, and its JSON layer with the parameters; bad values are one-line errors.
+TEST(LinesCommand, IsophotesTopoAndHighlightLayers) {
+    TempDir dir;
+    const std::vector<std::string> types = {"isophote", "topo", "suggestive-highlight", "principal-highlight"};
+    auto r = run_cli(
+        "lines builtin:teapot --size 320x240 --lines isophote,topo,suggestive-highlight,principal-highlight "
+        "-o " +
+        dir.file("t.svg") + " --lines-json " + dir.file("t.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = slurp(dir.file("t.svg"));
+    size_t previous = 0;
+    for (const std::string& type : types) {
+        const size_t at = svg.find("<g id=\"" + type + "\"");
+        ASSERT_NE(at, std::string::npos) << type;
+        EXPECT_GT(at, previous) << type << " in the order asked for";
+        EXPECT_EQ(svg.compare(svg.find('>', at) + 2, 7, "<path d"), 0) << type << " has paths";
+        previous = at;
+    }
+    const auto json = nlohmann::json::parse(slurp(dir.file("t.json")));
+    ASSERT_EQ(json["layers"].size(), types.size());
+    EXPECT_EQ(json["layers"][0]["params"]["levels"], 20);
+    EXPECT_EQ(json["layers"][1]["params"]["frame"], "camera");
+    EXPECT_EQ(json["layers"][3]["params"]["threshold"], 0.04);
+    for (size_t i = 0; i < types.size(); ++i) EXPECT_GT(json["layers"][i]["paths"].size(), 0u) << types[i];
+
+    for (const std::string& set :
+         std::vector<std::string>{"isophote.direction=0,0,0", "isophote.direction=1,2", "topo.spacing=0.000001",
+                                  "topo.frame=sideways", "principal-highlight.convex=maybe"}) {
+        r = run_cli("lines builtin:torus --lines isophote,topo,principal-highlight --set " + set + " -o " +
+                    dir.file("x.svg"));
+        EXPECT_EQ(r.status, 2) << set << ": " << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << set << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg"))) << set;
+    }
+}
+
 TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
     TempDir dir;
     const std::string out = dir.file("x.svg");
@@ -250,8 +287,9 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "border, contour, crease, intersection, ridge, suggestive, valley)\n");
-    // All seven object-space types at once: each has its layer, in the order given, and the
+              "border, contour, crease, intersection, isophote, principal-highlight, ridge, suggestive, "
+              "suggestive-highlight, topo, valley)\n");
+    // Seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has
     // contours, suggestive contours on its inner side and ridges, but no creases, no borders
     // and no intersections (its valleys stay under the threshold). The tube's curvature 1/r =

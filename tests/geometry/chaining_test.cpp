@@ -89,6 +89,30 @@ TEST(Chaining, NumbersManyKeysInOrderOfFirstInsertion) {
     EXPECT_EQ(numbers.insert(~uint64_t(0)), keys.size());  // any 64-bit value is a key
 }
 
+// Two isolines crossing the same edges (keys 1, 2, 3): each is its own chain, where one key
+// space would make nodes of degree four that end every chain.
+TEST(Chaining, IsolinesSharingEdgeKeysChainApart) {
+    std::vector<LineSegment> segs;
+    for (uint32_t isoline : {0u, 1u}) {
+        const float y = 0.1f * float(isoline);
+        for (uint64_t k = 1; k <= 2; ++k) {
+            segs.push_back(seg({float(k - 1), y, 0}, {float(k), y, 0}, k, k + 1));
+            segs.back().isoline = isoline;
+        }
+    }
+    std::swap(segs[1], segs[2]);  // interleaved
+    const auto lines = chain_segments(segs);
+    ASSERT_EQ(lines.size(), 2u);
+    for (const Polyline& line : lines) {
+        ASSERT_EQ(line.points.size(), 3u);
+        for (const glm::vec3& p : line.points) EXPECT_EQ(p.y, line.points[0].y) << "points of one isoline only";
+    }
+    KeyNumbering numbers(4);
+    EXPECT_EQ(numbers.insert(7, 0), 0u);
+    EXPECT_EQ(numbers.insert(7, 1), 1u);
+    EXPECT_EQ(numbers.insert(7), 0u);
+}
+
 TEST(Chaining, FaceInteriorKeysEndChains) {
     // Two segments meeting on edge key 5; the outer ends are cut inside faces 0 and 1.
     const std::vector<LineSegment> segs = {seg({0, 0, 0}, {1, 0, 0}, face_interior_key(0, 0), 5, 0.0f, 1.0f),

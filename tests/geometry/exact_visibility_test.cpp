@@ -610,5 +610,24 @@ Camera wave_camera() {
 TEST(VisibilityIsApplied, Ridge) { expect_visibility_applied(wave(), wave_camera(), 2.5f, "ridge"); }
 TEST(VisibilityIsApplied, Valley) { expect_visibility_applied(wave(), wave_camera(), 2.5f, "valley"); }
 
+// The plate faces the camera: n·l = 1 under the default headlight and one depth all over, so
+// neither isophotes nor topographic lines cross it.
+TEST(VisibilityIsApplied, Isophote) {
+    expect_visibility_applied(builtin::sphere(64, 128, 1.0f), orbit(20.0f, 10.0f, 5.0f), 2.5f, "isophote");
+}
+TEST(VisibilityIsApplied, Topo) {
+    expect_visibility_applied(builtin::sphere(64, 128, 1.0f), orbit(20.0f, 10.0f, 5.0f), 2.5f, "topo");
+}
+
+// The teapot from the default three-quarter view (the torus and the wave have too few).
+TEST(VisibilityIsApplied, SuggestiveHighlight) {
+    expect_visibility_applied(builtin::teapot(), orbit(35.0f, 20.0f, 20.0f, {0.2f, 1.5f, 0.0f}), 12.0f,
+                              "suggestive-highlight");
+}
+
+TEST(VisibilityIsApplied, PrincipalHighlight) {
+    expect_visibility_applied(wave(), wave_camera(), 2.5f, "principal-highlight");
+}
+
 }  // namespace
 }  // namespace inkshade::test

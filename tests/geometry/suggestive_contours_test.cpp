@@ -356,6 +356,80 @@ TEST(SuggestiveContours, DerivativeMatchesAnalyticTorusAtZeros) {
     EXPECT_GT(checked, 50);
 }
 
+// ---- suggestive highlights: the zeros of κr where D_w κr < 0 ---------------------------------
+
+// The wave of WaveLinesLieOnTheQualifyingInflectionsOnly at β = ±60°: sign(D_w κr) =
+// sign((−1)ⁿ sin β + A k cos β) = sign(±0.87 + 0.25), so suggestive highlights lie on the
+// inflections the suggestive contours skip — odd n for β > 0, even n for β < 0. There the
+// normal leans 33° from v and −D_w κr / (n·v) = tan 33° · A k³ / 1.25² = 8.3, above the
+// default trim 0.02 / 0.065² = 4.7 (at β = 45° it would be 4.2, trimmed).
+TEST(SuggestiveHighlights, WaveLinesLieOnTheInflectionsSuggestiveContoursSkip) {
+    const Wave wave;
+    const Mesh m = wave.mesh();
+    const Curvature curvature = compute_curvature(m, m.normals);
+    for (const float beta_deg : {60.0f, -60.0f}) {
+        const float beta = glm::radians(beta_deg);
+        const Camera camera = ortho_camera(5.0f * glm::vec3(std::sin(beta), 0.0f, std::cos(beta)));
+        const auto segs =
+            extract_suggestive_contours(m, m.normals, curvature, camera, {.threshold = 0.02f, .highlights = true});
+        ASSERT_FALSE(segs.empty()) << beta_deg;
+        const int parity = beta_deg > 0 ? 1 : 0;
+        std::map<int, double> length;
+        for (const LineSegment& s : segs) {
+            const glm::vec3 mid = 0.5f * (s.a + s.b);
+            if (std::abs(mid.x) > 1.1f || std::abs(mid.y) > 0.4f) continue;
+            const int n = int(std::lround(2.0f * mid.x));
+            EXPECT_EQ(((n % 2) + 2) % 2, parity) << "line near x = " << mid.x << ", beta " << beta_deg;
+            for (const glm::vec3& p : {s.a, s.b}) EXPECT_NEAR(p.x, 0.5f * float(n), 3e-3f);
+            length[n] += glm::distance(s.a, s.b);
+        }
+        const std::vector<int> expected = parity == 0 ? std::vector<int>{-2, 0, 2} : std::vector<int>{-1, 1};
+        EXPECT_EQ(length.size(), expected.size());
+        for (const int n : expected) EXPECT_GT(length[n], 0.75) << "inflection " << n << " beta " << beta_deg;
+    }
+}
+
+// At every point of the torus's suggestive highlights the analytic κr vanishes and falls along
+// w (its central difference along w on the analytic torus), where at the suggestive contours'
+// points it rises: the two are the halves of κr = 0 split by the sign of D_w κr.
+TEST(SuggestiveHighlights, TorusPointsHaveRadialCurvatureZeroAndFallingAlongW) {
+    const double R = 1.0, r = 0.4;
+    const Mesh m = builtin::torus(float(R), float(r), 256, 128);
+    const Camera camera = ortho_camera(kTorusEye);
+    const glm::dvec3 v = glm::normalize(glm::dvec3(camera.eye));
+    const auto frame = [](double t, double a) {
+        return std::pair{glm::dvec3(-std::sin(t), std::cos(t), 0.0),
+                         glm::dvec3(-std::sin(a) * std::cos(t), -std::sin(a) * std::sin(t), std::cos(a))};
+    };
+    const auto kr = [&](double t, double a) {
+        const auto [et, ea] = frame(t, a);
+        const double x = glm::dot(v, et), y = glm::dot(v, ea);
+        return (std::cos(a) / (R + r * std::cos(a)) * x * x + y * y / r) / (x * x + y * y);
+    };
+    // κr at p and its derivative along w (per unit length of the unit vector ŵ).
+    const auto analytic = [&](const glm::vec3& p) {
+        const double t = std::atan2(p.y, p.x), a = std::atan2(p.z, std::hypot(p.x, p.y) - R);
+        const auto [et, ea] = frame(t, a);
+        const double x = glm::dot(v, et), y = glm::dot(v, ea), w = std::hypot(x, y), h = 1e-5;
+        const double d_t = (kr(t + h, a) - kr(t - h, a)) / (2.0 * h) / (R + r * std::cos(a));
+        const double d_a = (kr(t, a + h) - kr(t, a - h)) / (2.0 * h) / r;
+        return std::pair{kr(t, a), (x / w) * d_t + (y / w) * d_a};
+    };
+    const Curvature c = compute_curvature(m, m.normals);
+    for (const bool highlights : {true, false}) {
+        const auto segs = extract_suggestive_contours(
+            m, m.normals, c, camera, {.threshold = highlights ? 0.02f : 0.01f, .highlights = highlights});
+        ASSERT_GT(segs.size(), 20u) << highlights;
+        for (const LineSegment& s : segs)
+            for (const glm::vec3& p : {s.a, s.b}) {
+                const auto [k, dk] = analytic(p);
+                EXPECT_NEAR(k, 0.0, 0.03) << "highlights " << highlights;
+                EXPECT_LT(highlights ? dk : -dk, 0.0)
+                    << "highlights " << highlights << " at " << p.x << "," << p.y << "," << p.z;
+            }
+    }
+}
+
 TEST(SuggestiveContours, BadMeshesGiveResultsWithoutCrashing) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0.3f}, {0.5f, -1, 0.2f}, {0.5f, 0, 1},

@@ -1,6 +1,9 @@
 #include "geometry/line_types/object_line_registry.hpp"
 
 #include <map>
+#include <string>
+
+#include "inkshade/error.hpp"
 
 namespace inkshade::geometry {
 
@@ -60,5 +63,14 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
 }
 
 float line_number(const LineSettings& settings, const std::string& name) { return line_param(settings, name).at(0); }
+
+glm::vec3 line_direction(const LineSettings& settings, const std::string& name) {
+    const ParamValue& v = line_param(settings, name);
+    const std::string what = settings.type + "." + name;
+    if (v.size() != 3) throw InputError(what + " needs 3 numbers (x,y,z), got " + std::to_string(v.size()));
+    const glm::vec3 d(v[0], v[1], v[2]);
+    if (d == glm::vec3(0.0f)) throw InputError(what + " must not be 0,0,0");
+    return d;
+}
 
 }  // namespace inkshade::geometry

@@ -37,4 +37,8 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
 // The value of a Float/Int/Bool parameter of `settings` as one number.
 float line_number(const LineSettings& settings, const std::string& name);
 
+// A FloatList parameter holding a direction, exactly three numbers not all zero (InputError
+// naming TYPE.NAME otherwise).
+glm::vec3 line_direction(const LineSettings& settings, const std::string& name);
+
 }  // namespace inkshade::geometry
