@@ -25,6 +25,9 @@ struct ShadingModel {
     // textures decoded from sRGB, output sRGB-encoded (the three.js models). A model with a
     // Choice parameter "convention" is in it when that is "threejs" (mtoon).
     bool linear_light = false;
+    // An object-space line type the model draws over its fill with the GPU strokes (hatching:
+    // `hatch`): its parameters are the model's of the same names, its light the render's.
+    std::string strokes;
     std::vector<ParamSpec> params;
 
     const ParamSpec* param(const std::string& name) const;

@@ -10,6 +10,7 @@
 #include "inkshade/line_drawing.hpp"
 #include "render/edge_length.hpp"
 #include "render/frame.hpp"
+#include "render/model_strokes.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/pass_plan.hpp"
 #include "render/pass_timer.hpp"
@@ -150,15 +151,20 @@ Image Renderer::Impl::render(const Camera& camera, const Light& light, const Sha
     Impl* const impl_ = this;  // the body reads as the public method's did
     if (!impl_->cpu_mesh) throw RuntimeError("no mesh to render (set_mesh first)");
     check_bit_depth(options);
-    std::vector<LineSettings> object_lines = render::object_lines_of(lines, !impl_->closed);  // checks every type
+    const ShadingModel& model = shading_model(shading.model);
+    // A model's own strokes (hatching) join the style's lines.
+    std::vector<LineSettings> all_lines = lines;
+    if (auto own = render::model_strokes(model, shading.params, light, camera, impl_->bounds))
+        all_lines.push_back(std::move(*own));
+    std::vector<LineSettings> object_lines = render::object_lines_of(all_lines, !impl_->closed);  // checks every type
     impl_->context->make_current();
     render::Frame frame{
         .camera = camera,
         .light = light,
         .shading = shading,
-        .model = shading_model(shading.model),
+        .model = model,
         .options = options,
-        .lines = lines,
+        .lines = all_lines,
         .bounds = impl_->bounds,
         .edge_length = impl_->edge_length,
         .closed = impl_->closed,

@@ -44,18 +44,11 @@ double fraction_near(const std::vector<uint8_t>& from, const std::vector<uint8_t
     return n ? double(near) / n : 0.0;
 }
 
-void expect_overlap(const std::string& model, const std::string& camera) {
-    TempDir dir;
-    const std::string style = dir.write("lines.toml",
-                                        "background = 'white'\nbase-color = '1,1,1'\n[light]\ncolor = '0,0,0'\n"
-                                        "ambient = '1,1,1'\n[shading]\nmodel = 'lambert'\n"
-                                        "[[lines]]\ntype = 'contour'\nwidth = 2.0\n"
-                                        "[[lines]]\ntype = 'suggestive'\nwidth = 1.5\n"
-                                        "[[lines]]\ntype = 'crease'\nwidth = 1.5\n");
-    const std::string args = model + " --style " + style + " --size 200x150 " + camera;
-    CliResult r = run_cli("lines " + args + " -o " + dir.file("l.svg"));
+// `lines_args` and `render_args` draw the same lines, one as SVG, one with the GPU strokes.
+void expect_same_pixels(TempDir& dir, const std::string& lines_args, const std::string& render_args) {
+    CliResult r = run_cli("lines " + lines_args + " -o " + dir.file("l.svg"));
     ASSERT_EQ(r.status, 0) << r.err;
-    r = run_cli("render " + args + " -o " + dir.file("r.png"));
+    r = run_cli("render " + render_args + " -o " + dir.file("r.png"));
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string png = dir.file("l.png");
     ASSERT_EQ(std::system(("rsvg-convert " + dir.file("l.svg") + " -o " + png).c_str()), 0);
@@ -72,12 +65,34 @@ void expect_overlap(const std::string& model, const std::string& camera) {
     EXPECT_GE(gpu_near_svg, 0.95) << n_gpu << " GPU line pixels";
 }
 
+void expect_overlap(const std::string& model, const std::string& camera) {
+    TempDir dir;
+    const std::string style = dir.write("lines.toml",
+                                        "background = 'white'\nbase-color = '1,1,1'\n[light]\ncolor = '0,0,0'\n"
+                                        "ambient = '1,1,1'\n[shading]\nmodel = 'lambert'\n"
+                                        "[[lines]]\ntype = 'contour'\nwidth = 2.0\n"
+                                        "[[lines]]\ntype = 'suggestive'\nwidth = 1.5\n"
+                                        "[[lines]]\ntype = 'crease'\nwidth = 1.5\n");
+    const std::string args = model + " --style " + style + " --size 200x150 " + camera;
+    expect_same_pixels(dir, args, args);
+}
+
 TEST(LinesOverlay, SvgAndGpuStrokesCoverTheSamePixelsOnTheTorus) {
     expect_overlap("builtin:torus", "--azimuth 20 --elevation 35");
 }
 
 TEST(LinesOverlay, SvgAndGpuStrokesCoverTheSamePixelsOnTheTeapotOrthographic) {
     expect_overlap("builtin:teapot", "--azimuth 40 --elevation 15 --ortho");
+}
+
+// The hatching model's strokes are the `hatch` lines lit by the render's light: with the
+// default light on both sides (the line type's default is the renderer's default key light,
+// in camera space), the model's GPU strokes and the SVG of `lines --lines hatch` coincide.
+TEST(LinesOverlay, HatchingModelDrawsTheHatchLines) {
+    TempDir dir;
+    const std::string common = "builtin:torus --size 200x150 --azimuth 20 --elevation 35 ";
+    expect_same_pixels(dir, common + "--lines hatch --set hatch.width=1.5 --background white",
+                       common + "--shading hatching --set hatching.width=1.5 --base-color 1,1,1 --background white");
 }
 
 }  // namespace

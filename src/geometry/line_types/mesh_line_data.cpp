@@ -74,6 +74,7 @@ void MeshLineData::release_derived() {
     creases_.reset();
     ridges_.reset();
     intersections_.reset();
+    hatching_.reset();
 }
 
 void MeshLineData::prepare(MeshLineNeeds needs, const std::function<void()>& then) {
@@ -145,6 +146,20 @@ const std::vector<LineSegment>& MeshLineData::intersections() {
     if (!intersections_)
         intersections_ = timed(setup_timings_, "intersections", [&] { return extract_intersections(*mesh_); });
     return *intersections_;
+}
+
+const Hatching& MeshLineData::hatching(const HatchOptions& o) {
+    const HatchOptions& k = hatch_options_;
+    if (!hatching_ || k.spacing != o.spacing || k.levels != o.levels || k.cross != o.cross ||
+        k.smoothing != o.smoothing || k.seed != o.seed) {
+        const Curvature& curv = curvature();
+        const EdgeAdjacency& adj = adjacency();
+        hatching_ =
+            timed(setup_timings_, "hatching", [&] { return trace_hatching(*mesh_, mesh_->normals, curv, adj, o); });
+        hatch_options_ = o;
+        if (adj.memory_bytes() > kKeepAdjacencyBytes) adjacency_.reset();
+    }
+    return *hatching_;
 }
 
 std::vector<std::pair<std::string, double>> MeshLineData::take_setup_timings() {

@@ -14,6 +14,7 @@
 #include "geometry/adjacency.hpp"
 #include "geometry/creases.hpp"
 #include "geometry/curvature.hpp"
+#include "geometry/hatching.hpp"
 #include "geometry/ridges.hpp"
 #include "inkshade/mesh.hpp"
 
@@ -69,6 +70,8 @@ public:
     const RidgeLines& ridges(const RidgeOptions& options);
     // Where two surfaces of the mesh cross (extract_intersections; view-independent).
     const std::vector<LineSegment>& intersections();
+    // Hatching strokes with these options (trace_hatching; the last options asked for are kept).
+    const Hatching& hatching(const HatchOptions& options);
 
     // Names and milliseconds of the lazy computations done since the last call (for
     // LineExtractor's timings), then cleared.
@@ -89,6 +92,8 @@ private:
     std::optional<RidgeLines> ridges_;
     RidgeOptions ridge_options_;
     std::optional<std::vector<LineSegment>> intersections_;
+    std::optional<Hatching> hatching_;
+    HatchOptions hatch_options_;
     TimingLog setup_timings_;
 };
 

@@ -1,0 +1,554 @@
+// Hatching strokes: a smoothed cross field, streamlines traced face to face, spacing kept with
+// a hash grid of the accepted strokes' points (one grid per family and level).
+#include "geometry/hatching.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace inkshade::geometry {
+namespace {
+
+constexpr uint32_t kNone = 0xffffffffu;
+
+// Faces across each of a face's three edges (edge k runs from corner k to corner k + 1);
+// kNone on borders, non-manifold edges and degenerate faces.
+std::vector<glm::uvec3> face_neighbours(const Mesh& mesh, const EdgeAdjacency& adj) {
+    const auto& tris = mesh.triangles;
+    std::vector<glm::uvec3> out(tris.size(), glm::uvec3(kNone));
+    auto slot = [&](uint32_t f, uint32_t a, uint32_t b) -> int {
+        const glm::uvec3 t = tris[f];
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t u = t[k], v = t[(k + 1) % 3];
+            if ((u == a && v == b) || (u == b && v == a)) return k;
+        }
+        return -1;
+    };
+    for (size_t e = 0; e < adj.edge_count(); ++e) {
+        if (adj.face_count(e) != 2) continue;
+        const uint32_t f = adj.face(e, 0), g = adj.face(e, 1);
+        if (f >= tris.size() || g >= tris.size()) continue;
+        const int kf = slot(f, adj.edges[e].x, adj.edges[e].y), kg = slot(g, adj.edges[e].x, adj.edges[e].y);
+        if (kf < 0 || kg < 0) continue;
+        out[f][kf] = g;
+        out[g][kg] = f;
+    }
+    return out;
+}
+
+// The member of the cross {±d, ±(n × d)} closest to `ref`.
+glm::dvec3 matched(const glm::dvec3& d, const glm::dvec3& n, const glm::dvec3& ref) {
+    const glm::dvec3 c = glm::cross(n, d);
+    const double a = glm::dot(d, ref), b = glm::dot(c, ref);
+    if (std::abs(a) >= std::abs(b)) return a >= 0.0 ? d : -d;
+    return b >= 0.0 ? c : -c;
+}
+
+glm::dvec3 unit_or_zero(const glm::dvec3& v) {
+    const double len = glm::length(v);
+    return len > 1e-300 && std::isfinite(len) ? v / len : glm::dvec3(0.0);
+}
+
+// Faces with three distinct in-range corners and a nonzero normal.
+struct FaceFrames {
+    std::vector<glm::dvec3> normal;  // zero for unusable faces
+    explicit FaceFrames(const Mesh& mesh) : normal(mesh.triangles.size(), glm::dvec3(0.0)) {
+        const size_t n = mesh.positions.size();
+        for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+            const glm::uvec3 t = mesh.triangles[f];
+            if (t.x >= n || t.y >= n || t.z >= n || t.x == t.y || t.y == t.z || t.z == t.x) continue;
+            const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
+            normal[f] = unit_or_zero(glm::cross(b - a, c - a));
+        }
+    }
+    bool usable(uint32_t f) const { return f < normal.size() && normal[f] != glm::dvec3(0.0); }
+};
+
+// 3-D spatial hash of points: an open-addressing table from a cell to the head of its list of
+// points (the lists threaded through one array), so adding a point allocates nothing but the
+// two arrays' growth.
+class PointGrid {
+public:
+    explicit PointGrid(double cell) : cell_(cell) { rehash(1024); }
+    void add(const glm::dvec3& p) {
+        if (2 * (used_ + 1) > slots_.size()) rehash(2 * slots_.size());
+        Slot& slot = find(key(cell_of(p)));
+        if (slot.head == kNone) ++used_;
+        points_.push_back(glm::vec3(p));
+        next_.push_back(slot.head);
+        slot.head = uint32_t(points_.size() - 1);
+    }
+    // Whether some point lies within r (≤ the cell size) of p: the cells that the box of
+    // radius r around p touches (two or three a side).
+    bool any_within(const glm::dvec3& p, double r) const {
+        const glm::i64vec3 lo = cell_of(p - glm::dvec3(r)), hi = cell_of(p + glm::dvec3(r));
+        const float r2 = float(r * r);
+        const glm::vec3 pf(p);
+        for (int64_t z = lo.z; z <= hi.z; ++z)
+            for (int64_t y = lo.y; y <= hi.y; ++y)
+                for (int64_t x = lo.x; x <= hi.x; ++x)
+                    for (uint32_t i = lookup(key({x, y, z})); i != kNone; i = next_[i]) {
+                        const glm::vec3 d = points_[i] - pf;
+                        if (glm::dot(d, d) < r2) return true;
+                    }
+        return false;
+    }
+    // Adds the points along a segment, at most spacing apart.
+    void add_segment(const glm::dvec3& a, const glm::dvec3& b, double spacing) {
+        const int n = std::max(1, int(std::ceil(glm::length(b - a) / spacing)));
+        for (int i = 0; i <= n; ++i) add(a + (b - a) * (double(i) / n));
+    }
+
+private:
+    struct Slot {
+        uint64_t key = kEmpty;
+        uint32_t head = kNone;
+    };
+    static constexpr uint64_t kEmpty = ~uint64_t(0);
+
+    glm::i64vec3 cell_of(const glm::dvec3& p) const { return glm::i64vec3(glm::floor(p / cell_)); }
+    // 21 bits a coordinate (cells wrap beyond ±2^20: only more points per list, never a miss).
+    static uint64_t key(const glm::i64vec3& c) {
+        return (uint64_t(c.x & 0x1fffff) << 42) | (uint64_t(c.y & 0x1fffff) << 21) | uint64_t(c.z & 0x1fffff);
+    }
+    size_t slot_of(uint64_t k) const { return size_t((k * 0x9e3779b97f4a7c15ull) >> 20) & (slots_.size() - 1); }
+    Slot& find(uint64_t k) {
+        for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1))
+            if (slots_[h].key == k || slots_[h].key == kEmpty) {
+                slots_[h].key = k;
+                return slots_[h];
+            }
+    }
+    uint32_t lookup(uint64_t k) const {
+        for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1)) {
+            if (slots_[h].key == k) return slots_[h].head;
+            if (slots_[h].key == kEmpty) return kNone;
+        }
+    }
+    void rehash(size_t capacity) {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(capacity, Slot{});
+        for (const Slot& s : old)
+            if (s.key != kEmpty) find(s.key).head = s.head;
+    }
+
+    double cell_;
+    std::vector<Slot> slots_;
+    size_t used_ = 0;
+    std::vector<glm::vec3> points_;
+    std::vector<uint32_t> next_;
+};
+
+// A point on the surface: inside or on the boundary of `face`.
+struct SurfacePoint {
+    uint32_t face = kNone;
+    glm::dvec3 p{0.0};
+};
+
+class Tracer {
+public:
+    Tracer(const Mesh& mesh, const std::vector<glm::vec3>& field, const EdgeAdjacency& adj)
+        : mesh_(mesh),
+          field_(field),
+          frames_(mesh),
+          nbr_(face_neighbours(mesh, adj)),
+          visit_(mesh.triangles.size(), kNone) {}
+
+    const FaceFrames& frames() const { return frames_; }
+
+    // The field's direction in face f closest to `ref` (in the face's plane), or zero.
+    glm::dvec3 field_in(uint32_t f, const glm::dvec3& ref) const {
+        const glm::uvec3 t = mesh_.triangles[f];
+        const glm::dvec3 n = frames_.normal[f];
+        glm::dvec3 sum(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 d(field_[t[k]]);
+            if (d == glm::dvec3(0.0)) continue;
+            // Each corner's cross, brought into the face's plane, then matched.
+            const glm::dvec3 dp = unit_or_zero(d - glm::dot(d, n) * n);
+            if (dp == glm::dvec3(0.0)) continue;
+            sum += matched(dp, n, ref);
+        }
+        return unit_or_zero(sum - glm::dot(sum, n) * n);
+    }
+
+    // Where the ray p + s·d (in f's plane) leaves face f, not through edge `skip`: the edge's
+    // index k and the parameter along it (from corner k to k + 1), and s. False if it does not.
+    bool exit_of(uint32_t f, const glm::dvec3& p, const glm::dvec3& d, int skip, int& edge, double& along,
+                 double& s) const {
+        const glm::uvec3 t = mesh_.triangles[f];
+        const glm::dvec3 n = frames_.normal[f];
+        double best = HUGE_VAL;
+        edge = -1;
+        for (int k = 0; k < 3; ++k) {
+            if (k == skip) continue;
+            const glm::dvec3 a(mesh_.positions[t[k]]), b(mesh_.positions[t[(k + 1) % 3]]);
+            // Solve p + s d = a + u (b − a) in the plane: 2×2 system via the normal.
+            const glm::dvec3 e = b - a;
+            const double den = glm::dot(glm::cross(d, e), n);
+            if (!(std::abs(den) > 1e-300)) continue;
+            const glm::dvec3 ap = a - p;
+            const double si = glm::dot(glm::cross(ap, e), n) / den;
+            const double ui = glm::dot(glm::cross(ap, d), n) / den;
+            if (!(si > -1e-12) || ui < -1e-9 || ui > 1.0 + 1e-9) continue;
+            if (si < best) best = si, edge = k, along = std::clamp(ui, 0.0, 1.0);
+        }
+        if (edge < 0) return false;
+        s = std::max(best, 0.0);
+        return true;
+    }
+
+    // Carries direction d from face f across its edge k into the neighbour g, unfolding the
+    // two faces about the edge; the result points into g.
+    glm::dvec3 unfold(uint32_t f, int k, uint32_t g, const glm::dvec3& d) const {
+        const glm::uvec3 t = mesh_.triangles[f];
+        const glm::dvec3 a(mesh_.positions[t[k]]), b(mesh_.positions[t[(k + 1) % 3]]);
+        const glm::dvec3 e = unit_or_zero(b - a);
+        const glm::dvec3 mf = glm::cross(frames_.normal[f], e), mg0 = glm::cross(frames_.normal[g], e);
+        // mg must point into g: away from the edge towards g's far corner.
+        const glm::uvec3 tg = mesh_.triangles[g];
+        glm::dvec3 far(0.0);
+        for (int j = 0; j < 3; ++j)
+            if (tg[j] != t[k] && tg[j] != t[(k + 1) % 3]) far = glm::dvec3(mesh_.positions[tg[j]]);
+        const glm::dvec3 mg = glm::dot(far - a, mg0) >= 0.0 ? mg0 : -mg0;
+        // d leaves f, so its part across the edge goes into g.
+        return unit_or_zero(glm::dot(d, e) * e + std::abs(glm::dot(d, mf)) * mg);
+    }
+
+    // Walks `distance` along the surface from `from` in direction d (straight across each
+    // face, unfolded over edges). Nothing when a border or an unusable face comes first.
+    bool walk(SurfacePoint from, glm::dvec3 d, double distance, SurfacePoint& to) const {
+        int skip = -1;
+        for (int steps = 0; steps < 4096; ++steps) {
+            int k;
+            double along = 0.0, s = 0.0;
+            if (!exit_of(from.face, from.p, d, skip, k, along, s)) return false;
+            if (s >= distance) {
+                to = {from.face, from.p + d * distance};
+                return true;
+            }
+            distance -= s;
+            const uint32_t g = nbr_[from.face][k];
+            if (g == kNone || !frames_.usable(g)) return false;
+            const glm::uvec3 t = mesh_.triangles[from.face];
+            const glm::dvec3 a(mesh_.positions[t[k]]), b(mesh_.positions[t[(k + 1) % 3]]);
+            d = unfold(from.face, k, g, d);
+            if (d == glm::dvec3(0.0)) return false;
+            skip = edge_index(g, t[k], t[(k + 1) % 3]);
+            from = {g, a + along * (b - a)};
+        }
+        return false;
+    }
+
+    int edge_index(uint32_t f, uint32_t u, uint32_t v) const {
+        const glm::uvec3 t = mesh_.triangles[f];
+        for (int k = 0; k < 3; ++k)
+            if ((t[k] == u && t[(k + 1) % 3] == v) || (t[k] == v && t[(k + 1) % 3] == u)) return k;
+        return -1;
+    }
+
+    struct Node {
+        glm::dvec3 p;
+        uint32_t u, v;  // the edge's corners, as in the face
+        double along;   // from u to v
+        uint32_t face;  // the face the piece ending here crossed
+    };
+
+    // Traces from `seed` (direction `d`, in the field) until a border, an unusable face, a
+    // sharp turn of the field, a face this stroke crossed already, or a point nearer than
+    // `stop` to `grid`'s points. Returns the nodes (edge points) in order; `looped` when the
+    // trace came back into the seed's face.
+    std::vector<Node> trace(const SurfacePoint& seed, glm::dvec3 d, const PointGrid& grid, double stop, uint32_t stamp,
+                            uint32_t seed_stamp, bool& looped) {
+        std::vector<Node> nodes;
+        looped = false;
+        SurfacePoint at = seed;
+        int skip = -1;
+        for (int steps = 0; steps < 1 << 20; ++steps) {
+            int k;
+            double along = 0.0, s = 0.0;
+            if (!exit_of(at.face, at.p, d, skip, k, along, s)) break;
+            const glm::uvec3 t = mesh_.triangles[at.face];
+            const glm::dvec3 a(mesh_.positions[t[k]]), b(mesh_.positions[t[(k + 1) % 3]]);
+            const glm::dvec3 q = a + along * (b - a);
+            if (grid.any_within(q, stop)) break;
+            nodes.push_back({q, t[k], t[(k + 1) % 3], along, at.face});
+            const uint32_t g = nbr_[at.face][k];
+            if (g == kNone || !frames_.usable(g)) break;
+            if (visit_[g] == seed_stamp) {
+                looped = true;
+                break;
+            }
+            if (visit_[g] == stamp) break;
+            visit_[g] = stamp;
+            const glm::dvec3 carried = unfold(at.face, k, g, d);
+            const glm::dvec3 next = field_in(g, carried);
+            // A turn sharper than 45° is a singularity of the field: the stroke ends there.
+            if (next == glm::dvec3(0.0) || glm::dot(next, carried) < 0.7071) break;
+            d = next;
+            skip = edge_index(g, t[k], t[(k + 1) % 3]);
+            at = {g, q};
+        }
+        return nodes;
+    }
+
+    std::vector<uint32_t>& visits() { return visit_; }
+
+private:
+    const Mesh& mesh_;
+    const std::vector<glm::vec3>& field_;
+    FaceFrames frames_;
+    std::vector<glm::uvec3> nbr_;
+    std::vector<uint32_t> visit_;  // per face: the stamp of the last trace that crossed it
+};
+
+double bounding_diagonal(const Mesh& mesh) {
+    if (mesh.positions.empty()) return 0.0;
+    glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
+    for (const glm::vec3& p : mesh.positions)
+        if (is_finite(p)) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+    return hi.x >= lo.x ? glm::length(hi - lo) : 0.0;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                             const Curvature& c, int iterations) {
+    const size_t n = mesh.positions.size();
+    if (normals.size() != n || c.pdir1.size() != n || c.pdir2.size() != n || c.k1.size() != n || c.k2.size() != n)
+        throw std::invalid_argument("hatch_direction_field: need normals and curvature per vertex");
+    std::vector<glm::dvec3> dir(n, glm::dvec3(0.0)), nrm(n, glm::dvec3(0.0));
+    std::vector<double> weight(n, 0.0);
+    for (size_t v = 0; v < n; ++v) {
+        const glm::dvec3 nv = unit_or_zero(glm::dvec3(normals[v]));
+        nrm[v] = nv;
+        const double k1 = c.k1[v], k2 = c.k2[v];
+        const glm::dvec3 d = std::abs(k1) >= std::abs(k2) ? glm::dvec3(c.pdir1[v]) : glm::dvec3(c.pdir2[v]);
+        dir[v] = unit_or_zero(d - glm::dot(d, nv) * nv);
+        const double sum = std::abs(k1) + std::abs(k2);
+        weight[v] = std::isfinite(sum) && sum > 0.0 ? std::abs(k1 - k2) / sum : 0.0;
+    }
+    // Vertex neighbours through the faces (each undirected edge once per face side is fine:
+    // a neighbour counted twice on a manifold weighs the same for every vertex).
+    const auto& tris = mesh.triangles;
+    std::vector<glm::dvec3> next(n);
+    for (int it = 0; it < iterations; ++it) {
+        for (size_t v = 0; v < n; ++v) next[v] = dir[v] * (weight[v] + 1e-3);
+        for (const glm::uvec3& t : tris) {
+            if (t.x >= n || t.y >= n || t.z >= n) continue;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = t[k];
+                if (dir[v] == glm::dvec3(0.0)) continue;
+                for (int j = 1; j < 3; ++j) {
+                    const uint32_t u = t[(k + j) % 3];
+                    if (dir[u] == glm::dvec3(0.0)) continue;
+                    // u's cross brought into v's tangent plane, its member nearest v's direction.
+                    glm::dvec3 du = dir[u] - glm::dot(dir[u], nrm[v]) * nrm[v];
+                    du = unit_or_zero(du);
+                    if (du == glm::dvec3(0.0)) continue;
+                    next[v] += matched(du, nrm[v], dir[v]) * (weight[u] + 1e-3);
+                }
+            }
+        }
+        for (size_t v = 0; v < n; ++v) {
+            if (dir[v] == glm::dvec3(0.0)) continue;
+            const glm::dvec3 d = unit_or_zero(next[v] - glm::dot(next[v], nrm[v]) * nrm[v]);
+            if (d != glm::dvec3(0.0)) dir[v] = d;
+        }
+    }
+    std::vector<glm::vec3> out(n);
+    for (size_t v = 0; v < n; ++v) out[v] = glm::vec3(dir[v]);
+    return out;
+}
+
+Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Curvature& curvature,
+                        const EdgeAdjacency& adjacency, const HatchOptions& options) {
+    Hatching out;
+    const double diagonal = bounding_diagonal(mesh);
+    const double spacing =
+        options.spacing > 0.0f && std::isfinite(options.spacing) ? double(options.spacing) : 0.015 * diagonal;
+    out.spacing = float(spacing);
+    if (!(spacing > 0.0) || mesh.triangles.empty()) return out;
+    const int levels = std::clamp(options.levels, 1, 4);
+    const std::vector<glm::vec3> field = hatch_direction_field(mesh, normals, curvature, options.smoothing);
+    Tracer tracer(mesh, field, adjacency);
+    const FaceFrames& frames = tracer.frames();
+    const auto& tris = mesh.triangles;
+
+    // Free seeds: random points of the faces, about one per (finest spacing)² of area, in an
+    // order fixed by the seed.
+    std::mt19937_64 rng(options.seed);
+    std::vector<SurfacePoint> free_seeds;
+    {
+        const double finest = spacing / double(1 << (levels - 1));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (uint32_t f = 0; f < tris.size(); ++f) {
+            if (!frames.usable(f)) continue;
+            const glm::dvec3 a(mesh.positions[tris[f].x]), b(mesh.positions[tris[f].y]), c(mesh.positions[tris[f].z]);
+            const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+            const double expected = area / (finest * finest);
+            int count = int(expected);
+            if (unit(rng) < expected - count) ++count;
+            for (int i = 0; i < count; ++i) {
+                double r1 = unit(rng), r2 = unit(rng);
+                if (r1 + r2 > 1.0) r1 = 1.0 - r1, r2 = 1.0 - r2;
+                free_seeds.push_back({f, a + r1 * (b - a) + r2 * (c - a)});
+            }
+        }
+        std::shuffle(free_seeds.begin(), free_seeds.end(), rng);
+    }
+
+    uint32_t stamp = 0;
+    const int families = options.cross ? 2 : 1;
+    for (int family = 0; family < families; ++family) {
+        const size_t family_begin = out.strokes.size();
+        for (int level = 0; level < levels; ++level) {
+            const double d_sep = spacing / double(1 << level);
+            const double d_test = 0.5 * d_sep;
+            // The obstacles: this family's strokes so far (every coarser level).
+            PointGrid grid(d_sep);
+            auto add_stroke = [&](const HatchStroke& s) {
+                const size_t m = s.points.size();
+                for (size_t i = 0; i + 1 < m + (s.closed ? 1 : 0); ++i)
+                    grid.add_segment(glm::dvec3(s.points[i]), glm::dvec3(s.points[(i + 1) % m]), d_test * 0.5);
+            };
+            for (size_t i = family_begin; i < out.strokes.size(); ++i) add_stroke(out.strokes[i]);
+
+            auto try_seed = [&](const SurfacePoint& seed) -> bool {
+                if (!frames.usable(seed.face) || grid.any_within(seed.p, d_sep * 0.9)) return false;
+                // The family's direction at the seed: the field (larger |k|) or across it.
+                const glm::uvec3 t = tris[seed.face];
+                glm::dvec3 ref(field[t.x]);
+                const glm::dvec3 n = frames.normal[seed.face];
+                ref = unit_or_zero(ref - glm::dot(ref, n) * n);
+                if (ref == glm::dvec3(0.0)) return false;
+                if (family == 1) ref = glm::cross(n, ref);
+                const glm::dvec3 d = tracer.field_in(seed.face, ref);
+                if (d == glm::dvec3(0.0)) return false;
+                const uint32_t seed_stamp = ++stamp;
+                tracer.visits()[seed.face] = seed_stamp;
+                bool looped = false, back_looped = false;
+                const uint32_t trace_stamp = ++stamp;  // both halves: neither re-enters a face of the other
+                const std::vector<Tracer::Node> fwd =
+                    tracer.trace(seed, d, grid, d_test, trace_stamp, seed_stamp, looped);
+                const std::vector<Tracer::Node> back =
+                    looped ? std::vector<Tracer::Node>{}
+                           : tracer.trace(seed, -d, grid, d_test, trace_stamp, seed_stamp, back_looped);
+                HatchStroke s;
+                s.family = uint8_t(family);
+                s.level = uint8_t(level);
+                auto push = [&](const Tracer::Node& node) {
+                    s.points.push_back(glm::vec3(node.p));
+                    s.edges.push_back(edge_key(node.u, node.v));
+                    s.t.push_back(float(node.u < node.v ? node.along : 1.0 - node.along));
+                };
+                for (size_t i = back.size(); i-- > 0;) push(back[i]);
+                for (const auto& node : fwd) push(node);
+                // A node's face is the one its trace crossed to reach it: the piece before it
+                // on the forward half, after it on the (reversed) backward half.
+                for (size_t i = back.size(); i-- > 1;) s.faces.push_back(back[i].face);
+                if (!back.empty() && !fwd.empty()) s.faces.push_back(seed.face);
+                for (size_t i = 1; i < fwd.size(); ++i) s.faces.push_back(fwd[i].face);
+                if (looped && fwd.size() >= 3) {
+                    s.closed = true;
+                    s.faces.push_back(seed.face);  // the last node back to the first, across the seed's face
+                }
+                if (s.points.size() < 2) return false;
+                double length = 0.0;
+                for (size_t i = 0; i + 1 < s.points.size(); ++i)
+                    length += glm::length(glm::dvec3(s.points[i + 1]) - glm::dvec3(s.points[i]));
+                if (length < d_sep) return false;  // a stub between two strokes
+                add_stroke(s);
+                out.strokes.push_back(std::move(s));
+                return true;
+            };
+
+            // Seeds beside every stroke of the family, d_sep to either side (Jobard & Lefer),
+            // the new ones included as they come; free seeds where none reached.
+            size_t next_stroke = family_begin;
+            size_t next_free = 0;
+            for (;;) {
+                if (next_stroke < out.strokes.size()) {
+                    const HatchStroke s = out.strokes[next_stroke++];  // a copy: try_seed appends
+                    const size_t pieces = s.faces.size();
+                    double start = 0.0, next_at = 0.5 * d_sep;
+                    for (size_t i = 0; i < pieces; ++i) {
+                        const glm::dvec3 a(s.points[i]), b(s.points[(i + 1) % s.points.size()]);
+                        const double len = glm::length(b - a);
+                        if (len > 0.0 && frames.usable(s.faces[i])) {
+                            const glm::dvec3 t = (b - a) / len, n = frames.normal[s.faces[i]];
+                            for (; next_at < start + len; next_at += d_sep) {
+                                const SurfacePoint from{s.faces[i], a + t * (next_at - start)};
+                                for (const double side : {1.0, -1.0}) {
+                                    SurfacePoint seed;
+                                    if (tracer.walk(from, glm::cross(n, t) * side, d_sep, seed)) try_seed(seed);
+                                }
+                            }
+                        }
+                        start += len;
+                    }
+                    continue;
+                }
+                bool found = false;
+                while (next_free < free_seeds.size() && !found) found = try_seed(free_seeds[next_free++]);
+                if (!found) break;
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<LineSegment> hatch_segments(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                        const Hatching& hatching, const Camera& camera, const HatchView& view) {
+    std::vector<LineSegment> out;
+    const ViewVector to_eye(camera);
+    const size_t nv = mesh.positions.size();
+    const glm::dvec3 light = unit_or_zero(glm::dvec3(view.light));
+    const int levels = hatching.strokes.empty() ? 1
+                                                : 1 + std::max_element(hatching.strokes.begin(), hatching.strokes.end(),
+                                                                       [](const HatchStroke& a, const HatchStroke& b) {
+        return a.level < b.level;
+                                                      })->level;
+    const double fade = std::max(double(view.fade), 1e-6);
+    uint32_t node_id = 0;
+    for (const HatchStroke& s : hatching.strokes) {
+        const size_t m = s.points.size();
+        const size_t index = size_t(s.family) * size_t(levels) + s.level;
+        if (uint64_t(node_id) + m > kMaxHatchNodes) break;  // keys run out (never at real sizes)
+        const uint32_t first_id = node_id;
+        node_id += uint32_t(m);
+        if (index >= view.thresholds.size() || m < 2) continue;
+        const double threshold = view.thresholds[index];
+        // Tone and facing at each node, from the interpolated vertex normal.
+        std::vector<double> strength(m, 0.0);
+        std::vector<bool> front(m, false);
+        for (size_t i = 0; i < m; ++i) {
+            const uint32_t lo = uint32_t(s.edges[i] >> 32), hi = uint32_t(s.edges[i]);
+            if (lo >= nv || hi >= nv || lo >= normals.size() || hi >= normals.size()) continue;
+            const glm::dvec3 n =
+                unit_or_zero(glm::dvec3(normals[lo]) * (1.0 - s.t[i]) + glm::dvec3(normals[hi]) * double(s.t[i]));
+            const double tone = std::clamp(glm::dot(n, light), 0.0, 1.0);
+            strength[i] = std::clamp((threshold - tone) / fade, 0.0, 1.0);
+            front[i] = glm::dot(n, to_eye.at(s.points[i])) > 0.0;
+        }
+        const size_t pieces = s.closed ? m : m - 1;
+        for (size_t i = 0; i < pieces; ++i) {
+            const size_t j = (i + 1) % m;
+            if (strength[i] <= 0.0 && strength[j] <= 0.0) continue;
+            if (!front[i] && !front[j]) continue;
+            LineSegment seg;
+            seg.a = s.points[i];
+            seg.b = s.points[j];
+            seg.edge_a = hatch_node_key(first_id + uint32_t(i));
+            seg.edge_b = hatch_node_key(first_id + uint32_t(j));
+            seg.face = s.faces[i];
+            seg.strength_a = float(strength[i]);
+            seg.strength_b = float(strength[j]);
+            out.push_back(seg);
+        }
+    }
+    return out;
+}
+
+}  // namespace inkshade::geometry

@@ -1,0 +1,62 @@
+// `hatch` (optional line type): hatching strokes along the principal directions, drawn where
+// the surface is dark (Hertzmann & Zorin 2000; trace_hatching, hatch_segments).
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/line_types/object_line_registry.hpp"
+
+namespace inkshade::geometry {
+
+namespace {
+
+std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+    const HatchOptions options{.spacing = line_number(settings, "spacing"),
+                               .levels = int(line_number(settings, "levels")),
+                               .cross = line_number(settings, "cross") != 0.0f,
+                               .smoothing = int(line_number(settings, "smoothing")),
+                               .seed = uint32_t(line_number(settings, "seed"))};
+    const Hatching& hatching = data.hatching(options);
+    // The light is given in camera space (x right, y up, z towards the viewer), as rtsc's
+    // light follows the camera; the renderer's default key light comes from the same side.
+    const ParamValue& l = line_param(settings, "light");
+    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    const auto part = [&](size_t i) { return i < l.size() ? l[i] : 0.0f; };
+    glm::vec3 light = part(0) * right + part(1) * up - part(2) * forward;
+    const float len = glm::length(light);
+    light = len > 0.0f && std::isfinite(len) ? light / len : -forward;
+    HatchView view;
+    view.light = light;
+    for (size_t i = 0; i < line_param(settings, "tones").size(); ++i)
+        view.thresholds.push_back(line_param(settings, "tones").at(i));
+    view.fade = line_number(settings, "fade");
+    return hatch_segments(data.mesh(), data.normals(), hatching, camera, view);
+}
+
+const ObjectLineRegistration registration{
+    {.name = "hatch",
+     .summary = "hatching along principal curvature directions, denser where darker (Hertzmann & Zorin 2000)",
+     .params = object_line_params(
+         glm::vec3(0.0f), 0.75f,
+         {float_param("spacing", 0.0f, 0.0f, 1e9f,
+                      "world distance between neighbouring strokes of the lightest level; 0 = 1.5% of the "
+                      "bounding-box diagonal"),
+          int_param("levels", 2, 1, 4, "density levels per direction, each adding strokes halfway between"),
+          bool_param("cross", true, "also strokes across the first direction (cross-hatching)"),
+          list_param("tones", {0.8f, 0.6f, 0.4f, 0.2f}, 8, 0.0f, 1.0f,
+                     "a level's strokes are drawn where the Lambertian tone n·l is below its value: first "
+                     "direction's levels, then the cross direction's; levels without a value are not drawn"),
+          list_param("light", {-0.6f, 0.8f, 1.0f}, 3, -1e6f, 1e6f,
+                     "direction towards the light in camera space (x right, y up, z towards the viewer); "
+                     "the default is the renderer's default key light"),
+          float_param("fade", 0.05f, 0.0f, 1.0f, "strokes fade in over this much tone below their threshold"),
+          int_param("smoothing", 8, 0, 100, "smoothing iterations of the principal-direction field"),
+          int_param("seed", 1, 0, 1000000, "order in which free seeds are tried (a different seed, other strokes)")},
+         0.0f)},
+    extract,
+    {.adjacency = true, .curvature = true}};
+
+}  // namespace
+
+}  // namespace inkshade::geometry
