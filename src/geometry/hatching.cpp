@@ -530,7 +530,15 @@ std::vector<LineSegment> hatch_segments(const Mesh& mesh, const std::vector<glm:
                 unit_or_zero(glm::dvec3(normals[lo]) * (1.0 - s.t[i]) + glm::dvec3(normals[hi]) * double(s.t[i]));
             const double tone = std::clamp(glm::dot(n, light), 0.0, 1.0);
             strength[i] = std::clamp((threshold - tone) / fade, 0.0, 1.0);
-            front[i] = glm::dot(n, to_eye.at(s.points[i])) > 0.0;
+            const double facing = glm::dot(n, to_eye.at(s.points[i]));
+            front[i] = facing > 0.0;
+            // Where the surface turns away, its strokes crowd in the image (their spacing on
+            // screen shrinks by about n·v): a finer level fades out below n·v = thin·2^(k−1),
+            // so towards the outline only the coarsest strokes are left.
+            if (s.level > 0 && view.thin > 0.0) {
+                const double at = view.thin * double(1 << (s.level - 1));
+                strength[i] *= std::clamp((facing - at) / (0.5 * at), 0.0, 1.0);
+            }
         }
         const size_t pieces = s.closed ? m : m - 1;
         for (size_t i = 0; i < pieces; ++i) {

@@ -73,11 +73,14 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
 // What one view draws of a hatching: a stroke piece of family f and level k is drawn where the
 // tone (the Lambertian n·l of the interpolated vertex normal, clamped to [0, 1]) is below
 // threshold[f * levels + k] and the surface faces the viewer; its strength fades from 1 to 0
-// over `fade` below the threshold.
+// over `fade` below the threshold, and finer levels fade out where the surface turns away
+// from the viewer (`thin`).
 struct HatchView {
     glm::vec3 light{0.0f, 0.0f, 1.0f};  // world direction towards the light (unit)
     std::vector<float> thresholds;      // family-major, level-minor
     float fade = 0.05f;
+    // Level k > 0 fades out where n·v falls below thin · 2^(k − 1) (0: never).
+    float thin = 0.25f;
 };
 
 // The pieces drawn in `view`, as line segments whose ends carry the keys of hatch_node_key

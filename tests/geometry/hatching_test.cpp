@@ -243,6 +243,34 @@ TEST(Hatching, ViewDrawsByToneOnFrontFaces) {
     EXPECT_EQ(pieces, segs.size());
 }
 
+// Finer levels thin out towards the outline: with only level 1 drawn (tone threshold above
+// every tone), no piece remains where n·v < thin at both ends; with thin = 0 some do.
+TEST(Hatching, FinerLevelsFadeOutWhereTheSurfaceTurnsAway) {
+    const Prepared p = prepare(builtin::sphere(48, 96, 1.0f));
+    HatchOptions o;
+    o.spacing = 0.3f;
+    o.levels = 2;
+    o.cross = false;
+    const Hatching h = hatch(p, o);
+    Camera cam;
+    cam.eye = {0.0f, 0.0f, 5.0f};
+    cam.target = {0.0f, 0.0f, 0.0f};
+    cam.up = {0.0f, 1.0f, 0.0f};
+    const ViewVector v(cam);
+    auto grazing = [&](const glm::vec3& q) { return glm::dot(glm::dvec3(glm::normalize(q)), v.at(q)) < 0.25; };
+    HatchView view;
+    view.thresholds = {0.0f, 1.1f};
+    view.thin = 0.0f;
+    size_t near_outline = 0;
+    for (const LineSegment& s : hatch_segments(p.mesh, p.mesh.normals, h, cam, view))
+        near_outline += grazing(s.a) && grazing(s.b);
+    EXPECT_GT(near_outline, 10u);
+    view.thin = 0.25f;
+    const std::vector<LineSegment> thinned = hatch_segments(p.mesh, p.mesh.normals, h, cam, view);
+    ASSERT_FALSE(thinned.empty());
+    for (const LineSegment& s : thinned) EXPECT_FALSE(grazing(s.a) && grazing(s.b));
+}
+
 TEST(Hatching, DegenerateInputDoesNotCrash) {
     Mesh empty;
     const Hatching h0 = trace_hatching(empty, {}, Curvature{}, EdgeAdjacency{});

@@ -31,6 +31,7 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     for (size_t i = 0; i < line_param(settings, "tones").size(); ++i)
         view.thresholds.push_back(line_param(settings, "tones").at(i));
     view.fade = line_number(settings, "fade");
+    view.thin = line_number(settings, "thin");
     return hatch_segments(data.mesh(), data.normals(), hatching, camera, view);
 }
 
@@ -51,6 +52,9 @@ const ObjectLineRegistration registration{
                      "direction towards the light in camera space (x right, y up, z towards the viewer); "
                      "the default is the renderer's default key light"),
           float_param("fade", 0.05f, 0.0f, 1.0f, "strokes fade in over this much tone below their threshold"),
+          float_param("thin", 0.25f, 0.0f, 1.0f,
+                      "level k > 0 fades out where n·v < thin·2^(k−1), so strokes do not crowd towards the "
+                      "outline; 0 = never"),
           int_param("smoothing", 8, 0, 100, "smoothing iterations of the principal-direction field"),
           int_param("seed", 1, 0, 1000000, "order in which free seeds are tried (a different seed, other strokes)")},
          0.0f)},
