@@ -250,7 +250,7 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "border, contour, crease, intersection, ridge, suggestive, valley)\n");
+              "apparent-ridge, border, contour, crease, intersection, ridge, suggestive, valley)\n");
     // All seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has
     // contours, suggestive contours on its inner side and ridges, but no creases, no borders
