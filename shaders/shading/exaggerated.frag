@@ -11,6 +11,10 @@
 // Where the light is along n_{i+1} there is no grazing direction and c_i = 0.
 #include "common/surface.glsl"
 
+#ifndef INKSHADE_SCALES
+#define INKSHADE_SCALES 6  // the `scales` parameter, defined by the program variant
+#endif
+
 in vec3 v_scale_normal[INKSHADE_SCALES + 1];
 
 uniform float u_contrast;  // a
