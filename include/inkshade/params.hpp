@@ -32,7 +32,7 @@ struct ParamSpec {
     std::string doc;                   // one line: meaning and source of the default
     std::vector<std::string> choices;  // Choice: the names (value = index)
     int max_count = 1;                 // FloatList: uniform array size
-    // Bool/Choice that switches a code path: compiled into the shader as
+    // Bool/Choice that switches a code path (or Int, a loop count): compiled into the shader as
     // `#define INKSHADE_NAME value` (NAME upper-case, '-' -> '_') instead of a uniform, since
     // llvmpipe runs a switched-off branch anyway. Each value used gets its own program.
     bool compile_time = false;
@@ -41,7 +41,7 @@ struct ParamSpec {
     bool srgb = false;
 };
 
-// Marks a Bool or Choice parameter as compile-time (see ParamSpec::compile_time).
+// Marks a Bool, Choice or Int parameter as compile-time (see ParamSpec::compile_time).
 ParamSpec compile_time(ParamSpec spec);
 
 // Concise constructors for model files.

@@ -21,6 +21,10 @@ struct ShadingModel {
     // Reads the per-vertex radial curvature κr of the current view (attribute 6, v_kr, under
     // INKSHADE_RADIAL_CURVATURE), computed on the CPU from Rusinkiewicz 2004 curvatures.
     bool radial_curvature = false;
+    // Reads the mesh's vertex normals smoothed at several scales (attributes 7 on, one per scale,
+    // v_scale_normal[] under INKSHADE_MULTISCALE_NORMALS; geometry/multiscale_normals.hpp): the
+    // model's parameters "scales" (compile-time) and "sigma" choose them (exaggerated shading).
+    bool multiscale_normals = false;
     // Shades in the linear convention whatever --srgb (docs/shading.md, "Colour conventions"):
     // textures decoded from sRGB, output sRGB-encoded (the three.js models). A model with a
     // Choice parameter "convention" is in it when that is "threejs" (mtoon).

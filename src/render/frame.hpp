@@ -31,6 +31,7 @@ struct Frame {
     bool closed = false;            // closed and outward (back faces invisible from outside)
     bool cull_back_faces = false;   // closed and wholly in front of the near plane (cull_back_faces())
     LineExtractor& line_extractor;  // MeshLineData
+    const Mesh& cpu_mesh;           // positions, triangles and normals (colours dropped after the upload)
     GpuMesh* mesh = nullptr;        // GpuMesh: null until the upload (MeshUse::OneFrame)
     FrameTargets& targets;          // Color, ResolvedColor, ShadowMap, GBuffer
     Resources reads;                // what the planned passes read (PassPlan::reads)

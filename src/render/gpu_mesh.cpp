@@ -82,6 +82,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     auto source_of = [&](size_t i) { return split ? source[i] : uint32_t(i); };
     index_count_ = GLsizei(faces.size() * 3);
     const size_t stream_size = vertices.size();
+    stream_size_ = stream_size;
     has_own_colors_ = textured() || std::any_of(vertices.begin(), vertices.end(),
                                                 [](const GpuVertex& v) { return v.color != glm::vec3(1.0f); });
     vbo_ = upload_buffer(GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data());
@@ -262,6 +263,30 @@ void GpuMesh::set_vertex_scalar(const std::vector<float>& per_mesh_vertex) {
         glVertexArrayAttribBinding(vao_.id(), 6, 4);
     }
     glNamedBufferData(scalar_vbo_.id(), GLsizeiptr(data->size() * sizeof(float)), data->data(), GL_DYNAMIC_DRAW);
+}
+
+void GpuMesh::set_scale_normals(const std::vector<std::vector<glm::vec3>>& normals, std::vector<float> sigmas) {
+    const size_t scales = std::min(normals.size(), kMaxScaleNormals);
+    // Interleaved: vertex i's scales side by side, each stream vertex its source vertex's.
+    std::vector<glm::vec3> stream(stream_size_ * scales, glm::vec3(0.0f, 0.0f, 1.0f));
+    for (size_t i = 0; i < stream_size_; ++i) {
+        const size_t v = source_.empty() ? i : source_[i];
+        for (size_t s = 0; s < scales; ++s)
+            if (v < normals[s].size()) stream[i * scales + s] = normals[s][v];
+    }
+    const GLuint vao = vao_.id();
+    for (GLuint a = 0; a < kMaxScaleNormals; ++a) glDisableVertexArrayAttrib(vao, 7 + a);
+    scale_normal_vbo_ = gpu::GlBuffer::create();
+    glNamedBufferData(scale_normal_vbo_.id(), GLsizeiptr(stream.size() * sizeof(glm::vec3)), stream.data(),
+                      GL_STATIC_DRAW);
+    // Binding point 5 (0-4 hold the other streams).
+    glVertexArrayVertexBuffer(vao, 5, scale_normal_vbo_.id(), 0, GLsizei(scales * sizeof(glm::vec3)));
+    for (GLuint s = 0; s < scales; ++s) {
+        glEnableVertexArrayAttrib(vao, 7 + s);
+        glVertexArrayAttribFormat(vao, 7 + s, 3, GL_FLOAT, GL_FALSE, GLuint(s * sizeof(glm::vec3)));
+        glVertexArrayAttribBinding(vao, 7 + s, 5);
+    }
+    scale_sigmas_ = std::move(sigmas);
 }
 
 namespace {

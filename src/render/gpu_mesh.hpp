@@ -81,6 +81,12 @@ public:
     // Uploads one float per mesh vertex as attribute 6 (the `kr` debug view's per-view radial
     // curvature); stream vertices duplicated per material take their source vertex's value.
     void set_vertex_scalar(const std::vector<float>& per_mesh_vertex);
+    // Uploads normals[s][v], one vec3 per mesh vertex and scale, as attributes 7, 8, ... (one a
+    // scale, at most kMaxScaleNormals) for models that read multiscale normals, and remembers
+    // `sigmas` (what scale_normal_sigmas() returns) so they are computed once per mesh and choice.
+    static constexpr size_t kMaxScaleNormals = 9;  // attributes 7-15 of the 16 GL guarantees
+    void set_scale_normals(const std::vector<std::vector<glm::vec3>>& normals, std::vector<float> sigmas);
+    const std::vector<float>& scale_normal_sigmas() const { return scale_sigmas_; }
 
 private:
     void upload_materials(const Mesh& mesh, bool has_face_materials);
@@ -95,9 +101,11 @@ private:
         uint32_t material = 0;
         glm::vec3 center{0.0f};
     };
-    gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_, scalar_vbo_;
+    gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_, scalar_vbo_, scale_normal_vbo_;
+    std::vector<float> scale_sigmas_;  // of the normals in scale_normal_vbo_
     gpu::GlVertexArray vao_;
     std::vector<uint32_t> source_;          // mesh vertex of each stream vertex (set_vertex_scalar)
+    size_t stream_size_ = 0;                // vertices in the stream
     std::vector<glm::uvec2> object_parts_;  // object_parts()
     GLsizei index_count_ = 0;
     std::vector<Range> ranges_;

@@ -170,6 +170,7 @@ Image Renderer::Impl::render(const Camera& camera, const Light& light, const Sha
         .closed = impl_->closed,
         .cull_back_faces = render::cull_back_faces(impl_->closed, impl_->bounds, camera),
         .line_extractor = *impl_->line_extractor,
+        .cpu_mesh = *impl_->cpu_mesh,
         .mesh = impl_->mesh.get(),
         .targets = impl_->targets,
         .object_lines = std::move(object_lines),

@@ -4,10 +4,12 @@
 // (render/color_convention.hpp), and C made as the selection's BaseColorUse says.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <functional>
 #include <map>
 
 #include "gpu/gl_state.hpp"
+#include "geometry/multiscale_normals.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/color.hpp"
 #include "render/color_convention.hpp"
@@ -69,6 +71,20 @@ ParamValues with_material_params(const ShadingModel& model, const ParamValues& v
             merged[spec.name] = it->second;
     }
     return merged;
+}
+
+// The scale normals a model with multiscale_normals reads, computed from the CPU mesh and
+// uploaded when the mesh has none for its "scales" and "sigma" yet: `scales` + 1 widths from
+// sigma x the typical edge length, doubling (the last, coarsest, is the base coat's).
+void upload_scale_normals(const Frame& frame) {
+    const ShadingModel& model = frame.model;
+    const int scales = int(value_or_default(*model.param("scales"), frame.shading.params).at(0));
+    const float sigma = value_or_default(*model.param("sigma"), frame.shading.params).at(0);
+    std::vector<float> sigmas;
+    for (int s = 0; s <= scales && sigmas.size() < GpuMesh::kMaxScaleNormals; ++s)
+        sigmas.push_back(std::ldexp(sigma * frame.edge_length, s));
+    if (frame.mesh->scale_normal_sigmas() == sigmas) return;
+    frame.mesh->set_scale_normals(geometry::multiscale_normals(frame.cpu_mesh, frame.cpu_mesh.normals, sigmas), sigmas);
 }
 
 bool param_on(const ShadingModel& model, const ParamValues& values, const char* name) {
@@ -187,6 +203,7 @@ public:
         const bool rules = mesh.has_material_rules() && !model.debug_view;
         const bool alpha = rules && mesh.has_alpha_materials();
         const Variant variant{textured, mtoon_textures, base_color_only, unlit, alpha};
+        if (model.multiscale_normals) upload_scale_normals(frame);
         gpu::ShaderProgram& program =
             program_for(model, shading.params, surface_lines, variant, /*outline=*/false, frame.light);
 
@@ -350,6 +367,7 @@ private:
         if (outline) defines += "#define INKSHADE_MTOON_OUTLINE 1\n";
         if (variant.base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
         if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
+        if (model.multiscale_normals) defines += "#define INKSHADE_MULTISCALE_NORMALS 1\n";
         if (variant.unlit) defines += "#define INKSHADE_UNLIT 1\n";
         if (variant.alpha) defines += "#define INKSHADE_MATERIAL_ALPHA 1\n";
         if (light.type == LightType::Spot) defines += "#define INKSHADE_SPOT_LIGHT 1\n";

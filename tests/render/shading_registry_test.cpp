@@ -36,7 +36,8 @@ TEST(ShadingRegistry, DefaultsLieInTheirRanges) {
         for (const ParamSpec& p : m->params) {
             EXPECT_NO_THROW(check_param_value(p, p.default_value)) << m->name << "." << p.name;
             if (p.compile_time) {  // becomes an integer #define
-                EXPECT_TRUE(p.type == ParamType::Bool || p.type == ParamType::Choice) << m->name << "." << p.name;
+                EXPECT_TRUE(p.type == ParamType::Bool || p.type == ParamType::Choice || p.type == ParamType::Int)
+                    << m->name << "." << p.name;
             }
             EXPECT_FALSE(p.doc.empty()) << m->name << "." << p.name;
         }
