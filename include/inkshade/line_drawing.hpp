@@ -20,6 +20,11 @@ struct LinePath {
     std::vector<glm::vec2> points;  // a closed path does not repeat its first point
     std::vector<float> depth;       // per point: window depth in [0, 1] as in the GL depth buffer
     std::vector<float> strength;    // per point in [0, 1]: fading and taper (1 = full stroke)
+    // Per point, filled in by the layer's stroke modifiers (docs/lines.md, "Stylised strokes")
+    // when it has any, else empty: the stroke width in pixels (strength already applied when
+    // the layer tapers) and the stroke colour (linear 0..1, as the layer's `color`).
+    std::vector<float> width;
+    std::vector<glm::vec3> color;
     bool closed = false;
     // Occlusion level (quantitative invisibility, Appel 1967): how many surfaces lie between
     // the viewer and this path; 0 = visible.
