@@ -89,15 +89,25 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+struct SvgOptions {
+    // Paths as the polylines' points ("M x y L x y ..."), as before Bézier output; by default
+    // each polyline is fitted with cubic Béziers within max_error_px (Schneider 1990).
+    bool polylines = false;
+    double max_error_px = 0.2;  // the fit's distance; with the 1/100 px rounding under 0.25 px
+};
+
 // SVG 1.1 text: viewBox = image size, one <g> layer per line type (id and inkscape:label),
-// each polyline a <path> with its stroke colour, opacity and width; hidden lines in their own
-// dashed layer. `background` with alpha 0 writes no background rectangle.
-std::string format_svg(const LineDrawing& drawing, glm::vec4 background);
+// each stroke a <path> with its colour, opacity and width (a stroke whose width varies along
+// it: a filled outline); hidden lines in their own dashed layer. `background` with alpha 0
+// writes no background rectangle. Layout: docs/lines.md.
+std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const SvgOptions& options = {});
 // Writes format_svg atomically (temporary file + rename). Throws RuntimeError on failure.
-void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background);
+void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background,
+               const SvgOptions& options = {});
 
 // JSON for scripting: image size and, per layer, its type, parameters and polylines (points,
-// depth, strength, closed, hidden).
+// depth, strength, closed, hidden; width and color per point when the layer's stroke
+// modifiers set them).
 std::string format_lines_json(const LineDrawing& drawing);
 
 }  // namespace inkshade

@@ -44,14 +44,17 @@ double fraction_near(const std::vector<uint8_t>& from, const std::vector<uint8_t
     return n ? double(near) / n : 0.0;
 }
 
-void expect_overlap(const std::string& model, const std::string& camera) {
+constexpr const char* kPlainLines =
+    "[[lines]]\ntype = 'contour'\nwidth = 2.0\n"
+    "[[lines]]\ntype = 'suggestive'\nwidth = 1.5\n"
+    "[[lines]]\ntype = 'crease'\nwidth = 1.5\n";
+
+void expect_overlap(const std::string& model, const std::string& camera, const std::string& lines = kPlainLines) {
     TempDir dir;
     const std::string style = dir.write("lines.toml",
                                         "background = 'white'\nbase-color = '1,1,1'\n[light]\ncolor = '0,0,0'\n"
-                                        "ambient = '1,1,1'\n[shading]\nmodel = 'lambert'\n"
-                                        "[[lines]]\ntype = 'contour'\nwidth = 2.0\n"
-                                        "[[lines]]\ntype = 'suggestive'\nwidth = 1.5\n"
-                                        "[[lines]]\ntype = 'crease'\nwidth = 1.5\n");
+                                        "ambient = '1,1,1'\n[shading]\nmodel = 'lambert'\n" +
+                                            lines);
     const std::string args = model + " --style " + style + " --size 200x150 " + camera;
     CliResult r = run_cli("lines " + args + " -o " + dir.file("l.svg"));
     ASSERT_EQ(r.status, 0) << r.err;
@@ -78,6 +81,16 @@ TEST(LinesOverlay, SvgAndGpuStrokesCoverTheSamePixelsOnTheTorus) {
 
 TEST(LinesOverlay, SvgAndGpuStrokesCoverTheSamePixelsOnTheTeapotOrthographic) {
     expect_overlap("builtin:teapot", "--azimuth 40 --elevation 15 --ortho");
+}
+
+// Widths that vary along the strokes (taper, depth, nib), dashes and flat caps: the GPU draws
+// the widths the SVG's filled outlines have. A GPU stroke of the layer's constant 6 px would
+// stand up to 1.8 px beyond the SVG's thinnest parts (2.4 px) and fail.
+TEST(LinesOverlay, VariableWidthDashedStrokesCoverTheSamePixelsOnTheTorus) {
+    expect_overlap("builtin:torus", "--azimuth 20 --elevation 35",
+                   "[[lines]]\ntype = 'contour'\nwidth = 6.0\ntaper-in = 25\ntaper-out = 25\n"
+                   "depth-width = [1.6, 0.4]\ncalligraphy = 0.5\nnib-angle = 30\ndash = [40, 10]\n"
+                   "cap = 'butt'\nsplit-angle = 80\n");
 }
 
 }  // namespace
