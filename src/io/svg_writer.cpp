@@ -129,31 +129,37 @@ private:
 // How a curve begins: a new subpath, a line from the current point, or at the current point.
 enum class Start { Move, Line, Here };
 
-// `points` as a polyline, or with fitted cubic Béziers (pieces straight to 1/100 px as lines);
-// `close` ends the subpath with Z (a loop: its first point is passed again for the fit, not
-// written again).
+// `points` as a polyline, or with fitted cubic Béziers (pieces straight to 1/100 px as lines)
+// unless the polyline's text is shorter (a coarse mesh's few-pixel segments: the points are
+// already the most compact exact form); `close` ends the subpath with Z (a loop: its first point
+// is passed again for the fit, not written again).
 void append_curve(PathData& d, const std::vector<glm::vec2>& points, bool close, Start start,
                   const SvgOptions& options) {
     if (points.empty()) return;
-    if (start == Start::Move) d.move(glm::dvec2(points[0]));
-    if (start == Start::Line) d.line(glm::dvec2(points[0]));
-    if (options.polylines) {
-        for (size_t k = 1; k < points.size(); ++k) d.line(glm::dvec2(points[k]));
-    } else {
-        std::vector<glm::vec2> fit = points;
-        if (close) fit.push_back(points[0]);
-        const std::vector<io::CubicBezier> pieces = io::fit_beziers(fit, options.max_error_px);
-        for (size_t k = 0; k < pieces.size(); ++k) {
-            const io::CubicBezier& b = pieces[k];
-            const glm::dvec2 third = (b.p3 - b.p0) / 3.0;
-            if (glm::length(b.p1 - (b.p0 + third)) < 0.005 && glm::length(b.p2 - (b.p3 - third)) < 0.005) {
-                if (!(close && k + 1 == pieces.size())) d.line(b.p3);  // Z draws a loop's last line
-                continue;
-            }
-            d.cubic(b.p1, b.p2, b.p3);
-        }
+    PathData poly = d;
+    if (start == Start::Move) poly.move(glm::dvec2(points[0]));
+    if (start == Start::Line) poly.line(glm::dvec2(points[0]));
+    PathData fitted = poly;
+    for (size_t k = 1; k < points.size(); ++k) poly.line(glm::dvec2(points[k]));
+    if (close) poly.close();
+    if (options.polylines || points.size() < 3) {
+        d = std::move(poly);
+        return;
     }
-    if (close) d.close();
+    std::vector<glm::vec2> fit = points;
+    if (close) fit.push_back(points[0]);
+    const std::vector<io::CubicBezier> pieces = io::fit_beziers(fit, options.max_error_px);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const io::CubicBezier& b = pieces[k];
+        const glm::dvec2 third = (b.p3 - b.p0) / 3.0;
+        if (glm::length(b.p1 - (b.p0 + third)) < 0.005 && glm::length(b.p2 - (b.p3 - third)) < 0.005) {
+            if (!(close && k + 1 == pieces.size())) fitted.line(b.p3);  // Z draws a loop's last line
+            continue;
+        }
+        fitted.cubic(b.p1, b.p2, b.p3);
+    }
+    if (close) fitted.close();
+    d = fitted.text().size() < poly.text().size() ? std::move(fitted) : std::move(poly);
 }
 
 // A stroke's cap from `a` (the left side's end) to `b` (the right side's), about the stroke's
