@@ -35,6 +35,7 @@ struct LinesArgs {
     std::string lines;  // --lines a,b,c
     std::string lines_json;
     bool hidden = false;
+    bool svg_polylines = false;    // --svg-polylines: points, not fitted Béziers
     std::string occlusion_levels;  // --occlusion-levels A-B
     int timing = 0;
     ImageOutputOptions image;  // --quality, --bit-depth
@@ -64,6 +65,20 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
                 drawing.width, drawing.height, paths, args.timing);
     for (const auto& stage : order) std::printf("  %-10s median %8.2f ms\n", stage.c_str(), median(per_stage[stage]));
     std::printf("  %-10s median %8.2f ms\n", "total", median(totals));
+    if (lower_ascii(std::filesystem::path(args.output).extension().string()) == ".svg") {
+        // Formatting the SVG text (Bézier fitting included), apart from the views above.
+        std::vector<double> svg_ms;
+        const SvgOptions svg{.polylines = args.svg_polylines};
+        for (int i = 0; i < args.timing; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            const std::string text = format_svg(drawing, scene.style.background, svg);
+            svg_ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            if (text.empty()) std::printf("empty SVG\n");
+        }
+        std::printf("  %-10s median %8.2f ms (%s)\n", "svg", median(svg_ms),
+                    args.svg_polylines ? "polylines" : "Bezier fit");
+    }
     std::string once;
     for (const LineTiming& t : setup)
         if (!per_stage.count(t.stage)) {
@@ -86,6 +101,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
         refuse_image_options(args.image);
     } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") {
         image_file = image_output(args.output, args.image);
+        if (args.svg_polylines) throw InputError("--svg-polylines: only for .svg output");
         if (args.hidden) throw InputError("--hidden: hidden lines are drawn (dashed) in SVG only; write .svg");
         if (levels && levels->max > 0)
             throw InputError("--occlusion-levels: hidden levels are drawn (dashed) in SVG only; write .svg");
@@ -127,7 +143,7 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
         if (image_file)
             write_image(*image_file, image);
         else
-            write_svg(args.output, drawing, scene.style.background);
+            write_svg(args.output, drawing, scene.style.background, SvgOptions{.polylines = args.svg_polylines});
     };
     if (args.lines_json.empty()) {
         write_output();
@@ -162,9 +178,12 @@ Command add_lines_command(CLI::App& app) {
     cmd->add_option("--lines-json", args->lines_json, "also write the polylines as JSON (docs/lines.md)");
     cmd->add_flag("--hidden", args->hidden,
                   "also draw every hidden line, dashed, in layers TYPE-hidden-N by occlusion level N (SVG only)");
-    cmd->add_option("--occlusion-levels", args->occlusion_levels,
-                    "occlusion levels drawn, A-B (how many surfaces lie in front; default 0-0 = visible only; "
-                    "1-1: lines behind one surface; 0-: all); levels above 0 are dashed layers TYPE-hidden-N (SVG only)");
+    cmd->add_option(
+        "--occlusion-levels", args->occlusion_levels,
+        "occlusion levels drawn, A-B (how many surfaces lie in front; default 0-0 = visible only; "
+        "1-1: lines behind one surface; 0-: all); levels above 0 are dashed layers TYPE-hidden-N (SVG only)");
+    cmd->add_flag("--svg-polylines", args->svg_polylines,
+                  "write each path's points as a polyline instead of cubic Beziers fitted within 0.2 px");
     args->image.add_to(*cmd);
     cmd->add_option("--timing", args->timing, "extract N extra views and print median ms per stage and total")
         ->check(CLI::Range(0, 100000));

@@ -20,6 +20,11 @@ struct LinePath {
     std::vector<glm::vec2> points;  // a closed path does not repeat its first point
     std::vector<float> depth;       // per point: window depth in [0, 1] as in the GL depth buffer
     std::vector<float> strength;    // per point in [0, 1]: fading and taper (1 = full stroke)
+    // Per point, filled in by the layer's stroke modifiers (docs/lines.md, "Stylised strokes")
+    // when it has any, else empty: the stroke width in pixels (strength already applied when
+    // the layer tapers) and the stroke colour (linear 0..1, as the layer's `color`).
+    std::vector<float> width;
+    std::vector<glm::vec3> color;
     bool closed = false;
     // Occlusion level (quantitative invisibility, Appel 1967): how many surfaces lie between
     // the viewer and this path; 0 = visible.
@@ -84,15 +89,25 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+struct SvgOptions {
+    // Paths as the polylines' points ("M x y L x y ..."), as before Bézier output; by default
+    // each polyline is fitted with cubic Béziers within max_error_px (Schneider 1990).
+    bool polylines = false;
+    double max_error_px = 0.2;  // the fit's distance; with the 1/100 px rounding under 0.25 px
+};
+
 // SVG 1.1 text: viewBox = image size, one <g> layer per line type (id and inkscape:label),
-// each polyline a <path> with its stroke colour, opacity and width; hidden lines in their own
-// dashed layer. `background` with alpha 0 writes no background rectangle.
-std::string format_svg(const LineDrawing& drawing, glm::vec4 background);
+// each stroke a <path> with its colour, opacity and width (a stroke whose width varies along
+// it: a filled outline); hidden lines in their own dashed layer. `background` with alpha 0
+// writes no background rectangle. Layout: docs/lines.md.
+std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const SvgOptions& options = {});
 // Writes format_svg atomically (temporary file + rename). Throws RuntimeError on failure.
-void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background);
+void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background,
+               const SvgOptions& options = {});
 
 // JSON for scripting: image size and, per layer, its type, parameters and polylines (points,
-// depth, strength, closed, hidden).
+// depth, strength, closed, hidden; width and color per point when the layer's stroke
+// modifiers set them).
 std::string format_lines_json(const LineDrawing& drawing);
 
 }  // namespace inkshade

@@ -1,16 +1,21 @@
 #version 450 core
 // stroke: coverage of the capsule around segment a-b whose radius goes linearly from r0 to r1
-// (distance to the closest point a + t (b - a), inside when <= mix(r0, r1, t)).
+// (distance to the closest point a + t (b - a), inside when <= mix(r0, r1, t)); an end marked
+// flat (a path's butt or square cap) cuts the capsule square there: nothing beyond the end
+// point along the segment.
 //  - multisampled targets: each sample inside the capsule sets its bit of gl_SampleMask
 //    (positions from interpolateAtSample), alpha = opacity: exact coverage, and with the
 //    stencil (render/stroke_pass.cpp) a sample is blended once per draw;
 //  - single-sampled: alpha = opacity * clamp(r - distance + 0.5, 0, 1) at the pixel centre.
+// Colour: the ends' colours blended along the segment.
 // Depth: window depth interpolated along the segment minus a bias (lines lie on the surface).
 in vec2 v_px;
 flat in vec4 v_ends;
 flat in vec4 v_radius_depth;
+flat in vec4 v_color0;
+flat in vec4 v_color1;
 
-uniform vec4 u_color;  // rgb, opacity
+uniform vec4 u_color;  // rgb (unused: per-vertex colours), opacity
 uniform float u_depth_bias;
 uniform int u_depth_test;
 uniform int u_multisample;
@@ -21,8 +26,14 @@ layout(location = 0) out vec4 o_color;
 float capsule(vec2 p, out float t) {
     vec2 a = v_ends.xy, b = v_ends.zw, ab = b - a;
     float l2 = dot(ab, ab);
-    t = l2 > 0.0 ? clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-    return length(p - (a + t * ab)) - mix(v_radius_depth.x, v_radius_depth.y, t);
+    float raw = l2 > 0.0 ? dot(p - a, ab) / l2 : 0.0;
+    t = clamp(raw, 0.0, 1.0);
+    float d = length(p - (a + t * ab)) - mix(v_radius_depth.x, v_radius_depth.y, t);
+    // A flat end: the signed distance to the end's line, beyond it.
+    float len = sqrt(l2);
+    if (v_color0.w > 0.5 && raw < 0.0) d = max(d, -raw * len);
+    if (v_color1.w > 0.5 && raw > 1.0) d = max(d, (raw - 1.0) * len);
+    return d;
 }
 
 void main() {
@@ -43,5 +54,5 @@ void main() {
         alpha *= coverage;
     }
     gl_FragDepth = u_depth_test == 1 ? mix(v_radius_depth.z, v_radius_depth.w, t) - u_depth_bias : 0.0;
-    o_color = vec4(u_color.rgb, alpha);
+    o_color = vec4(mix(v_color0.rgb, v_color1.rgb, t), alpha);
 }

@@ -1,13 +1,16 @@
 // LineExtractor: per view, for each object-space line type of the style: extract segments
 // (world space) → split by visibility (ray casting, visibility.hpp) → chain into polylines →
-// project to image pixels → drop short chains and smooth (in pixels) → one layer.
+// project to image pixels → drop short chains and smooth (in pixels) → stylised strokes (split,
+// widths and colours, sketchy passes, dashes; stroke_style.hpp) → one layer.
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <optional>
 
 #include "geometry/chaining.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
+#include "geometry/stroke_style.hpp"
 #include "geometry/suggestive_contours.hpp"
 #include "geometry/visibility.hpp"
 #include "inkshade/error.hpp"
@@ -19,7 +22,8 @@ using namespace geometry;
 
 struct LineExtractor::Impl {
     MeshLineData data;
-    std::unique_ptr<RayScene> scene;  // built on the first draw (timed there)
+    std::unique_ptr<RayScene> scene;    // built on the first draw (timed there)
+    std::optional<BoundingBox> bounds;  // the depth range of the stroke modifiers, on first use
     explicit Impl(const Mesh& mesh) : data(mesh) {}
     explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
     explicit Impl(std::shared_ptr<const Mesh> mesh) : data(std::move(mesh)) {}
@@ -142,10 +146,20 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         object_lines.push_back(&settings);
     }
     if (object_lines.empty()) return drawing;
-    for (const LineSettings* settings : object_lines) drawn_levels(*settings);  // InputError when inverted
+    // InputError when the levels are inverted or a stroke parameter is out of bounds.
+    std::vector<StrokeModifiers> modifiers;
+    for (const LineSettings* settings : object_lines) {
+        drawn_levels(*settings);
+        modifiers.push_back(StrokeModifiers::of(*settings));
+    }
 
     Impl& m = *impl_;
     const ImageProjection view(camera, width, height);
+    ViewDepthRange depth_range;
+    if (std::any_of(modifiers.begin(), modifiers.end(), [](const StrokeModifiers& s) { return s.reads_depth(); })) {
+        if (!m.bounds) m.bounds = m.data.mesh().bounds();
+        depth_range = ViewDepthRange::of_sphere(camera, m.bounds->center(), 0.5f * m.bounds->diagonal());
+    }
 
     MeshLineNeeds needs;
     for (const LineSettings* settings : object_lines) {
@@ -198,8 +212,9 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         options.count_levels_to = std::min(levels.max + 1, kMaxOcclusionLevel);
         options.contour = settings->type == "contour";
         options.min_length_px = line_number(*settings, "min-length");
-        const VisibilitySplit split =
-            timer("visibility", [&] { return split_by_visibility(*m.scene, m.data.mesh(), view, segments, options, &around); });
+        const VisibilitySplit split = timer("visibility", [&] {
+            return split_by_visibility(*m.scene, m.data.mesh(), view, segments, options, &around);
+        });
         // Chains per level: a change of level ends a chain.
         auto chained = timer("chain", [&] {
             std::vector<std::pair<int, std::vector<Polyline>>> out;
@@ -220,6 +235,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
             for (const auto& [level, polylines] : chained) {
                 std::vector<LinePath> paths = to_image(polylines, view, min_length, smooth);
                 for (LinePath& p : paths) p.level = level;
+                paths = style_strokes(std::move(paths), modifiers[i], depth_range, uint32_t(i * 256 + size_t(level)));
                 auto& into = level == 0 ? layer.visible : layer.hidden;
                 into.insert(into.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
             }

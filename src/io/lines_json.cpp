@@ -1,6 +1,7 @@
 // JSON form of a LineDrawing for scripts (--lines-json); schema in docs/lines.md:
 // {"width", "height", "layers": [{"type", "params", "stroke", "paths": [{"hidden", "level", "closed",
-// "points": [[x, y], ...], "depth": [...], "strength": [...]}]}]}.
+// "points": [[x, y], ...], "depth": [...], "strength": [...], optional "width": [...] and
+// "color": [[r, g, b], ...]}]}]}.
 // Numbers are rounded (1e-3 px, 1e-7 depth, 1e-4 strength) so the text is short and stable.
 #include <cmath>
 #include <string>
@@ -38,7 +39,21 @@ nlohmann::json path_json(const LinePath& p, bool hidden) {
     for (const glm::vec2& q : p.points) points.push_back({rounded(q.x, 1e-3), rounded(q.y, 1e-3)});
     for (float d : p.depth) depth.push_back(rounded(d, 1e-7));
     for (float s : p.strength) strength.push_back(rounded(s, 1e-4));
-    return {{"hidden", hidden}, {"level", p.level}, {"closed", p.closed}, {"points", points}, {"depth", depth}, {"strength", strength}};
+    nlohmann::json j = {{"hidden", hidden}, {"level", p.level}, {"closed", p.closed},
+                        {"points", points}, {"depth", depth},   {"strength", strength}};
+    // Present only when the layer's stroke modifiers set them (docs/lines.md).
+    if (!p.width.empty()) {
+        nlohmann::json width = nlohmann::json::array();
+        for (float w : p.width) width.push_back(rounded(w, 1e-3));
+        j["width"] = width;
+    }
+    if (!p.color.empty()) {
+        nlohmann::json color = nlohmann::json::array();
+        for (const glm::vec3& c : p.color)
+            color.push_back({rounded(c.r, 1e-4), rounded(c.g, 1e-4), rounded(c.b, 1e-4)});
+        j["color"] = color;
+    }
+    return j;
 }
 
 }  // namespace

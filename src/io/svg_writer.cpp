@@ -15,8 +15,11 @@
 #include <map>
 #include <string>
 
+#include "geometry/stroke_style.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bezier_fit.hpp"
+#include "io/stroke_outline.hpp"
 
 namespace inkshade {
 
@@ -69,21 +72,143 @@ bool finite_path(const LinePath& p) {
     return p.points.size() >= 2;
 }
 
-// Path data "M x y L x y x y ..." through points[first .. first + count] (indices modulo the
-// size, for loops); " Z" closes a whole loop instead of repeating its first point.
-std::string path_data(const LinePath& p, size_t first, size_t count, bool close) {
-    std::string d;
+// The points of p from index `first`, `count` segments on (indices modulo the size, for loops),
+// with their widths and colours when `widths` / p.color are given.
+struct Run {
+    std::vector<glm::vec2> points;
+    std::vector<float> widths;
+    bool whole_loop = false;
+};
+
+Run run_of(const LinePath& p, const std::vector<float>& widths, size_t first, size_t count, bool whole_loop) {
+    Run r;
+    r.whole_loop = whole_loop;
     const size_t n = p.points.size();
-    const size_t last = close ? count - 1 : count;
+    const size_t last = whole_loop ? count - 1 : count;
     for (size_t k = 0; k <= last; ++k) {
-        const glm::vec2 q = p.points[(first + k) % n];
-        d += k == 0 ? "M" : (k == 1 ? " L" : " ");
-        append_number(d, q.x);
-        d += ' ';
-        append_number(d, q.y);
+        r.points.push_back(p.points[(first + k) % n]);
+        if (!widths.empty()) r.widths.push_back(widths[(first + k) % n]);
     }
-    if (close) d += " Z";
-    return d;
+    return r;
+}
+
+// SVG path data, compact: a command letter only where it changes ("M1 2 L3 4 5 6 C...").
+class PathData {
+public:
+    void move(glm::dvec2 q) { command('M', {q}); }
+    void line(glm::dvec2 q) { command('L', {q}); }
+    void cubic(glm::dvec2 c1, glm::dvec2 c2, glm::dvec2 e) { command('C', {c1, c2, e}); }
+    void close() {
+        d_ += " Z";
+        last_ = 'Z';
+    }
+    const std::string& text() const { return d_; }
+
+private:
+    void command(char c, std::initializer_list<glm::dvec2> pairs) {
+        if (c != last_ || c == 'M') {
+            if (!d_.empty()) d_ += ' ';
+            d_ += c;
+        } else {
+            d_ += ' ';
+        }
+        last_ = c;
+        bool first = true;
+        for (glm::dvec2 q : pairs) {
+            if (!first) d_ += ' ';
+            first = false;
+            append_number(d_, q.x);
+            d_ += ' ';
+            append_number(d_, q.y);
+        }
+    }
+    std::string d_;
+    char last_ = 0;
+};
+
+// How a curve begins: a new subpath, a line from the current point, or at the current point.
+enum class Start { Move, Line, Here };
+
+// `points` as a polyline, or with fitted cubic Béziers (pieces straight to 1/100 px as lines)
+// unless the polyline's text is shorter (a coarse mesh's few-pixel segments: the points are
+// already the most compact exact form); `close` ends the subpath with Z (a loop: its first point
+// is passed again for the fit, not written again).
+void append_curve(PathData& d, const std::vector<glm::vec2>& points, bool close, Start start,
+                  const SvgOptions& options) {
+    if (points.empty()) return;
+    PathData poly = d;
+    if (start == Start::Move) poly.move(glm::dvec2(points[0]));
+    if (start == Start::Line) poly.line(glm::dvec2(points[0]));
+    PathData fitted = poly;
+    for (size_t k = 1; k < points.size(); ++k) poly.line(glm::dvec2(points[k]));
+    if (close) poly.close();
+    if (options.polylines || points.size() < 3) {
+        d = std::move(poly);
+        return;
+    }
+    std::vector<glm::vec2> fit = points;
+    if (close) fit.push_back(points[0]);
+    const std::vector<io::CubicBezier> pieces = io::fit_beziers(fit, options.max_error_px);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const io::CubicBezier& b = pieces[k];
+        const glm::dvec2 third = (b.p3 - b.p0) / 3.0;
+        if (glm::length(b.p1 - (b.p0 + third)) < 0.005 && glm::length(b.p2 - (b.p3 - third)) < 0.005) {
+            if (!(close && k + 1 == pieces.size())) fitted.line(b.p3);  // Z draws a loop's last line
+            continue;
+        }
+        fitted.cubic(b.p1, b.p2, b.p3);
+    }
+    if (close) fitted.close();
+    d = fitted.text().size() < poly.text().size() ? std::move(fitted) : std::move(poly);
+}
+
+// A stroke's cap from `a` (the left side's end) to `b` (the right side's), about the stroke's
+// end point `centre` whose direction out of the stroke is `t` (unit).
+void append_cap(PathData& d, glm::dvec2 a, glm::dvec2 b, glm::dvec2 centre, glm::dvec2 t, geometry::StrokeCap cap) {
+    const double r = 0.5 * glm::length(b - a);
+    if (r < 0.005 || cap == geometry::StrokeCap::Butt) {
+        d.line(b);
+        return;
+    }
+    if (cap == geometry::StrokeCap::Square) {
+        d.line(a + t * r);
+        d.line(b + t * r);
+        d.line(b);
+        return;
+    }
+    // Two quarter circles as cubics (control arms 0.5523 r put their midpoints on the circle).
+    const double k = 0.5522847498 * r;
+    const glm::dvec2 m = centre + t * r, towards_b = (b - a) / (2.0 * r);
+    d.cubic(a + t * k, m - towards_b * k, m);
+    d.cubic(m + towards_b * k, b + t * k, b);
+}
+
+// The filled outline of a variable-width run: left side, end cap, right side back, start cap.
+std::string outline_data(const Run& run, const geometry::StrokeEnds& ends, bool open_ends, const SvgOptions& options) {
+    const io::StrokeOutline o = io::stroke_outline(run.points, run.widths, run.whole_loop, ends.join);
+    PathData d;
+    if (o.left.size() < 2) return {};
+    const std::vector<glm::vec2> right(o.right.rbegin(), o.right.rend());
+    if (o.closed) {
+        append_curve(d, o.left, true, Start::Move, options);
+        append_curve(d, right, true, Start::Move, options);
+        return d.text();
+    }
+    const geometry::StrokeCap cap = open_ends ? ends.cap : geometry::StrokeCap::Butt;
+    auto direction = [](glm::vec2 from, glm::vec2 to) {
+        const glm::dvec2 v = glm::dvec2(to) - glm::dvec2(from);
+        const double l = glm::length(v);
+        return l > 0.0 ? v / l : glm::dvec2(0.0);
+    };
+    const std::vector<glm::vec2>& pts = run.points;
+    append_curve(d, o.left, false, Start::Move, options);
+    append_cap(d, glm::dvec2(o.left.back()), glm::dvec2(o.right.back()), glm::dvec2(pts.back()),
+               direction(pts[pts.size() - 2], pts.back()), cap);
+    append_curve(d, right, false, Start::Here, options);
+    append_cap(d, glm::dvec2(o.right.front()), glm::dvec2(o.left.front()), glm::dvec2(pts.front()),
+               direction(pts[1], pts.front()), cap);
+    d.close();
+    return d.text();
 }
 
 // The strength level of segment k → k+1 of p.
@@ -94,50 +219,95 @@ int segment_level(const LinePath& p, size_t k) {
     return int(std::lround(kLevels * std::clamp(std::isfinite(s) ? s : 1.0f, 0.0f, 1.0f)));
 }
 
-void write_paths(std::string& out, const LinePath& p, const Stroke& stroke, bool taper) {
+// The colour of segment k → k+1 of p as SVG hex ("" when the path has no colours).
+std::string segment_color(const LinePath& p, size_t k) {
+    if (p.color.size() != p.points.size()) return {};
+    const size_t n = p.points.size();
+    return hex_color(0.5f * (p.color[k] + p.color[(k + 1) % n]));
+}
+
+struct LayerStyle {
+    Stroke stroke;
+    bool taper = false;
+    geometry::StrokeEnds ends;
+    std::string color;  // the layer's colour, hex
+};
+
+void write_paths(std::string& out, const LinePath& p, const LineSettings& settings, const LayerStyle& style,
+                 const SvgOptions& options) {
     if (!finite_path(p)) return;
     const size_t n = p.points.size();
     const size_t segments = p.closed ? n : n - 1;
-    // Runs of equal level, in order; a loop's runs start at segment 0.
+    const std::vector<float> widths = geometry::drawn_widths(p, settings);
+    // Runs of equal opacity level (strength, when it does not set the width) and colour, in
+    // order; a loop's runs start at segment 0. With taper the strength is in the widths.
+    auto level_of = [&](size_t k) { return style.taper ? kLevels : segment_level(p, k); };
     size_t k = 0;
     while (k < segments) {
-        const int level = segment_level(p, k);
+        const int level = level_of(k);
+        const std::string color = segment_color(p, k);
         size_t end = k + 1;
-        while (end < segments && segment_level(p, end) == level) ++end;
-        if (level > 0) {
-            const bool whole_loop = p.closed && k == 0 && end == segments;
-            out += "<path d=\"" + path_data(p, k, end - k, whole_loop) + "\"";
-            if (level < kLevels) {
-                const double f = double(level) / kLevels;
-                out += taper ? " stroke-width=\"" + number(stroke.width * f) + "\""
-                             : " stroke-opacity=\"" + number(stroke.opacity * f) + "\"";
+        while (end < segments && level_of(end) == level && segment_color(p, end) == color) ++end;
+        const bool whole_loop = p.closed && k == 0 && end == segments;
+        const Run run = run_of(p, widths, k, end - k, whole_loop);
+        float wmin = run.widths.front(), wmax = wmin;
+        for (float w : run.widths) {
+            wmin = std::min(wmin, w);
+            wmax = std::max(wmax, w);
+        }
+        const double f = double(level) / kLevels;
+        const std::string paint = color.empty() ? style.color : color;
+        if (level > 0 && wmax >= 0.005f) {  // what rounds to width 0 is not drawn
+            if (wmax - wmin <= 0.01f) {
+                PathData d;
+                append_curve(d, run.points, whole_loop, Start::Move, options);
+                out += "<path d=\"" + d.text() + "\"";
+                if (std::abs(wmax - style.stroke.width) > 0.005f) out += " stroke-width=\"" + number(wmax) + "\"";
+                if (level < kLevels) out += " stroke-opacity=\"" + number(style.stroke.opacity * f) + "\"";
+                if (paint != style.color) out += " stroke=\"" + paint + "\"";
+                out += "/>\n";
+            } else {
+                // The run's own ends are the stroke's only where the path ends.
+                const bool open_ends = !p.closed && k == 0 && end == segments;
+                const std::string d = outline_data(run, style.ends, open_ends, options);
+                if (!d.empty())
+                    out += "<path d=\"" + d + "\" fill=\"" + paint + "\" fill-opacity=\"" +
+                           number(style.stroke.opacity * f) + "\" stroke=\"none\"/>\n";
             }
-            out += "/>\n";
         }
         k = end;
     }
 }
 
 void write_layer(std::string& out, const std::string& id, const LineLayer& layer, const std::vector<LinePath>& paths,
-                 bool hidden) {
-    const Stroke stroke = stroke_of(layer.settings);
-    const bool taper = line_param(layer.settings, "taper").at(0) != 0.0f;
+                 bool hidden, const SvgOptions& options) {
+    LayerStyle style;
+    style.stroke = stroke_of(layer.settings);
+    style.taper = line_param(layer.settings, "taper").at(0) != 0.0f;
+    style.ends = geometry::stroke_ends(layer.settings);
+    style.color = hex_color(style.stroke.color);
+    const Stroke& stroke = style.stroke;
     out += "<g id=\"" + xml_escape(id) + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + xml_escape(id) +
-           "\" fill=\"none\" stroke=\"" + hex_color(stroke.color) + "\" stroke-opacity=\"" + number(stroke.opacity) +
-           "\" stroke-width=\"" + number(stroke.width) + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
-    if (hidden) {
+           "\" fill=\"none\" stroke=\"" + style.color + "\" stroke-opacity=\"" + number(stroke.opacity) +
+           "\" stroke-width=\"" + number(stroke.width) + "\" stroke-linecap=\"" + geometry::cap_name(style.ends.cap) +
+           "\" stroke-linejoin=\"" + geometry::join_name(style.ends.join) + "\"";
+    // Hidden levels are dashed by the viewer unless the layer's own dash pattern already cut
+    // its strokes into dashes.
+    double dash_sum = 0.0;
+    for (float v : line_param(layer.settings, "dash")) dash_sum += double(v);
+    if (hidden && dash_sum <= 0.0) {
         // Dashes scale with the stroke so thick hidden lines still read as dashed.
         const double w = std::max(double(stroke.width), 1.0);
         out += " stroke-dasharray=\"" + number(3.0 * w) + " " + number(2.0 * w) + "\"";
     }
     out += ">\n";
-    for (const LinePath& p : paths) write_paths(out, p, stroke, taper);
+    for (const LinePath& p : paths) write_paths(out, p, layer.settings, style, options);
     out += "</g>\n";
 }
 
 }  // namespace
 
-std::string format_svg(const LineDrawing& drawing, glm::vec4 background) {
+std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const SvgOptions& options) {
     const std::string w = std::to_string(drawing.width), h = std::to_string(drawing.height);
     std::string out;
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
@@ -155,15 +325,15 @@ std::string format_svg(const LineDrawing& drawing, glm::vec4 background) {
         std::map<int, std::vector<LinePath>, std::greater<int>> by_level;
         for (const LinePath& p : layer.hidden) by_level[std::max(p.level, 1)].push_back(p);
         for (const auto& [level, paths] : by_level)
-            write_layer(out, layer.settings.type + "-hidden-" + std::to_string(level), layer, paths, true);
-        write_layer(out, layer.settings.type, layer, layer.visible, false);
+            write_layer(out, layer.settings.type + "-hidden-" + std::to_string(level), layer, paths, true, options);
+        write_layer(out, layer.settings.type, layer, layer.visible, false, options);
     }
     out += "</svg>\n";
     return out;
 }
 
-void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background) {
-    io::write_file_atomic(path, format_svg(drawing, background));
+void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background, const SvgOptions& options) {
+    io::write_file_atomic(path, format_svg(drawing, background, options));
 }
 
 }  // namespace inkshade

@@ -9,10 +9,13 @@ namespace inkshade::render {
 
 namespace {
 
-// One segment = one instance: end points (pixels), half-widths and window depths at both ends.
+// One segment = one instance: end points (pixels), half-widths and window depths at both ends,
+// colours at both ends with, in w, whether that end is a path's flat (butt or square) cap.
 struct Segment {
     glm::vec4 ends;          // x0, y0, x1, y1
     glm::vec4 radius_depth;  // r0, r1, d0, d1
+    glm::vec4 color0;        // r, g, b, flat start
+    glm::vec4 color1;        // r, g, b, flat end
 };
 
 }  // namespace
@@ -24,7 +27,7 @@ StrokePass::StrokePass()
     const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, buffer_.id(), 0, sizeof(Segment));
     glVertexArrayBindingDivisor(vao, 0, 1);
-    for (GLuint a = 0; a < 2; ++a) {
+    for (GLuint a = 0; a < 4; ++a) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
         glVertexArrayAttribBinding(vao, a, 0);
@@ -33,25 +36,41 @@ StrokePass::StrokePass()
 
 void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height,
                       int samples) {
-    if (style.opacity <= 0.0f || style.width <= 0.0f) return;
+    if (style.opacity <= 0.0f) return;
     bool depth_test = style.depth_test;
+    const bool flat_caps = style.cap != geometry::StrokeCap::Round;
     std::vector<Segment> segments;
     for (const LinePath& path : paths) {
         const size_t n = path.points.size();
         if (n == 0) continue;
         if (path.depth.size() != n) depth_test = false;
         auto radius = [&](size_t i) {
+            if (path.width.size() == n) return 0.5f * std::max(path.width[i], 0.0f);
             float s = style.taper && path.strength.size() == n ? std::clamp(path.strength[i], 0.0f, 1.0f) : 1.0f;
             return 0.5f * style.width * s;
         };
         auto depth = [&](size_t i) { return path.depth.size() == n ? path.depth[i] : 0.0f; };
-        auto add = [&](size_t a, size_t b) {
-            segments.push_back(
-                {glm::vec4(path.points[a], path.points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b))});
+        auto color = [&](size_t i) { return path.color.size() == n ? path.color[i] : style.color; };
+        std::vector<glm::vec2> points = path.points;
+        const bool open = !path.closed && n > 1;
+        if (open && style.cap == geometry::StrokeCap::Square) {
+            // A square cap is a flat one half a width further out.
+            auto extend = [&](size_t end, size_t inner) {
+                const glm::vec2 d = points[end] - points[inner];
+                const float l = glm::length(d);
+                if (l > 0.0f) points[end] += d / l * radius(end);
+            };
+            extend(0, 1);
+            extend(n - 1, n - 2);
+        }
+        auto add = [&](size_t a, size_t b, bool flat_a, bool flat_b) {
+            const glm::vec3 ca = color(a), cb = color(b);
+            segments.push_back({glm::vec4(points[a], points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b)),
+                                glm::vec4(ca, flat_a ? 1.0f : 0.0f), glm::vec4(cb, flat_b ? 1.0f : 0.0f)});
         };
-        if (n == 1) add(0, 0);  // a dot
-        for (size_t i = 0; i + 1 < n; ++i) add(i, i + 1);
-        if (path.closed && n > 2) add(n - 1, 0);
+        if (n == 1) add(0, 0, false, false);  // a dot
+        for (size_t i = 0; i + 1 < n; ++i) add(i, i + 1, open && flat_caps && i == 0, open && flat_caps && i + 2 == n);
+        if (path.closed && n > 2) add(n - 1, 0, false, false);
     }
     if (segments.empty()) return;
     glNamedBufferData(buffer_.id(), GLsizeiptr(segments.size() * sizeof(Segment)), segments.data(), GL_STREAM_DRAW);
@@ -86,7 +105,10 @@ void StrokePass::draw_layers(const std::vector<LineLayer>& layers, int width, in
                                 .opacity = stroke.opacity,
                                 .width = stroke.width,
                                 .taper = line_param(layer.settings, "taper").at(0) != 0.0f,
+                                .cap = geometry::stroke_ends(layer.settings).cap,
                                 .depth_test = false};
+        // The widths are those the SVG writer draws (geometry::drawn_widths): the paths' own,
+        // else the layer's width, times the strength with taper.
         draw(layer.visible, style, width, height, samples);
     }
 }

@@ -1,6 +1,8 @@
 // Anti-aliased strokes for polylines given in image pixels (inkshade/line_drawing.hpp's
-// LinePath: origin top-left, y down): every segment is a quad around a capsule (round caps and
-// round joins, so no gaps at any angle), width optionally tapered by per-point strength; the
+// LinePath: origin top-left, y down): every segment is a quad around a capsule (round joins, so
+// no gaps at any angle; round caps, or flat ones cut square at a path's ends for butt and square
+// caps), width per point (LinePath::width from the layer's stroke modifiers, else the style's,
+// optionally tapered by per-point strength) and colour per point (LinePath::color); the
 // fragment shader computes coverage analytically. With MSAA each sample is tested against the
 // capsule (gl_SampleMask) and the stencil lets a sample be covered once per draw, so joins and
 // overlaps of one layer never blend twice; without MSAA the pixel coverage becomes alpha.
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "gpu/gl_handle.hpp"
+#include "geometry/stroke_style.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "render/pass.hpp"
@@ -20,10 +23,11 @@ namespace inkshade::render {
 struct StrokeStyle {
     glm::vec3 color{0.0f};
     float opacity = 1.0f;
-    float width = 1.0f;        // pixels; times strength when taper is on
-    bool taper = true;         // width * strength (LinePath::strength) per point
-    float depth_bias = 2e-4f;  // subtracted from the paths' window depth before the test
-    bool depth_test = true;    // false: no test even where the paths carry depth
+    float width = 1.0f;  // pixels; times strength when taper is on (LinePath::width replaces both)
+    bool taper = true;   // width * strength (LinePath::strength) per point
+    geometry::StrokeCap cap = geometry::StrokeCap::Round;  // at the ends of open paths
+    float depth_bias = 2e-4f;                              // subtracted from the paths' window depth before the test
+    bool depth_test = true;                                // false: no test even where the paths carry depth
 };
 
 class StrokePass final : public Pass {

@@ -127,7 +127,7 @@ TEST(LinesCommand, TimingPrintsStagesAndTotal) {
     TempDir dir;
     auto r = run_cli("lines builtin:torus --size 64x64 --timing 3 -o " + dir.file("t.svg"));
     ASSERT_EQ(r.status, 0) << r.err;
-    for (const char* stage : {"extract", "visibility", "chain", "total", "once per mesh"})
+    for (const char* stage : {"extract", "visibility", "chain", "total", "svg", "once per mesh"})
         EXPECT_NE(r.out.find(stage), std::string::npos) << r.out;
 }
 
@@ -175,7 +175,12 @@ TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
              "builtin:sphere --lines scribble", "builtin:sphere --lines contour,contour", "builtin:sphere --lines ,",
              "builtin:sphere --size 0x5", "builtin:sphere --size big", "builtin:nothing", dir.file("missing.obj"),
              "builtin:sphere --set contour.wobble=1", "builtin:sphere --set contour.width=-1",
-             "builtin:sphere --lines contour --set crease.angle=30", "builtin:sphere --eye 1,2"}) {
+             "builtin:sphere --lines contour --set crease.angle=30", "builtin:sphere --eye 1,2",
+             // Stroke parameters: a dash pattern under 1 px, a too short max-length, bad choices
+             // and lists.
+             "builtin:sphere --set contour.dash=0.2,0.3", "builtin:sphere --set contour.max-length=0.5",
+             "builtin:sphere --set contour.cap=pointy", "builtin:sphere --set contour.depth-width=1,2,3",
+             "builtin:sphere --set contour.sketch-passes=0", "builtin:sphere --set contour.dash=-4"}) {
         auto r = run_cli("lines " + args + " -o " + out);
         EXPECT_EQ(r.status, 2) << args << ": " << r.err;
         EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
@@ -191,6 +196,30 @@ TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
     EXPECT_FALSE(std::filesystem::exists(out)) << "no output after a failure";
     for (const auto& e : std::filesystem::directory_iterator(dir.path()))
         EXPECT_EQ(e.path().filename().string().find("x.svg"), std::string::npos) << e.path();
+}
+
+// Paths are fitted cubic Béziers by default (a sphere's outline: a few C commands) and the
+// polylines' points with --svg-polylines (L only), which an image output refuses.
+TEST(LinesCommand, SvgPathsAreBeziersUnlessPolylinesAreAskedFor) {
+    TempDir dir;
+    auto r = run_cli("lines builtin:sphere --lines contour --size 200x200 -o " + dir.file("b.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("lines builtin:sphere --lines contour --size 200x200 --svg-polylines -o " + dir.file("p.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string bezier = slurp(dir.file("b.svg")), poly = slurp(dir.file("p.svg"));
+    auto path_data = [](const std::string& svg) {
+        const size_t at = svg.find("<path d=\"");
+        return at == std::string::npos ? std::string() : svg.substr(at + 9, svg.find('"', at + 9) - at - 9);
+    };
+    EXPECT_NE(path_data(bezier).find('C'), std::string::npos) << path_data(bezier);
+    EXPECT_EQ(path_data(poly).find('C'), std::string::npos);
+    EXPECT_NE(path_data(poly).find('L'), std::string::npos);
+    EXPECT_LT(bezier.size() * 2, poly.size());
+    r = run_cli("lines builtin:sphere --svg-polylines -o " + dir.file("x.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("--svg-polylines"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
 }
 
 // `lines -o x.png` is the stroke pass of `render` alone: over a white background its pixels are

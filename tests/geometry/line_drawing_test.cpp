@@ -111,6 +111,38 @@ TEST(LineDrawing, MinLengthDropsShortPolylines) {
     EXPECT_EQ(count(float(circumference) + 5.0f), 0u);
 }
 
+// The layer's stroke parameters finish the drawing: the sphere's outline (a circle of known
+// length) dashed 20 on, 10 off, and with depth widths every point of a circle seen head-on at
+// the sphere's middle depth gets the middle factor.
+TEST(LineDrawing, StrokeParametersFinishTheLayer) {
+    const Mesh sphere = builtin::sphere();
+    LineExtractor extractor(sphere);
+    const Camera camera = looking_at_origin({0.0f, 0.0f, 4.0f}, true);
+    const double circumference = 2.0 * M_PI * outline_radius_px(camera, 1.0);
+    const LineDrawing dashed = extractor.draw(camera, kWidth, kHeight, {{"contour", {{"dash", {20.0f, 10.0f}}}}});
+    const std::vector<LinePath>& dashes = dashed.layers[0].visible;
+    ASSERT_EQ(dashes.size(), size_t(std::ceil(circumference / 30.0)));
+    double on = 0.0;
+    for (const LinePath& d : dashes) {
+        double len = 0.0;
+        for (size_t i = 1; i < d.points.size(); ++i) len += glm::length(glm::dvec2(d.points[i] - d.points[i - 1]));
+        EXPECT_LE(len, 20.0 + 1e-3);
+        EXPECT_FALSE(d.closed);
+        on += len;
+    }
+    EXPECT_NEAR(on, circumference * 2.0 / 3.0, 20.0);
+    // Orthographic, looking down -z at a unit sphere: its outline lies at the centre's depth,
+    // half way between the nearest and farthest point, so width 2 × mix(3, 1, 0.5) = 4.
+    const LineDrawing wide =
+        extractor.draw(camera, kWidth, kHeight, {{"contour", {{"width", {2.0f}}, {"depth-width", {3.0f, 1.0f}}}}});
+    ASSERT_EQ(wide.layers[0].visible.size(), 1u);
+    const LinePath& outline = wide.layers[0].visible[0];
+    ASSERT_EQ(outline.width.size(), outline.points.size());
+    for (float w : outline.width) EXPECT_NEAR(w, 4.0f, 0.02f);
+    EXPECT_TRUE(outline.color.empty());
+    EXPECT_THROW(extractor.draw(camera, kWidth, kHeight, {{"contour", {{"dash", {0.5f}}}}}), InputError);
+}
+
 TEST(LineDrawing, RepeatedDrawsAreIdenticalAndReportTimings) {
     const Mesh torus = builtin::torus();
     LineExtractor extractor(torus);

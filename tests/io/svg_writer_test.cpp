@@ -10,9 +10,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geometry/stroke_paths.hpp"
+#include "geometry/stroke_style.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/image.hpp"
 #include "inkshade/line_drawing.hpp"
+#include "io/svg_path_data.hpp"
 #include "support/temp_dir.hpp"
 
 namespace inkshade {
@@ -80,6 +83,24 @@ LinePath path(std::vector<glm::vec2> points, bool closed, std::vector<float> str
     p.depth.assign(p.points.size(), 0.5f);
     p.strength = strength.empty() ? std::vector<float>(p.points.size(), 1.0f) : std::move(strength);
     return p;
+}
+
+// Half the thickness of a horizontal stroke along y = `y` at x, from its outline's path data:
+// the largest |y' - y| where the outline crosses the vertical line at x (its pieces sampled
+// finely, linear between samples).
+double half_width_at(const std::string& outline, double y, double x) {
+    double h = 0.0;
+    for (const test::SvgSubpath& sub : test::parse_path_data(outline))
+        for (const io::CubicBezier& b : sub.pieces) {
+            glm::dvec2 prev = b.p0;
+            for (int k = 1; k <= 256; ++k) {
+                const glm::dvec2 q = b.at(k / 256.0);
+                if ((prev.x - x) * (q.x - x) <= 0.0 && prev.x != q.x)
+                    h = std::max(h, std::abs(glm::mix(prev.y, q.y, (x - prev.x) / (q.x - prev.x)) - y));
+                prev = q;
+            }
+        }
+    return h;
 }
 
 LineDrawing sample_drawing() {
@@ -170,11 +191,17 @@ TEST(SvgWriter, StrengthRunsScaleOpacityOrWidth) {
     EXPECT_FALSE(suggestive[3].attributes.count("stroke-opacity"));   // full strength: the layer's
     // Runs share end points: no gap.
     EXPECT_EQ(suggestive[1].attributes.at("d"), "M10 0 L20 0");
-    // Taper: width instead of opacity.
-    ASSERT_EQ(crease.size(), 2u);
-    EXPECT_EQ(crease[0].attributes.at("stroke-width"), "1.5");  // 2 × 6/8 (segment mean 0.75)
-    EXPECT_EQ(crease[1].attributes.at("stroke-width"), "1");    // 2 × 4/8
-    EXPECT_FALSE(crease[0].attributes.count("stroke-opacity"));
+    // Taper: the strength sets the width (1, 0.5, 0.5 of 2 px), so the crease is a filled
+    // outline, not a stroke: half-widths 1 at x = 0 and 0.5 from x = 50 on.
+    ASSERT_EQ(crease.size(), 1u);
+    EXPECT_EQ(crease[0].attributes.at("stroke"), "none");
+    EXPECT_EQ(crease[0].attributes.at("fill"), "#000000");
+    EXPECT_FALSE(crease[0].attributes.count("stroke-width"));
+    const std::string outline = crease[0].attributes.at("d");
+    EXPECT_NEAR(half_width_at(outline, 50.0, 0.0), 1.0, 0.02);
+    EXPECT_NEAR(half_width_at(outline, 50.0, 25.0), 0.75, 0.02);
+    EXPECT_NEAR(half_width_at(outline, 50.0, 75.0), 0.5, 0.02);
+    EXPECT_NEAR(half_width_at(outline, 50.0, 100.0), 0.5, 0.02);
 }
 
 TEST(SvgWriter, RsvgConvertRasterisesIt) {
@@ -207,6 +234,132 @@ TEST(SvgWriter, RsvgConvertRasterisesIt) {
 TEST(SvgWriter, WriteFailsCleanlyInMissingDirectory) {
     test::TempDir dir;
     EXPECT_THROW(write_svg(dir.file("no/such/dir/x.svg"), sample_drawing(), glm::vec4(1.0f)), RuntimeError);
+}
+
+// The paths of layer `id` in document order.
+std::vector<Element> layer_paths(const std::vector<Element>& elements, const std::string& id) {
+    std::vector<Element> out;
+    std::string layer;
+    for (const Element& e : elements) {
+        if (e.name == "g") layer = e.attributes.at("id");
+        if (e.name == "path" && layer == id) out.push_back(e);
+    }
+    return out;
+}
+
+// One layer of `type` with `params`, its paths finished by the layer's stroke modifiers.
+LineDrawing styled_drawing(const std::string& type, ParamValues params, std::vector<LinePath> paths, int width = 260,
+                           int height = 120) {
+    LineDrawing d;
+    d.width = width;
+    d.height = height;
+    LineLayer layer;
+    layer.settings = {type, std::move(params)};
+    layer.visible = geometry::style_strokes(std::move(paths), geometry::StrokeModifiers::of(layer.settings), {}, 0);
+    d.layers.push_back(layer);
+    return d;
+}
+
+TEST(SvgWriter, TaperedStrokeIsAFilledOutlineWithZeroEndsAndFullMiddle) {
+    // 200 px along y = 50, width 4, tapering in over 50 px and out over 50 px.
+    const LineDrawing d = styled_drawing("contour", {{"width", {4.0f}}, {"taper-in", {50.0f}}, {"taper-out", {50.0f}}},
+                                         {test::straight_path({30, 50}, {230, 50})});
+    const std::string svg = format_svg(d, glm::vec4(1.0f));
+    const std::vector<Element> paths = layer_paths(parse_xml(svg), "contour");
+    ASSERT_EQ(paths.size(), 1u);
+    EXPECT_EQ(paths[0].attributes.at("stroke"), "none");
+    const std::string outline = paths[0].attributes.at("d");
+    const double expected[][2] = {{30, 0}, {42.5, 0.5}, {55, 1}, {80, 2}, {130, 2}, {180, 2}, {205, 1}, {230, 0}};
+    for (const auto& [x, h] : expected) EXPECT_NEAR(half_width_at(outline, 50.0, x), h, 0.25) << "x = " << x;
+    // Nothing of the outline strays from the stroke.
+    for (glm::dvec2 q : test::sample_path_data(outline)) {
+        EXPECT_GE(q.x, 30.0 - 0.25);
+        EXPECT_LE(q.x, 230.0 + 0.25);
+        EXPECT_LE(std::abs(q.y - 50.0), 2.0 + 0.25);
+    }
+
+    // rsvg-convert fills it: dark in the middle, nothing left of the start.
+    test::TempDir dir;
+    write_svg(dir.file("t.svg"), d, glm::vec4(1.0f));
+    ASSERT_EQ(std::system(("rsvg-convert " + dir.file("t.svg") + " -o " + dir.file("t.png")).c_str()), 0);
+    const Image img = read_png(dir.file("t.png"));
+    EXPECT_LT(int(img.pixel(130, 49)[0]), 40);
+    EXPECT_LT(int(img.pixel(130, 50)[0]), 40);
+    EXPECT_GT(int(img.pixel(130, 52)[0]), 215) << "2 px from the centre line: outside";
+    EXPECT_EQ(int(img.pixel(25, 49)[0]), 255);
+}
+
+TEST(SvgWriter, ConstantWidthLayersStayStrokedWithTheirCapsAndJoins) {
+    const LineDrawing d = styled_drawing("crease", {{"width", {3.0f}}, {"cap", {0.0f}}, {"join", {2.0f}}},
+                                         {test::square_path({20, 20}, 60), test::straight_path({10, 100}, {200, 100})});
+    const std::vector<Element> elements = parse_xml(format_svg(d, glm::vec4(1.0f)));
+    for (const Element& e : elements)
+        if (e.name == "g") {
+            EXPECT_EQ(e.attributes.at("stroke-linecap"), "butt");
+            EXPECT_EQ(e.attributes.at("stroke-linejoin"), "bevel");
+            EXPECT_EQ(e.attributes.at("stroke-width"), "3");
+        }
+    const std::vector<Element> paths = layer_paths(elements, "crease");
+    ASSERT_EQ(paths.size(), 2u);
+    for (const Element& p : paths) {
+        EXPECT_FALSE(p.attributes.count("fill")) << "a stroke, not an outline";
+        EXPECT_FALSE(p.attributes.count("stroke-width")) << "the layer's width";
+    }
+    // Straight sides stay straight lines with exact corners.
+    EXPECT_EQ(paths[0].attributes.at("d"), "M20 20 L80 20 80 80 20 80 Z");
+    EXPECT_EQ(paths[1].attributes.at("d"), "M10 100 L200 100");
+}
+
+TEST(SvgWriter, BezierPathsStayWithinAQuarterPixelInAFractionOfTheText) {
+    LineDrawing d;
+    d.width = d.height = 400;
+    LineLayer layer;
+    layer.settings = {"contour", {}};
+    const int n = 1257;  // a point every 0.25 rad · px on a circle of radius 150 (about 0.75 px)
+    layer.visible.push_back(test::circle_path({200, 200}, 150, n));
+    d.layers.push_back(layer);
+    const std::string bezier = format_svg(d, glm::vec4(1.0f));
+    const std::string polyline = format_svg(d, glm::vec4(1.0f), {.polylines = true});
+    const std::vector<Element> paths = layer_paths(parse_xml(bezier), "contour");
+    ASSERT_EQ(paths.size(), 1u);
+    const std::string data = paths[0].attributes.at("d");
+    EXPECT_NE(data.find('C'), std::string::npos);
+    EXPECT_EQ(data.back(), 'Z');
+    const std::vector<test::SvgSubpath> sub = test::parse_path_data(data);
+    ASSERT_EQ(sub.size(), 1u);
+    EXPECT_TRUE(sub[0].closed);
+    double worst = 0.0;
+    for (glm::dvec2 q : test::sample_path_data(data, 64))
+        worst = std::max(worst, std::abs(glm::length(q - glm::dvec2(200.0)) - 150.0));
+    EXPECT_LE(worst, 0.25);
+    const std::vector<Element> poly = layer_paths(parse_xml(polyline), "contour");
+    EXPECT_EQ(poly[0].attributes.at("d").find('C'), std::string::npos);
+    EXPECT_LT(bezier.size() * 10, polyline.size()) << bezier.size() << " vs " << polyline.size() << " bytes";
+}
+
+TEST(SvgWriter, ColourAlongTheStrokeWritesRunsFromColourToEnd) {
+    const LineDrawing d = styled_drawing(
+        "contour", {{"color", {1.0f, 0.0f, 0.0f}}, {"color-end", {0.0f, 0.0f, 1.0f}}, {"color-along", {2.0f}}},
+        {test::straight_path({10, 50}, {250, 50})});
+    const std::vector<Element> paths = layer_paths(parse_xml(format_svg(d, glm::vec4(1.0f))), "contour");
+    ASSERT_GT(paths.size(), 20u) << "runs of one 8-bit colour each";
+    // Each run's colour (the layer's when it has none), red at the start to blue at the end.
+    auto rgb = [](const Element& e) {
+        const std::string hex = e.attributes.count("stroke") ? e.attributes.at("stroke") : "#ff0000";
+        return glm::ivec3(std::stoi(hex.substr(1, 2), nullptr, 16), std::stoi(hex.substr(3, 2), nullptr, 16),
+                          std::stoi(hex.substr(5, 2), nullptr, 16));
+    };
+    EXPECT_GE(rgb(paths.front()).r, 254);
+    EXPECT_LE(rgb(paths.front()).b, 1);
+    EXPECT_LE(rgb(paths.back()).r, 1);
+    EXPECT_GE(rgb(paths.back()).b, 254);
+    EXPECT_NEAR(rgb(paths[paths.size() / 2]).r, 128, 3);
+    // Runs follow each other without gaps.
+    for (size_t k = 1; k < paths.size(); ++k) {
+        const auto a = test::parse_path_data(paths[k - 1].attributes.at("d"));
+        const auto b = test::parse_path_data(paths[k].attributes.at("d"));
+        EXPECT_EQ(a.back().pieces.back().p3, b.front().pieces.front().p0);
+    }
 }
 
 TEST(LinesJson, RoundTripsLayersAndPaths) {

@@ -1,7 +1,8 @@
 // StrokePass: anti-aliased capsule strokes of polylines in image pixels. Pixels whose centres
 // lie well inside the stroke are fully covered, well outside untouched, on the border about
 // half covered; the join of an L has no gap and, at half opacity, is not blended twice; the
-// taper narrows the stroke; strokes behind the depth buffer are hidden.
+// taper narrows the stroke; strokes behind the depth buffer are hidden; per-point widths and
+// colours (the layer's stroke modifiers) and butt and square caps.
 #include <cmath>
 
 #include "gpu/framebuffer.hpp"
@@ -110,6 +111,53 @@ TEST(StrokePass, DepthTestHidesStrokesBehindTheSurface) {
     EXPECT_LE(int(draw({p}, style, 4, 0.7f).pixel(32, 32)[0]), 5);    // in front: drawn
     // Lying on the surface (equal depth): the bias keeps it visible.
     EXPECT_LE(int(draw({p}, style, 4, 0.6f).pixel(32, 32)[0]), 5);
+}
+
+TEST(StrokePass, PerPointWidthsAndColours) {
+    LinePath p = path({{8, 32}, {56, 32}});
+    p.width = {12.0f, 2.0f};  // radius 6 → 1
+    p.color = {glm::vec3(1, 0, 0), glm::vec3(0, 0, 1)};
+    render::StrokeStyle style;
+    style.width = 40.0f;  // the path's own widths win
+    const Image img = draw({p}, style);
+    // At x = 12.5 the radius is 6 - 5 × 4.5 / 48 = 5.53: row 27 (centre 27.5, 4.5 away) covered.
+    EXPECT_LE(int(img.pixel(12, 27)[1]), 5);
+    EXPECT_GE(int(img.pixel(12, 25)[1]), 250);
+    EXPECT_GE(int(img.pixel(52, 28)[1]), 250) << "near the thin end";
+    // Red at the start, blue at the end, a blend between.
+    const uint8_t* a = img.pixel(10, 32);
+    EXPECT_GE(int(a[0]), 240);
+    EXPECT_LE(int(a[2]), 20);
+    const uint8_t* b = img.pixel(54, 32);
+    EXPECT_LE(int(b[0]), 20);
+    EXPECT_GE(int(b[2]), 240);
+    const uint8_t* m = img.pixel(32, 32);  // half way: equal parts (whatever the encoding)
+    EXPECT_NEAR(int(m[0]), int(m[2]), 8);
+    EXPECT_GT(int(m[0]), 60);
+    EXPECT_LT(int(m[0]), 200);
+}
+
+TEST(StrokePass, ButtAndSquareCapsEndTheStrokeFlat) {
+    const LinePath p = path({{20, 32}, {44, 32}});
+    render::StrokeStyle style;
+    style.width = 10.0f;
+    // Round: the cap reaches 5 px past each end; butt: nothing past the ends; square: a full
+    // 5 px past them, corners included.
+    const Image round = draw({p}, style);
+    style.cap = geometry::StrokeCap::Butt;
+    const Image butt = draw({p}, style);
+    style.cap = geometry::StrokeCap::Square;
+    const Image square = draw({p}, style);
+    EXPECT_LE(int(round.pixel(17, 32)[0]), 5);
+    EXPECT_GE(int(round.pixel(15, 27)[0]), 250) << "the round cap's corner is empty";
+    EXPECT_GE(int(butt.pixel(19, 32)[0]), 250);
+    EXPECT_GE(int(butt.pixel(44, 32)[0]), 250);
+    EXPECT_LE(int(butt.pixel(20, 32)[0]), 5);
+    EXPECT_LE(int(butt.pixel(43, 28)[0]), 5);
+    EXPECT_LE(int(square.pixel(15, 27)[0]), 5) << "the square cap's corner is full";
+    EXPECT_LE(int(square.pixel(47, 35)[0]), 5);
+    EXPECT_GE(int(square.pixel(14, 32)[0]), 250);
+    EXPECT_GE(int(square.pixel(49, 32)[0]), 250);
 }
 
 }  // namespace

@@ -55,8 +55,7 @@ const ObjectLineRegistration registration{
           float_param("thin", 0.25f, 0.0f, 1.0f,
                       "level k > 0 fades out where n·v < thin·2^(k−1), so strokes do not crowd towards the "
                       "outline; 0 = never"),
-          int_param("smoothing", 8, 0, 100, "smoothing iterations of the principal-direction field"),
-          int_param("seed", 1, 0, 1000000, "order in which free seeds are tried (a different seed, other strokes)")},
+          int_param("smoothing", 8, 0, 100, "smoothing iterations of the principal-direction field")},
          0.0f)},
     extract,
     {.adjacency = true, .curvature = true}};

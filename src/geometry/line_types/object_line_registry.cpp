@@ -50,6 +50,57 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
     params.push_back(bool_param("taper", false,
                                 "line strength (fading, e.g. suggestive contours near their trim point) scales "
                                 "the stroke width instead of its opacity"));
+    // Stylised strokes (docs/lines.md): thickness along a stroke, colour, caps and joins,
+    // chain splitting, sketchy passes and dashes; every default leaves the stroke as it was.
+    params.push_back(
+        float_param("taper-in", 0.0f, 0.0f, 100000.0f,
+                    "the width grows from 0 at a stroke's start to full over this many pixels (Freestyle's "
+                    "TaperShader); 0 = none"));
+    params.push_back(float_param("taper-out", 0.0f, 0.0f, 100000.0f,
+                                 "the width falls to 0 over this many pixels before a stroke's end; 0 = none"));
+    params.push_back(list_param("depth-width", {1.0f, 1.0f}, 2, 0.0f, 16.0f,
+                                "width factors at the model's nearest and farthest depth, linear between "
+                                "(Blender's thickness modifier Distance from Camera)"));
+    params.push_back(list_param("curvature-width", {1.0f, 1.0f}, 2, 0.0f, 16.0f,
+                                "width factors at zero image curvature and at 1/curvature-radius and above, "
+                                "linear between (Blender's Curvature 3D, measured in the image)"));
+    params.push_back(float_param("curvature-radius", 10.0f, 0.1f, 100000.0f,
+                                 "the radius (pixels) from which a bend takes the second curvature-width factor"));
+    params.push_back(float_param("level-width", 1.0f, 0.0f, 16.0f,
+                                 "width factor per occlusion level: width × level-width ^ level (thinner hidden "
+                                 "lines)"));
+    params.push_back(float_param("calligraphy", 0.0f, 0.0f, 1.0f,
+                                 "strokes across the nib are this much thinner: factor 1 − calligraphy × (1 − |cos "
+                                 "angle to the nib|) (Freestyle's CalligraphicShader)"));
+    params.push_back(float_param("nib-angle", 90.0f, -180.0f, 180.0f,
+                                 "the nib's direction in degrees from the image's +x, counter-clockwise: strokes "
+                                 "along it are the thickest"));
+    params.push_back(float_param("noise", 0.0f, 0.0f, 1.0f,
+                                 "relative width noise along the stroke: width × (1 + noise × n), n smooth seeded "
+                                 "value noise in [−1, 1] (Freestyle's ThicknessNoiseShader)"));
+    params.push_back(float_param("noise-period", 50.0f, 1.0f, 100000.0f,
+                                 "wavelength in pixels of the width noise and the sketch jitter along a stroke"));
+    params.push_back(int_param("seed", 0, 0, 1000000, "seed of the width noise and the sketch jitter (and of hatch strokes' layout)"));
+    params.push_back(choice_param("color-along", {"none", "depth", "length"}, 0,
+                                  "blend the colour towards color-end by depth (near → far over the model) or "
+                                  "along the stroke (start → end)"));
+    params.push_back(color_param("color-end", glm::vec3(0.0f), "the far (or end) colour of color-along"));
+    params.push_back(choice_param("cap", {"butt", "round", "square"}, 1, "the shape of a stroke's ends"));
+    params.push_back(choice_param("join", {"miter", "round", "bevel"}, 1,
+                                  "the shape of a stroke's corners (SVG; GPU strokes join round)"));
+    params.push_back(list_param("dash", {0.0f}, 8, 0.0f, 100000.0f,
+                                "dash pattern: on, off, ... lengths in pixels along each stroke (an odd list "
+                                "repeats, as SVG's stroke-dasharray); 0 = solid"));
+    params.push_back(float_param("split-angle", 0.0f, 0.0f, 180.0f,
+                                 "a stroke ends where its direction turns by more than this many degrees; 0 = "
+                                 "never"));
+    params.push_back(float_param("max-length", 0.0f, 0.0f, 1000000.0f,
+                                 "longer strokes are cut into equal pieces of at most this many pixels; 0 = never"));
+    params.push_back(bool_param("split-cusps", false, "a stroke ends at a cusp, where its image direction reverses"));
+    params.push_back(
+        int_param("sketch-passes", 1, 1, 8, "draw each stroke this many times, each pass displaced by sketch-jitter"));
+    params.push_back(float_param("sketch-jitter", 0.0f, 0.0f, 100.0f,
+                                 "the largest displacement in pixels of a sketch pass's points (smooth seeded noise)"));
     params.push_back(int_param("min-level", 0, 0, kMaxOcclusionLevel,
                                "lowest occlusion level drawn: how many surfaces lie in front of a line (0 = "
                                "visible; quantitative invisibility, Appel 1967)"));

@@ -25,7 +25,7 @@ static const ShadingModelRegistration hatching_model{{
             float_param("fade", 0.05f, 0.0f, 1.0f, "strokes fade in over this much tone below their threshold"),
             float_param("thin", 0.25f, 0.0f, 1.0f, "level k > 0 fades out where n.v < thin*2^(k-1)"),
             int_param("smoothing", 8, 0, 100, "smoothing iterations of the principal-direction field"),
-            int_param("seed", 1, 0, 1000000, "order in which free seeds are tried"),
+            int_param("seed", 0, 0, 1000000, "order in which free seeds are tried (and the strokes' noise and jitter)"),
         },
 }};
 }  // namespace inkshade

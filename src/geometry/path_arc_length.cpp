@@ -1,0 +1,81 @@
+#include "geometry/path_arc_length.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace inkshade::geometry {
+
+namespace {
+
+// Appends to `out` the attributes of `p` at point i, or between i and i + 1 at fraction f.
+void append_point(LinePath& out, const LinePath& p, size_t i, float f) {
+    const size_t j = std::min(i + 1, p.points.size() - 1);
+    auto mix = [&](const auto& v) { return f == 0.0f ? v[i] : v[i] + (v[j] - v[i]) * f; };
+    out.points.push_back(mix(p.points));
+    if (!p.depth.empty()) out.depth.push_back(mix(p.depth));
+    if (!p.strength.empty()) out.strength.push_back(mix(p.strength));
+    if (!p.width.empty()) out.width.push_back(mix(p.width));
+    if (!p.color.empty()) out.color.push_back(mix(p.color));
+}
+
+// The segment index i and fraction f where arc length t falls (s ascending, t clamped).
+std::pair<size_t, float> locate(const std::vector<double>& s, double t) {
+    const size_t n = s.size();
+    if (t <= s.front()) return {0, 0.0f};
+    if (t >= s.back()) return {n - 1, 0.0f};
+    const size_t i = size_t(std::upper_bound(s.begin(), s.end(), t) - s.begin()) - 1;
+    const double len = s[i + 1] - s[i];
+    return {i, len > 0.0 ? float((t - s[i]) / len) : 0.0f};
+}
+
+}  // namespace
+
+std::vector<double> arc_lengths(const LinePath& path) {
+    const size_t n = path.points.size();
+    std::vector<double> s(n + (path.closed && n > 1 ? 1 : 0), 0.0);
+    for (size_t i = 1; i < s.size(); ++i)
+        s[i] = s[i - 1] + double(glm::length(path.points[i % n] - path.points[i - 1]));
+    return s;
+}
+
+LinePath opened(const LinePath& path) {
+    if (!path.closed || path.points.size() < 2) return path;
+    LinePath out = path;
+    out.closed = false;
+    append_point(out, path, 0, 0.0f);
+    return out;
+}
+
+LinePath rotated(const LinePath& path, size_t k) {
+    LinePath out = path;
+    auto turn = [&](auto& v) {
+        if (!v.empty()) std::rotate(v.begin(), v.begin() + long(k % v.size()), v.end());
+    };
+    turn(out.points);
+    turn(out.depth);
+    turn(out.strength);
+    turn(out.width);
+    turn(out.color);
+    return out;
+}
+
+LinePath sub_path(const LinePath& open, const std::vector<double>& s, double s0, double s1) {
+    LinePath out;
+    out.level = open.level;
+    if (open.points.empty()) return out;
+    const auto [i0, f0] = locate(s, s0);
+    const auto [i1, f1] = locate(s, s1);
+    append_point(out, open, i0, f0);
+    for (size_t i = i0 + 1; i <= i1; ++i)
+        if (!(i == i1 && f1 == 0.0f)) append_point(out, open, i, 0.0f);
+    append_point(out, open, i1, f1);
+    return out;
+}
+
+bool attributes_consistent(const LinePath& path) {
+    const size_t n = path.points.size();
+    auto ok = [n](size_t m) { return m == 0 || m == n; };
+    return ok(path.depth.size()) && ok(path.strength.size()) && ok(path.width.size()) && ok(path.color.size());
+}
+
+}  // namespace inkshade::geometry
