@@ -23,11 +23,65 @@ namespace {
 
 // The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
 // with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
-const std::vector<std::string> kSceneKeywords = {
-    "size",        "azimuth", "elevation",    "distance", "eye",       "target",    "up",           "up_axis",
-    "fov",         "ortho",   "ortho_height", "near",     "far",       "light_pos", "light_target", "light_type",
-    "light_color", "ambient", "base_color",   "srgb",     "bit_depth", "margin",    "camera",       "lights",
-    "light_intensity", "light_decay", "light_distance"};
+const std::vector<std::string> kSceneKeywords = {"size",
+                                                 "azimuth",
+                                                 "elevation",
+                                                 "distance",
+                                                 "eye",
+                                                 "target",
+                                                 "up",
+                                                 "up_axis",
+                                                 "fov",
+                                                 "ortho",
+                                                 "ortho_height",
+                                                 "near",
+                                                 "far",
+                                                 "light_pos",
+                                                 "light_target",
+                                                 "light_type",
+                                                 "light_color",
+                                                 "ambient",
+                                                 "base_color",
+                                                 "srgb",
+                                                 "bit_depth",
+                                                 "margin",
+                                                 "camera",
+                                                 "lights",
+                                                 "light_intensity",
+                                                 "light_decay",
+                                                 "light_distance",
+                                                 "time",
+                                                 "animation",
+                                                 "morph",
+                                                 "expression"};
+
+// morph= and expression=: {name: weight}, or a list of "NAME=W" strings as the CLI takes them.
+std::vector<NamedWeight> to_named_weights(const std::string& key, const py::handle& value) {
+    std::vector<NamedWeight> out;
+    if (py::isinstance<py::dict>(value)) {
+        for (const auto& [name, weight] : value.cast<py::dict>())
+            out.push_back({py::str(name).cast<std::string>(), weight.cast<float>()});
+    } else if (py::isinstance<py::str>(value)) {
+        out = parse_named_weights(key, value.cast<std::string>());
+    } else {
+        for (const std::string& item : value.cast<std::vector<std::string>>())
+            out.push_back(parse_named_weight(key, item));
+    }
+    return out;
+}
+
+// A mesh with where it came from, so that a Renderer can load it again in another pose
+// (render(animation=..., time=...)).
+struct PyMesh : Mesh {
+    std::string path;
+    LoadOptions load;
+};
+
+// Whether two poses give the same mesh: the time matters only to an animation.
+bool same_pose(const Pose& a, const Pose& b) {
+    return a.animation == b.animation && a.expressions == b.expressions && a.morphs == b.morphs &&
+           (a.animation.empty() || a.time == b.time);
+}
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
 // sequence of 3 (or, for 4-component colours, 4) numbers.
@@ -121,6 +175,15 @@ SceneRequest request_of(const std::string& style, const std::vector<std::string>
             r.lights = parse_light_source(key, value.cast<std::string>());
         else if (key == "bit_depth")
             r.bit_depth = value.cast<int>();
+        else if (key == "time")
+            r.time = value.cast<float>();
+        else if (key == "animation")
+            r.animation =
+                py::isinstance<py::int_>(value) ? std::to_string(value.cast<long long>()) : value.cast<std::string>();
+        else if (key == "morph")
+            r.morphs = to_named_weights(key, value);
+        else if (key == "expression")
+            r.expressions = to_named_weights(key, value);
     }
     // Without a size, the image takes a file camera's aspect (as the CLI without --size).
     r.size_from_camera = !kwargs.contains("size") || kwargs["size"].is_none();
@@ -189,10 +252,31 @@ py::list to_python(const LineDrawing& drawing) {
 // One renderer (one OpenGL context) and the line extractor of the current mesh.
 class PyRenderer {
 public:
-    void set_mesh(const Mesh& mesh) {
+    void set_mesh(const PyMesh& mesh) {
         mesh_ = mesh;
         renderer_.set_mesh(mesh_);
         extractor_ = std::make_unique<LineExtractor>(mesh_);
+    }
+    // The request's scene, with the pose of the mesh where the request gives none; a mesh loaded
+    // in another pose is loaded again in this one (and keeps it).
+    Scene posed(SceneRequest request) {
+        const Pose& loaded = mesh_.load.pose;
+        if (request.animation.empty()) request.animation = loaded.animation;
+        if (!request.time && !loaded.animation.empty()) request.time = loaded.time;
+        if (request.expressions.empty()) request.expressions = loaded.expressions;
+        if (request.morphs.empty()) request.morphs = loaded.morphs;
+        Scene scene = make_scene(request);
+        const Pose pose = scene.load_options().pose;
+        if (extractor_ && !same_pose(pose, loaded)) {
+            if (mesh_.path.empty()) throw InputError("this mesh cannot be posed: load it with load_mesh(path)");
+            PyMesh again;
+            again.load = mesh_.load;
+            again.load.pose = pose;
+            again.path = mesh_.path;
+            static_cast<Mesh&>(again) = load_mesh(again.path, again.load);
+            set_mesh(again);
+        }
+        return scene;
     }
     py::object render(Scene scene) {
         need_mesh();
@@ -227,19 +311,19 @@ private:
         if (!extractor_) throw InputError("no mesh: call set_mesh(load_mesh(path)) first");
     }
     Renderer renderer_;
-    Mesh mesh_;
+    PyMesh mesh_;
     std::unique_ptr<LineExtractor> extractor_;
 };
 
 // The scene of lines() and svg(): the object-space types given, else the style's.
-Scene line_scene(std::optional<std::vector<std::string>> types, const std::string& style,
+Scene line_scene(PyRenderer& renderer, std::optional<std::vector<std::string>> types, const std::string& style,
                  const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
                  const py::kwargs& kwargs) {
     SceneRequest r = request_of(style, set, kwargs, {.image = false, .line_drawing = true});
     r.vector_lines = std::move(types);
     r.hidden = hidden;
     if (levels) r.occlusion_levels = parse_occlusion_levels(*levels);
-    return make_scene(r);
+    return renderer.posed(r);
 }
 
 }  // namespace
@@ -256,12 +340,12 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         }
     });
 
-    py::class_<Mesh>(m, "Mesh")
+    py::class_<PyMesh>(m, "Mesh")
         .def_property_readonly("vertex_count", &Mesh::vertex_count)
         .def_property_readonly("triangle_count", &Mesh::triangle_count)
         .def_property_readonly(
             "bounds",
-            [](const Mesh& mesh) {
+            [](const PyMesh& mesh) {
         const BoundingBox b = mesh.bounds();
         return std::make_pair(std::array<float, 3>{b.min.x, b.min.y, b.min.z},
                               std::array<float, 3>{b.max.x, b.max.y, b.max.z});
@@ -269,7 +353,7 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         .def_readonly("warnings", &Mesh::warnings)
         .def_property_readonly(
             "cameras",
-            [](const Mesh& mesh) {
+            [](const PyMesh& mesh) {
         std::vector<std::string> names;
         for (const FileCamera& c : mesh.cameras) names.push_back(c.name);
         return names;
@@ -277,27 +361,38 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             "The file's camera names, in the order camera=INDEX counts them (glTF cameras).")
         .def_property_readonly(
             "lights",
-            [](const Mesh& mesh) {
+            [](const PyMesh& mesh) {
         std::vector<std::string> names;
         for (const FileLight& l : mesh.lights) names.push_back(l.name);
         return names;
             },
             "The file's light names (glTF KHR_lights_punctual); lights=\"file\" uses the first.")
-        .def("__repr__", [](const Mesh& mesh) {
+        .def("__repr__", [](const PyMesh& mesh) {
             return "<inkshade.Mesh " + std::to_string(mesh.vertex_count()) + " vertices, " +
                    std::to_string(mesh.triangle_count()) + " triangles>";
         });
     m.def(
         "load_mesh",
-        [](const std::string& path, float smooth_angle) {
-        SceneRequest request;  // the angle checked as every front end checks it
-        request.names = OptionNames::Keywords;
+        [](const std::string& path, float smooth_angle, const py::kwargs& kwargs) {
+        for (const auto& item : kwargs) {
+            const std::string key = py::str(item.first);
+            if (key != "time" && key != "animation" && key != "morph" && key != "expression")
+                throw InputError("unknown keyword '" + key +
+                                 "' (expected smooth_angle, time, animation, morph, expression)");
+        }
+        SceneRequest request = request_of("", {}, kwargs, {});  // checked as every front end checks it
         request.smooth_angle = smooth_angle;
-        return load_mesh(path, make_scene(request).load_options());
+        PyMesh mesh;
+        mesh.path = path;
+        mesh.load = make_scene(request).load_options();
+        static_cast<Mesh&>(mesh) = load_mesh(path, mesh.load);
+        return mesh;
         },
         py::arg("path"), py::arg("smooth_angle") = LoadOptions{}.smooth_angle,
         "Loads OBJ/STL/PLY/OFF/glTF/GLB/VRM or builtin:NAME (sphere, torus, torus-knot, teapot). A file "
-        "without normals gets hard edges where faces meet at more than smooth_angle degrees (180: all smooth).");
+        "without normals gets hard edges where faces meet at more than smooth_angle degrees (180: all smooth). "
+        "A glTF/VRM file is posed by animation= (name or index) at time= seconds, expression= and morph= "
+        "({name: weight} or ['NAME=W', ...]), as the CLI's --animation, --time, --expression, --morph.");
     m.def("styles", &builtin_style_names, "Built-in style names (presets and shading models).");
     m.def("line_types", [] {
         std::vector<std::string> names;
@@ -325,8 +420,8 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
            const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
            const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
            int samples, const std::string& lights, float margin, const std::vector<std::string>& aov,
-           std::optional<float> light_intensity, std::optional<std::string> occlusion_levels,
-           std::optional<py::function> progress) {
+           std::optional<float> light_intensity, std::optional<std::string> occlusion_levels, std::optional<float> time,
+           std::optional<std::string> animation, std::optional<py::function> progress) {
         BatchDefaults defaults;
         defaults.views = views;
         defaults.lights = parse_light_source("lights", lights);
@@ -339,7 +434,10 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         shared.samples = samples;
         shared.camera.margin = margin;
         shared.light_intensity = light_intensity;
+        shared.time = time;
         make_scene(shared);
+        defaults.time = time;
+        if (animation) defaults.animation = *animation;
         defaults.margin = margin;
         defaults.light_intensity = light_intensity;
         if (occlusion_levels) defaults.occlusion_levels = parse_occlusion_levels(*occlusion_levels);
@@ -389,9 +487,11 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
         py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("lights") = "style",
         py::arg("margin") = 0.05f, py::arg("aov") = std::vector<std::string>{}, py::arg("light_intensity") = py::none(),
-        py::arg("occlusion_levels") = py::none(), py::arg("progress") = py::none(),
+        py::arg("occlusion_levels") = py::none(), py::arg("time") = py::none(), py::arg("animation") = py::none(),
+        py::arg("progress") = py::none(),
         "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}. "
-        "light_intensity= and occlusion_levels='A-B' are the defaults of the columns of those names.");
+        "light_intensity=, occlusion_levels='A-B', time= and animation= are the defaults of the columns of those "
+        "names.");
 
     py::class_<PyRenderer>(m, "Renderer", "A headless OpenGL 4.5 renderer (EGL) holding one mesh.")
         .def(py::init<>())
@@ -400,14 +500,14 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         .def(
             "render",
             [](PyRenderer& r, const std::string& style, const std::vector<std::string>& set, int samples,
-               const py::object& background, const std::vector<std::string>& lines,
-               const std::vector<std::string>& aov, const py::kwargs& kwargs) {
+               const py::object& background, const std::vector<std::string>& lines, const std::vector<std::string>& aov,
+               const py::kwargs& kwargs) {
         SceneRequest request = request_of(style, set, kwargs, {.image = true, .line_drawing = false});
         request.samples = samples;
         request.added_lines = lines;
         request.aovs = aov;
         if (!background.is_none()) request.background = to_color("background", background, true);
-        return r.render(make_scene(request));
+        return r.render(r.posed(request));
             },
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
@@ -421,7 +521,7 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
                const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
                const py::kwargs& kwargs) {
-        return to_python(r.lines(line_scene(std::move(types), style, set, hidden, levels, kwargs)));
+        return to_python(r.lines(line_scene(r, std::move(types), style, set, hidden, levels, kwargs)));
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
@@ -432,7 +532,7 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
                const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
                const py::kwargs& kwargs) {
-        const Scene scene = line_scene(std::move(types), style, set, hidden, levels, kwargs);
+        const Scene scene = line_scene(r, std::move(types), style, set, hidden, levels, kwargs);
         return format_svg(r.lines(scene), scene.style.background);
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},

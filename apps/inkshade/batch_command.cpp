@@ -36,6 +36,9 @@ struct BatchArgs {
     std::optional<float> smooth_angle;
     std::optional<float> light_intensity;
     std::string occlusion_levels;
+    std::optional<float> time;
+    std::string animation;
+    std::vector<std::string> morphs, expressions;  // NAME=W each
     std::string lights = "style";
     std::string aov;
     float margin = 0.05f;
@@ -107,6 +110,9 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     shared.smooth_angle = a.smooth_angle;
     shared.light_intensity = a.light_intensity;
     shared.camera.margin = a.margin;
+    shared.time = a.time;
+    for (const std::string& m : a.morphs) shared.morphs.push_back(parse_named_weight("--morph", m));
+    for (const std::string& e : a.expressions) shared.expressions.push_back(parse_named_weight("--expression", e));
     make_scene(shared);
     d.width = shared.size.x, d.height = shared.size.y;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
@@ -119,6 +125,10 @@ BatchDefaults defaults_from(const BatchArgs& a) {
     d.margin = a.margin;
     d.aovs = parse_aov_list("--aov", a.aov);
     if (!a.occlusion_levels.empty()) d.occlusion_levels = parse_occlusion_levels(a.occlusion_levels);
+    d.time = a.time;
+    d.animation = a.animation;
+    d.morphs = shared.morphs;
+    d.expressions = shared.expressions;
     return d;
 }
 
@@ -241,6 +251,16 @@ Command add_batch_command(CLI::App& app) {
                     "occlusion levels of each SVG where the manifest gives none, A-B as `lines --occlusion-levels` "
                     "(default 0-0 = visible only; levels above 0 are dashed layers TYPE-hidden-N; the PNG draws "
                     "visible lines)");
+    cmd->add_option("--time", args->time,
+                    "seconds into --animation (glTF/VRM models) where the manifest gives no time (default 0)");
+    cmd->add_option("--animation", args->animation,
+                    "glTF animation (name or index) posing the models where the manifest gives none (default: none)");
+    cmd->add_option("--morph", args->morphs,
+                    "morph target weight NAME=W where the manifest gives no morph column (repeatable)")
+        ->allow_extra_args(false);
+    cmd->add_option("--expression", args->expressions,
+                    "VRM expression NAME=W, W in [0, 1], where the manifest gives no expression column (repeatable)")
+        ->allow_extra_args(false);
     cmd->add_option("--aov", args->aov,
                     "AOVs beside each image where the manifest gives none: depth, normal, id, material, mask, lines, "
                     "camera (docs/aov.md)");

@@ -30,6 +30,18 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--smooth-angle", r.smooth_angle,
                    "auto-smooth for files without normals: shading normals split at edges sharper than this "
                    "many degrees (default: the style's, else 30; 180 = all smooth)");
+    cmd.add_option("--time", r.time,
+                   "seconds: the time --animation is sampled at, clamped to its keyframes (default 0)");
+    cmd.add_option("--animation", r.animation,
+                   "pose a glTF/VRM model by one of its animations (name or index) at --time (default: none, the "
+                   "file's pose)");
+    cmd.add_option("--morph", morphs,
+                   "morph target weight NAME=W of a glTF/VRM model (names from mesh.extras.targetNames; repeatable)")
+        ->allow_extra_args(false);
+    cmd.add_option("--expression", expressions,
+                   "VRM expression NAME=W, W in [0, 1] (happy, angry, sad, relaxed, surprised, aa, blink, ... or "
+                   "the file's custom names; repeatable)")
+        ->allow_extra_args(false);
     cmd.add_option("--fov", c.fov_degrees, "vertical field of view in degrees")->capture_default_str();
     cmd.add_flag("--ortho", c.orthographic, "orthographic projection");
     cmd.add_option("--ortho-height", c.ortho_height,
@@ -93,6 +105,8 @@ SceneRequest SceneOptions::to_request(const CLI::App& cmd, const std::string& sc
     if (!ambient.empty()) r.ambient = glm::vec3(parse_color("--ambient", ambient));
     if (!base_color.empty()) r.base_color = glm::vec3(parse_color("--base-color", base_color));
     if (!background.empty()) r.background = parse_color("--background", background);
+    for (const std::string& m : morphs) r.morphs.push_back(parse_named_weight("--morph", m));
+    for (const std::string& e : expressions) r.expressions.push_back(parse_named_weight("--expression", e));
     if (!scene_file.empty())
         apply_threejs_scene(scene_file, r, [&](const std::string& option) {
             return cmd.count(option == "model" ? "MODEL" : "--" + option) > 0;

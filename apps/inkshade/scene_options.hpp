@@ -19,6 +19,7 @@ struct SceneOptions {
     std::string eye, target, up, up_axis;
     std::string light_pos, light_target, light_type = "directional", light_color, ambient, base_color, background;
     std::string lights = "style";
+    std::vector<std::string> morphs, expressions;  // NAME=W each
 
     // MODEL is a required positional unless model_required is false (`view` opens a default).
     void add_to(CLI::App& cmd, bool model_required = true);

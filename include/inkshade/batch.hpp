@@ -44,6 +44,11 @@ struct BatchJob {
     // SceneRequest::occlusion_levels of STEM.svg (dashed layers TYPE-hidden-N); unset: visible
     // lines only. The image draws visible lines whatever this says.
     std::optional<OcclusionLevels> occlusion_levels;
+    // The model's pose (SceneRequest::time, animation, expressions, morphs): a dataset samples a
+    // glTF animation at a time per job.
+    std::optional<float> time;
+    std::string animation;
+    std::vector<NamedWeight> expressions, morphs;
 };
 
 // What a manifest line (or --models) leaves out.
@@ -57,10 +62,13 @@ struct BatchDefaults {
     std::optional<UpAxis> up_axis;      // the models' up axis (CameraOptions::up_axis); unset: the style's
     std::optional<float> smooth_angle;  // auto-smooth angle (SceneRequest::smooth_angle)
     LightSource lights = LightSource::Style;
-    float margin = 0.05f;  // auto-framing's margin (CameraOptions::margin)
-    std::optional<float> light_intensity;  // SceneRequest::light_intensity
-    AovSet aovs;                           // --aov
+    float margin = 0.05f;                             // auto-framing's margin (CameraOptions::margin)
+    std::optional<float> light_intensity;             // SceneRequest::light_intensity
+    AovSet aovs;                                      // --aov
     std::optional<OcclusionLevels> occlusion_levels;  // --occlusion-levels
+    std::optional<float> time;                        // --time
+    std::string animation;                            // --animation
+    std::vector<NamedWeight> expressions, morphs;     // --expression, --morph
 };
 
 // A view list: items separated by ',' or ';' —
@@ -86,7 +94,8 @@ std::string model_name(const std::string& model);
 // of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
 // Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
 // name, views (or view), styles (or style), size, format, fov, ortho, up-axis, smooth-angle,
-// lights, light-intensity, margin, aov, occlusion-levels, output;
+// lights, light-intensity, margin, aov, occlusion-levels, time, animation, morph, expression,
+// output;
 // docs/cli.md#batch.
 // Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
 // Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two

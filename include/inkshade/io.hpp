@@ -8,6 +8,32 @@
 
 namespace inkshade {
 
+// A weight given to a name: a morph target (NAME=W) or a VRM expression.
+struct NamedWeight {
+    std::string name;
+    float weight = 0.0f;
+    bool operator==(const NamedWeight&) const = default;
+};
+
+// The pose a glTF/VRM file is loaded in (docs/inputs.md, "Posed and animated glTF"): the file's
+// node transforms and morph weights, then an animation sampled at `time`, then VRM expressions,
+// then morph weights by name; skins deform the mesh on the CPU, so every later stage sees the
+// posed triangles. The default is the file as it is (its rest pose and default weights).
+struct Pose {
+    // A glTF animation, by name or index; empty = none.
+    std::string animation;
+    // Seconds into the animation, clamped to its keyframes' range.
+    float time = 0.0f;
+    // VRM expressions (VRM 1.0 preset or custom names; VRM 0.x presets by their 1.0 names, as
+    // three-vrm names them), weights in [0, 1], in order.
+    std::vector<NamedWeight> expressions;
+    // Morph target weights by name (mesh.extras.targetNames), in order; the last one wins.
+    std::vector<NamedWeight> morphs;
+
+    bool is_rest() const { return animation.empty() && expressions.empty() && morphs.empty(); }
+    bool operator==(const Pose&) const = default;
+};
+
 struct LoadOptions {
     // Welding epsilon relative to the bounding-box diagonal (triangle soups: STL, unwelded OBJ).
     float weld_epsilon = 1e-6f;
@@ -23,6 +49,8 @@ struct LoadOptions {
     // How computed normals weight the faces: by angle, or by area as three.js does (Scene's
     // load_options asks for it in the three.js convention).
     NormalWeighting normal_weighting = NormalWeighting::Angle;
+    // The pose of a glTF/VRM file; a pose other than the rest pose is an error for other formats.
+    Pose pose;
 };
 
 // Loads a mesh by path or "builtin:NAME". Throws InputError("FILE: problem") on bad input.

@@ -83,6 +83,12 @@ struct SceneRequest {
     // Auto-smooth angle in degrees, 0..180, for files without normals (LoadOptions::smooth_angle);
     // unset: the style's, else 30.
     std::optional<float> smooth_angle;
+    std::optional<float> time;  // seconds (--time): glTF animations and MToon UV animation
+    // The pose of a glTF/VRM model (LoadOptions::pose): an animation sampled at `time` (its name
+    // or index; empty: none), VRM expressions (weights in [0, 1]) and morph target weights by
+    // name, in order.
+    std::string animation;
+    std::vector<NamedWeight> expressions, morphs;
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
     // case), for render_scene's AovImages overload and write_aov_files.
@@ -103,6 +109,9 @@ struct Scene {
     LightType light_type = LightType::Directional;
     std::optional<glm::vec3> light_position, light_target;
     float smooth_angle = LoadOptions{}.smooth_angle;
+    float time = 0.0f;
+    std::string animation;  // the model's pose (load_options), as the request gives it
+    std::vector<NamedWeight> expressions, morphs;
     // Area in the three.js convention (a scene file, a threejs-* model, mtoon's threejs
     // convention): normals computed for a file without them as three.js computes them.
     NormalWeighting normal_weighting = NormalWeighting::Angle;
@@ -122,7 +131,7 @@ struct Scene {
     std::vector<std::string> apply_file_scene(const Mesh& mesh);
 
     // How to load the scene's model: load_mesh(scene.model, scene.load_options()): the smooth
-    // angle and the normals' weighting.
+    // angle, the normals' weighting and the pose.
     LoadOptions load_options() const;
 
     // The camera for a model with these bounds: auto-framed for the image's aspect, or another
@@ -168,8 +177,8 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
 // from the image's frame; each line mask from one more frame, drawing only that line type in
 // white over a black surface and background (so it is the line's antialiased coverage). Line
 // masks with object-space types want MeshUse::ManyFrames (each frame extracts them again).
-Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
-                   AovImages& aovs, std::vector<PassTiming>* timings = nullptr);
+Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light, AovImages& aovs,
+                   std::vector<PassTiming>* timings = nullptr);
 
 // What the camera file of a scene's image records (write_aov_files).
 CameraRecord camera_record(const Scene& scene, const Camera& camera, const BoundingBox& bounds);
@@ -187,6 +196,9 @@ LightType parse_light_type(const std::string& option, const std::string& text); 
 LightSource parse_light_source(const std::string& option, const std::string& text);  // style|file
 UpAxis parse_up_axis(const std::string& option, const std::string& text);            // x|y|z|-x|-y|-z
 AovSet parse_aov_list(const std::string& option, const std::string& text);           // depth,normal,... (',' or ';')
+NamedWeight parse_named_weight(const std::string& option, const std::string& text);  // NAME=W
+// "NAME=W" items separated by ',' or ';' (a manifest's morph and expression columns).
+std::vector<NamedWeight> parse_named_weights(const std::string& option, const std::string& text);
 // The AOV names (any case), each once; InputError naming `option`, with the closest name.
 AovSet aov_set(const std::string& option, const std::vector<std::string>& names);
 

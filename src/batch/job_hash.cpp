@@ -61,6 +61,11 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     if (job.occlusion_levels)
         text += " occlusion-levels=" + std::to_string(job.occlusion_levels->min) + "-" +
                 std::to_string(job.occlusion_levels->max);
+    // Likewise only posed jobs (a glTF animation's time, expressions, morph weights).
+    if (job.time) text += " time=" + number(*job.time);
+    if (!job.animation.empty()) text += " animation=" + job.animation;
+    for (const NamedWeight& e : job.expressions) text += " expression=" + e.name + "=" + number(e.weight);
+    for (const NamedWeight& m : job.morphs) text += " morph=" + m.name + "=" + number(m.weight);
     text += "\n";
     text += "style=" + job.style + "\n";
     text += style_text;

@@ -97,6 +97,10 @@ JobGroup default_group(const BatchDefaults& d) {
     g.margin = d.margin;
     g.aovs = d.aovs;
     g.occlusion_levels = d.occlusion_levels;
+    g.time = d.time;
+    g.animation = d.animation;
+    g.expressions = d.expressions;
+    g.morphs = d.morphs;
     return g;
 }
 
@@ -142,6 +146,10 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.light_intensity = group.light_intensity;
             job.aovs = group.aovs;
             job.occlusion_levels = group.occlusion_levels;
+            job.time = group.time;
+            job.animation = group.animation;
+            job.expressions = group.expressions;
+            job.morphs = group.morphs;
             out.push_back(std::move(job));
         }
     }

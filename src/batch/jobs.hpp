@@ -28,6 +28,9 @@ struct JobGroup {
     float margin = 0.05f;  // CameraOptions::margin
     AovSet aovs;
     std::optional<OcclusionLevels> occlusion_levels;
+    std::optional<float> time;  // the pose (BatchJob)
+    std::string animation;
+    std::vector<NamedWeight> expressions, morphs;
     std::string source;
 };
 

@@ -23,13 +23,13 @@ namespace {
 using batch::default_group;
 using batch::JobGroup;
 
-const std::set<std::string> kColumns = {"model",   "name",         "views",  "view",   "styles",          "style",
-                                        "size",    "format",       "fov",    "ortho",  "up-axis",         "smooth-angle",
-                                        "lights",  "light-intensity", "margin", "aov", "occlusion-levels",
-                                        "output"};
+const std::set<std::string> kColumns = {
+    "model",     "name",    "views",        "view",   "styles",          "style",  "size", "format",           "fov",
+    "ortho",     "up-axis", "smooth-angle", "lights", "light-intensity", "margin", "aov",  "occlusion-levels", "time",
+    "animation", "morph",   "expression",   "output"};
 const char* kColumnList =
     "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, light-intensity, margin, "
-    "aov, occlusion-levels, output";
+    "aov, occlusion-levels, time, animation, morph, expression, output";
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -101,6 +101,18 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.aovs = parse_aov_list("aov", value);
     } else if (key == "occlusion-levels") {
         g.occlusion_levels = parse_occlusion_levels(value);
+    } else if (key == "time") {
+        g.time = number_in(key, value, -1e9, 1e9, "seconds");
+    } else if (key == "animation") {
+        g.animation = value;
+    } else if (key == "morph") {
+        g.morphs = parse_named_weights("morph", value);
+    } else if (key == "expression") {
+        g.expressions = parse_named_weights("expression", value);
+        SceneRequest check;  // weights in [0, 1], as every front end checks them
+        check.names = OptionNames::Keywords;
+        check.expressions = g.expressions;
+        make_scene(check);
     } else if (key == "light-intensity") {
         g.light_intensity = number_in(key, value, 0.0, 1e6, "a number in [0, 1e6]");
     } else if (key == "ortho") {
@@ -200,7 +212,7 @@ std::string json_text(const std::string& key, const nlohmann::json& v) {
     if (v.is_string()) return v.get<std::string>();
     if (v.is_boolean() && key == "ortho") return v.get<bool>() ? "true" : "false";
     if (v.is_number_integer() && key == "occlusion-levels") return std::to_string(v.get<long long>());
-    if (v.is_number() && (key == "fov" || key == "margin" || key == "light-intensity")) {
+    if (v.is_number() && (key == "fov" || key == "margin" || key == "light-intensity" || key == "time")) {
         const double d = v.get<double>();
         if (!std::isfinite(d)) throw InputError(key + ": not a finite number");
         std::ostringstream out;

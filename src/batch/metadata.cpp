@@ -100,6 +100,10 @@ std::string format_metadata(const JobRecord& r) {
     if (job.lights == LightSource::File) j["lights"] = "file";
     if (job.light_intensity) j["light_intensity"] = *job.light_intensity;
     if (job.occlusion_levels) j["occlusion_levels"] = {job.occlusion_levels->min, job.occlusion_levels->max};
+    if (job.time) j["time"] = *job.time;
+    if (!job.animation.empty()) j["animation"] = job.animation;
+    for (const NamedWeight& e : job.expressions) j["expressions"][e.name] = e.weight;
+    for (const NamedWeight& m : job.morphs) j["morphs"][m.name] = m.weight;
     j["camera"] = {{"eye", vec3(r.camera.eye)},
                    {"target", vec3(r.camera.target)},
                    {"up", vec3(r.camera.up)},

@@ -88,7 +88,7 @@ int64_t model_bytes(const std::string& path) {
 // The jobs of one model, in batch order.
 struct ModelGroup {
     std::string model;
-    LoadOptions load;  // the jobs' auto-smooth and normal weighting: one load per pair
+    LoadOptions load;  // the jobs' auto-smooth, normal weighting and pose: one load per set
     int64_t bytes = -1;
     std::vector<size_t> jobs;     // indices into the ordered job list
     std::vector<size_t> pending;  // those to render
@@ -118,8 +118,7 @@ public:
             for (size_t n = g + 1; n < groups_.size(); ++n) {
                 if (groups_[n].pending.empty()) continue;
                 next_group = n;
-                next = std::async(std::launch::async, load_model, groups_[n].model, groups_[n].svg,
-                                  groups_[n].load);
+                next = std::async(std::launch::async, load_model, groups_[n].model, groups_[n].svg, groups_[n].load);
                 return;
             }
         };
@@ -157,10 +156,15 @@ private:
             // once a style).
             const LoadOptions load{
                 .smooth_angle = job.smooth_angle.value_or(style.smooth_angle.value_or(LoadOptions{}.smooth_angle)),
-                .normal_weighting = style.normal_weighting};
+                .normal_weighting = style.normal_weighting,
+                .pose = {.animation = job.animation,
+                         .time = job.time.value_or(0.0f),
+                         .expressions = job.expressions,
+                         .morphs = job.morphs}};
             if (groups_.empty() || groups_.back().model != job.model ||
                 groups_.back().load.smooth_angle != load.smooth_angle ||
-                groups_.back().load.normal_weighting != load.normal_weighting) {
+                groups_.back().load.normal_weighting != load.normal_weighting ||
+                groups_.back().load.pose != load.pose) {
                 groups_.emplace_back();
                 groups_.back().model = job.model;
                 groups_.back().load = load;
@@ -289,6 +293,10 @@ private:
         request.lights = job.lights;
         request.light_intensity = job.light_intensity;
         request.occlusion_levels = job.occlusion_levels;
+        request.time = job.time;
+        request.animation = job.animation;
+        request.expressions = job.expressions;
+        request.morphs = job.morphs;
         request.samples = options_.samples;
         for (size_t a = 0; a < aov_names().size(); ++a)
             if (job.aovs.contains(Aov(a))) request.aovs.push_back(aov_names()[a]);

@@ -14,7 +14,9 @@
 //   KHR_mesh_quantization allows, sparse accessors (3.6.2.3), accessors without a bufferView;
 // - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), alphaMode, alphaCutoff
 //   and doubleSided (3.9.4-3.9.5), KHR_materials_unlit, VRM 0.x and VRM 1.0 MToon parameters;
-// - the nodes' cameras (3.10) and KHR_lights_punctual lights (gltf_cameras_lights.cpp).
+// - the nodes' cameras (3.10) and KHR_lights_punctual lights (gltf_cameras_lights.cpp);
+// - skins, morph targets, animations and VRM expressions, posed as LoadOptions::pose asks
+//   (gltf_pose.cpp and the files it uses).
 #include <fstream>  // tiny_gltf.h's writers use std::ofstream but include <fstream> only without TINYGLTF_NO_FS
 
 #define TINYGLTF_IMPLEMENTATION
@@ -45,7 +47,9 @@
 #include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "io/file_bytes.hpp"
+#include "io/gltf_accessors.hpp"
 #include "io/gltf_cameras_lights.hpp"
+#include "io/gltf_pose.hpp"
 #include "io/readers.hpp"
 #include "io/texture_image.hpp"
 
@@ -238,7 +242,8 @@ int component_count(int type) {
         case TINYGLTF_TYPE_VEC2: return 2;
         case TINYGLTF_TYPE_VEC3: return 3;
         case TINYGLTF_TYPE_VEC4: return 4;
-        default: return 0;  // matrices are not vertex attributes
+        case TINYGLTF_TYPE_MAT4: return 16;  // a skin's inverseBindMatrices (no padding: 4-byte components)
+        default: return 0;
     }
 }
 
@@ -293,7 +298,7 @@ uint32_t index_value(const unsigned char* p, int type) {
 }
 
 // Reads accessors of a loaded model, checking every range against the real buffer sizes.
-class AccessorReader {
+class AccessorReader final : public GltfFloatReader {
 public:
     AccessorReader(const tinygltf::Model& model, const std::string& path) : model_(model), path_(path) {}
 
@@ -356,7 +361,7 @@ public:
     // Float components of accessor `index` (count x components, interleaving removed).
     // `allowed_counts` lists the accepted component counts (e.g. {3} for POSITION).
     std::vector<float> floats(int index, const std::string& role, std::initializer_list<int> allowed_counts,
-                              int& components) const {
+                              int& components) const override {
         const tinygltf::Accessor& a = accessor(index, role);
         const std::string what = name(index, role);
         components = component_count(a.type);
@@ -421,7 +426,7 @@ public:
         return out;
     }
 
-    [[noreturn]] void fail(const std::string& problem) const { throw InputError(path_, problem); }
+    [[noreturn]] void fail(const std::string& problem) const override { throw InputError(path_, problem); }
 
 private:
     static std::string name(int index, const std::string& role) {
@@ -493,6 +498,7 @@ glm::dmat4 local_transform(const tinygltf::Node& node, size_t index, const std::
 }
 
 struct Instance {
+    int node;
     int mesh;
     glm::dmat4 transform;
 };
@@ -506,7 +512,7 @@ struct SceneNodes {
 // Every mesh instance of the scene with its world transform, and the nodes that may carry a
 // camera or a light. The hierarchy must be a tree (section 3.5.3): a node reached twice (a
 // cycle or two parents) is an error, never a hang.
-SceneNodes scene_nodes(const tinygltf::Model& model, const std::string& path) {
+SceneNodes scene_nodes(const tinygltf::Model& model, const std::string& path, const GltfPose& pose) {
     std::vector<int> roots;
     const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
     if (scene >= 0) {
@@ -543,15 +549,15 @@ SceneNodes scene_nodes(const tinygltf::Model& model, const std::string& path) {
         if (item.depth > kMaxNodeDepth)
             throw InputError(path, "node hierarchy deeper than " + std::to_string(kMaxNodeDepth));
         const tinygltf::Node& node = model.nodes[size_t(item.node)];
-        const glm::dmat4 world = item.parent * local_transform(node, size_t(item.node), path);
+        const glm::dmat4 world = item.parent * pose.local(size_t(item.node));
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model.meshes.size())
                 throw InputError(path, "node " + std::to_string(item.node) + " refers to mesh " +
                                            std::to_string(node.mesh) + " but the file has " +
                                            std::to_string(model.meshes.size()));
-            // A skinned mesh ignores its node's transform (section 3.7.3.3): in the rest pose its
-            // vertices are already where the joints put them.
-            out.meshes.push_back({node.mesh, node.skin >= 0 ? glm::dmat4(1.0) : world});
+            // A skinned mesh ignores its node's transform (section 3.7.3.3): its joints place it
+            // (GltfPose::deform).
+            out.meshes.push_back({item.node, node.mesh, node.skin >= 0 ? glm::dmat4(1.0) : world});
         }
         if (node.camera >= 0 || node.extensions.count("KHR_lights_punctual"))
             out.cameras_and_lights.push_back({item.node, world});
@@ -924,13 +930,14 @@ private:
 // (uvs with 0, colours with the material colour) or dropped (normals: load_mesh computes them).
 class MeshBuilder {
 public:
-    MeshBuilder(const tinygltf::Model& model, const std::string& path, Mesh& mesh)
-        : model_(model), path_(path), mesh_(mesh), reader_(model, path), materials_(model, reader_, path, mesh) {}
+    MeshBuilder(const tinygltf::Model& model, const std::string& path, Mesh& mesh, const AccessorReader& reader)
+        : model_(model), path_(path), mesh_(mesh), reader_(reader), materials_(model, reader_, path, mesh) {}
 
-    void add(const Instance& instance) {
+    // A mesh instance, each primitive deformed by the pose (morph targets, skin) first.
+    void add(const Instance& instance, const GltfPose& pose) {
         const tinygltf::Mesh& gm = model_.meshes[size_t(instance.mesh)];
         for (size_t p = 0; p < gm.primitives.size(); ++p)
-            add_primitive(gm.primitives[p], instance.transform,
+            add_primitive(gm.primitives[p], instance, pose,
                           "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(p));
     }
 
@@ -943,7 +950,9 @@ public:
     size_t skipped() const { return skipped_; }
 
 private:
-    void add_primitive(const tinygltf::Primitive& prim, const glm::dmat4& transform, const std::string& where) {
+    void add_primitive(const tinygltf::Primitive& prim, const Instance& instance, const GltfPose& pose,
+                       const std::string& where) {
+        const glm::dmat4& transform = instance.transform;
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -1014,6 +1023,7 @@ private:
         same_count(nrm, 3, "NORMAL");
         same_count(uv, 2, "TEXCOORD");
         if (col_comps > 0) same_count(col, size_t(col_comps), "COLOR_0");
+        pose.deform(size_t(instance.node), prim, pos, nrm, where);
 
         const uint32_t material = materials_.index(prim.material);
         const glm::vec3 base_colour = mesh_.materials[material].diffuse;
@@ -1071,7 +1081,7 @@ private:
     const tinygltf::Model& model_;
     const std::string& path_;
     Mesh& mesh_;
-    AccessorReader reader_;
+    const AccessorReader& reader_;
     MaterialTable materials_;
     std::vector<Range> ranges_;
     bool normals_complete_ = true;
@@ -1087,7 +1097,7 @@ void check_required_extensions(const tinygltf::Model& model, const std::string& 
 
 }  // namespace
 
-Mesh read_gltf(const std::string& path) {
+Mesh read_gltf(const std::string& path, const Pose& pose) {
     FileBytes file(path);
     const std::string_view bytes = file.view();
     const std::string ext = lower_ascii(std::filesystem::path(path).extension().string());
@@ -1132,9 +1142,11 @@ Mesh read_gltf(const std::string& path) {
     check_required_extensions(model, path);
 
     Mesh mesh;
-    MeshBuilder builder(model, path, mesh);
-    const SceneNodes nodes = scene_nodes(model, path);
-    for (const Instance& instance : nodes.meshes) builder.add(instance);
+    const AccessorReader reader(model, path);
+    const GltfPose posed(model, path, pose, reader, &local_transform, mesh.warnings);
+    MeshBuilder builder(model, path, mesh, reader);
+    const SceneNodes nodes = scene_nodes(model, path, posed);
+    for (const Instance& instance : nodes.meshes) builder.add(instance, posed);
     builder.finish();
     add_gltf_cameras(model, nodes.cameras_and_lights, path, mesh);
     add_gltf_lights(model, nodes.cameras_and_lights, path, mesh);

@@ -141,13 +141,16 @@ bool shares_no_vertex(const Mesh& mesh) {
 
 Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     constexpr std::string_view kBuiltin = "builtin:";
+    const std::string ext = lower_ascii(std::filesystem::path(path).extension().string());
+    const bool gltf = ext == ".gltf" || ext == ".glb" || ext == ".vrm";
+    if (!options.pose.is_rest() && (!gltf || path.starts_with(kBuiltin)))
+        throw InputError(path, "only glTF, GLB and VRM files have animations, morph targets and expressions");
     if (path.starts_with(kBuiltin)) {
         Mesh mesh = builtin::by_name(path.substr(kBuiltin.size()));
         if (options.compute_normals) geometry::ensure_vertex_normals(mesh, options.normal_weighting);
         return mesh;
     }
 
-    std::string ext = lower_ascii(std::filesystem::path(path).extension().string());
     Mesh mesh;
     bool soup = io::format_is_soup(ext);
     if (ext == ".obj") {
@@ -160,8 +163,8 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         mesh = io::read_ply(path);
     } else if (ext == ".off") {
         mesh = io::read_off(path);
-    } else if (ext == ".gltf" || ext == ".glb" || ext == ".vrm") {
-        mesh = io::read_gltf(path);
+    } else if (gltf) {
+        mesh = io::read_gltf(path, options.pose);
     } else if (io::assimp_reads(ext)) {
         mesh = io::read_with_assimp(path);
     } else {

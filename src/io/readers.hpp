@@ -3,15 +3,17 @@
 #pragma once
 #include <string>
 
+#include "inkshade/io.hpp"
 #include "inkshade/mesh.hpp"
 
 namespace inkshade::io {
 
-Mesh read_obj(const std::string& path);   // + MTL Kd and map_Kd, polygons fan-triangulated, negative indices
-Mesh read_stl(const std::string& path);   // ASCII and binary; a triangle soup (3 vertices per face)
-Mesh read_ply(const std::string& path);   // ascii, binary_little_endian, binary_big_endian
-Mesh read_off(const std::string& path);   // OFF, with optional vertex colours (COFF)
-Mesh read_gltf(const std::string& path);  // glTF 2.0 .gltf, GLB .glb and VRM .vrm (default scene, flattened)
+Mesh read_obj(const std::string& path);  // + MTL Kd and map_Kd, polygons fan-triangulated, negative indices
+Mesh read_stl(const std::string& path);  // ASCII and binary; a triangle soup (3 vertices per face)
+Mesh read_ply(const std::string& path);  // ascii, binary_little_endian, binary_big_endian
+Mesh read_off(const std::string& path);  // OFF, with optional vertex colours (COFF)
+// glTF 2.0 .gltf, GLB .glb and VRM .vrm: the default scene flattened, in the pose asked for.
+Mesh read_gltf(const std::string& path, const Pose& pose = {});
 
 // Any other format assimp reads (FBX, COLLADA .dae, 3DS, .blend, .x, ...), when Inkshade is
 // built with it (INKSHADE_WITH_ASSIMP); without it assimp_reads is false and read_with_assimp

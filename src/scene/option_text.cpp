@@ -61,4 +61,30 @@ LightSource parse_light_source(const std::string& option, const std::string& tex
     throw InputError(option + ": expected style or file, got " + io::quote_token(text));
 }
 
+NamedWeight parse_named_weight(const std::string& option, const std::string& text) {
+    const size_t eq = text.rfind('=');
+    float w = 0;
+    if (eq != std::string::npos && eq > 0) {
+        const char* end = text.data() + text.size();
+        auto [ptr, ec] = std::from_chars(text.data() + eq + 1, end, w);
+        if (ec == std::errc() && ptr == end && eq + 1 < text.size() && std::isfinite(w)) return {text.substr(0, eq), w};
+    }
+    throw InputError(option + ": expected NAME=WEIGHT, got " + io::quote_token(text));
+}
+
+std::vector<NamedWeight> parse_named_weights(const std::string& option, const std::string& text) {
+    std::vector<NamedWeight> out;
+    std::string item;
+    for (size_t i = 0; i <= text.size(); ++i) {
+        if (i < text.size() && text[i] != ',' && text[i] != ';') {
+            item += text[i];
+            continue;
+        }
+        const size_t first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+        if (first != std::string::npos) out.push_back(parse_named_weight(option, item.substr(first, last - first + 1)));
+        item.clear();
+    }
+    return out;
+}
+
 }  // namespace inkshade

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cctype>
 #include <functional>
+#include <sstream>
 #include <tuple>
 
 #include "core/name_suggestion.hpp"
@@ -22,6 +23,19 @@ void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNa
     for (int i = 0; i < 4; ++i)
         if (!((*c)[i] >= 0.0f && (*c)[i] <= 1.0f))
             throw InputError(option_name(names, option) + ": components must be in [0, 1]");
+}
+
+// The pose's values; the names are the model file's, checked when it loads.
+void check_pose(const SceneRequest& r) {
+    if (r.time && !std::isfinite(*r.time)) throw InputError(option_name(r.names, "time") + ": must be finite");
+    for (const auto& [list, option] : {std::pair{&r.expressions, "expression"}, std::pair{&r.morphs, "morph"}})
+        for (const NamedWeight& w : *list) {
+            if (w.name.empty()) throw InputError(option_name(r.names, option) + ": empty name");
+            if (!std::isfinite(w.weight)) throw InputError(option_name(r.names, option) + ": weights must be finite");
+            if (list == &r.expressions && !(w.weight >= 0.0f && w.weight <= 1.0f))
+                throw InputError(option_name(r.names, option) + ": " + w.name +
+                                 ": expression weights are in [0, 1], got " + (std::ostringstream() << w.weight).str());
+        }
 }
 
 // The style as the request names it, before any override.
@@ -284,6 +298,7 @@ Scene make_scene(const SceneRequest& r) {
     check_color(r.background, "background", r.names);
     if (r.smooth_angle && !(*r.smooth_angle >= 0.0f && *r.smooth_angle <= 180.0f))
         throw InputError(name("smooth-angle") + ": expected degrees in [0, 180]");
+    check_pose(r);
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
     check_file_scene_alternatives(r);
     const AovSet aovs = parse_aovs(r);
@@ -324,6 +339,10 @@ Scene make_scene(const SceneRequest& r) {
     scene.light_position = r.light_position;
     scene.light_target = r.light_target;
     scene.smooth_angle = r.smooth_angle.value_or(scene.style.smooth_angle.value_or(LoadOptions{}.smooth_angle));
+    scene.time = r.time.value_or(0.0f);
+    scene.animation = r.animation;
+    scene.expressions = r.expressions;
+    scene.morphs = r.morphs;
     scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
     // The three.js convention: a scene file's, the threejs-* models (unlit ones too), mtoon's
     // threejs convention.
@@ -338,7 +357,9 @@ Scene make_scene(const SceneRequest& r) {
 }
 
 LoadOptions Scene::load_options() const {
-    return LoadOptions{.smooth_angle = smooth_angle, .normal_weighting = normal_weighting};
+    return LoadOptions{.smooth_angle = smooth_angle,
+                       .normal_weighting = normal_weighting,
+                       .pose = {.animation = animation, .time = time, .expressions = expressions, .morphs = morphs}};
 }
 
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }

@@ -184,6 +184,58 @@ TEST(BatchManifest, OcclusionLevelsColumnAndDefaultReachTheJob) {
               "deeper; got '2-1'");
 }
 
+TEST(BatchManifest, PoseColumnsAndDefaultsReachTheJob) {
+    BatchDefaults d;
+    d.time = 0.5f;
+    d.animation = "wave";
+    d.morphs = {{"blink", 1.0f}};
+    const auto jobs = parse_manifest(
+        "model,time,animation,morph,expression\n"
+        "a.vrm,1.25,hop,\"happy=0.5;blink=0\",happy=1\n"
+        "b.vrm,,,,\n",
+        "m.csv", d);
+    ASSERT_EQ(jobs.size(), 2u);
+    EXPECT_EQ(jobs[0].time, 1.25f);
+    EXPECT_EQ(jobs[0].animation, "hop");
+    EXPECT_EQ(jobs[0].morphs, (std::vector<NamedWeight>{{"happy", 0.5f}, {"blink", 0.0f}}));
+    EXPECT_EQ(jobs[0].expressions, (std::vector<NamedWeight>{{"happy", 1.0f}}));
+    EXPECT_EQ(jobs[1].time, 0.5f);  // the defaults
+    EXPECT_EQ(jobs[1].animation, "wave");
+    EXPECT_EQ(jobs[1].morphs, (std::vector<NamedWeight>{{"blink", 1.0f}}));
+    EXPECT_TRUE(jobs[1].expressions.empty());
+    const auto json =
+        parse_manifest(R"({"model": "a.vrm", "time": 2, "animation": "0", "expression": "sad=0.25"})", "m.jsonl");
+    EXPECT_EQ(json[0].time, 2.0f);
+    EXPECT_EQ(json[0].expressions, (std::vector<NamedWeight>{{"sad", 0.25f}}));
+    // Each part of the pose is in the job hash when given; a job without a pose keeps its hash.
+    BatchJob plain = jobs[1];
+    plain.time.reset();
+    plain.animation.clear();
+    plain.morphs.clear();
+    const std::string base = job_hash(plain, "", -1, 4);
+    BatchJob other = plain;
+    other.time = 1.0f;
+    const std::string at_one = job_hash(other, "", -1, 4);
+    other.time = 2.0f;
+    EXPECT_NE(at_one, base);
+    EXPECT_NE(job_hash(other, "", -1, 4), at_one);  // a dataset's frames are separate jobs
+    other = plain;
+    other.animation = "wave";
+    EXPECT_NE(job_hash(other, "", -1, 4), base);
+    other = plain;
+    other.expressions = {{"happy", 1.0f}};
+    EXPECT_NE(job_hash(other, "", -1, 4), base);
+    other = plain;
+    other.morphs = {{"happy", 1.0f}};
+    EXPECT_NE(job_hash(other, "", -1, 4), base);
+    EXPECT_EQ(input_error([] { parse_manifest("model,time\nx.glb,soon\n", "m.csv"); }),
+              "m.csv:2: time: expected seconds, got 'soon'");
+    EXPECT_EQ(input_error([] { parse_manifest("model,morph\nx.glb,happy\n", "m.csv"); }),
+              "m.csv:2: morph: expected NAME=WEIGHT, got 'happy'");
+    EXPECT_EQ(input_error([] { parse_manifest("model,expression\nx.glb,happy=3\n", "m.csv"); }),
+              "m.csv:2: expression: happy: expression weights are in [0, 1], got 3");
+}
+
 TEST(BatchManifest, FormatFromExtensionElseFromFirstCharacter) {
     // No extension: '{' means JSON Lines, anything else CSV.
     EXPECT_EQ(parse_manifest("{\"model\": \"a.obj\"}\n", "-").size(), 1u);

@@ -19,6 +19,7 @@
 
 #include "cli/run_cli.hpp"
 #include "inkshade/image.hpp"
+#include "io/avatar_files.hpp"
 #include "io/mesh_files.hpp"
 
 namespace inkshade::test {
@@ -405,6 +406,38 @@ TEST_F(BatchCommand, OutputsEqualRenderAndLinesCommands) {
     const auto meta = nlohmann::json::parse(slurp(out() + "/teapot/anime/az050_el25.json"));
     EXPECT_EQ(meta["outputs"]["svg"], "az050_el25.svg");
     EXPECT_EQ(meta["svg_lines"], nlohmann::json({"contour", "suggestive", "crease", "border"}));
+}
+
+// A dataset of an animation: each row's time (and pose) gives the image `inkshade render` gives
+// with the same --animation, --time, --expression and --morph, and the metadata records it.
+TEST_F(BatchCommand, PosePerJobGivesTheRenderCommandsImage) {
+    const std::string model = dir_.write("avatar.vrm", avatar(AvatarFormat::Vrm1).glb());
+    const std::string manifest = dir_.write("frames.csv", "model,name,time,expression\n" + model + ",t0,0,\n" + model +
+                                                              ",t1,1,\n" + model + ",t2,2,happy=1\n");
+    const auto r = batch(manifest + " -o " + out() + " --animation wave --morph blink=0.5 --size 96x96 --views 0:0 -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::set<std::string> images;
+    for (const char* t : {"0", "1", "2"}) {
+        SCOPED_TRACE(t);
+        const std::string stem = out() + "/t" + t + "/lambert/az000_el00";
+        const std::string expression = std::string(t) == "2" ? " --expression happy=1" : "";
+        const auto cli = run_cli("render " + model + " --animation wave --morph blink=0.5 --time " + t + expression +
+                                 " --size 96x96 --azimuth 0 --elevation 0 -o " + dir_.file("r.png"));
+        ASSERT_EQ(cli.status, 0) << cli.err;
+        EXPECT_EQ(slurp(stem + ".png"), slurp(dir_.file("r.png")));
+        images.insert(slurp(stem + ".png"));
+        const auto meta = nlohmann::json::parse(slurp(stem + ".json"));
+        EXPECT_EQ(meta["time"], std::stod(t));
+        EXPECT_EQ(meta["animation"], "wave");
+        EXPECT_EQ(meta["morphs"], nlohmann::json({{"blink", 0.5}}));
+        EXPECT_EQ(meta.contains("expressions"), expression.size() > 0);
+    }
+    EXPECT_EQ(images.size(), 3u);  // the arm moved
+    // A job with a name the file does not have fails alone, with the loader's message.
+    const std::string bad = dir_.write("bad.csv", "model,name,animation\n" + model + ",x,wav\n");
+    const auto failed = batch(bad + " -o " + out() + " --size 32x32 -q");
+    EXPECT_NE(failed.status, 0);
+    EXPECT_NE(failed.err.find("no animation 'wav' (did you mean 'wave'?)"), std::string::npos) << failed.err;
 }
 
 // Occlusion levels per job give the SVG `inkshade lines --occlusion-levels` gives (its dashed

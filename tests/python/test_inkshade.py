@@ -370,5 +370,121 @@ class AovTest(unittest.TestCase):
             self.assertIn("az035_el20.depth.exr", os.listdir(os.path.join(tmp, "ds", "b", "lambert")))
 
 
+def posed_glb(path):
+    """A VRM 1.0 file built here: a box on a node that the animation "spin" turns about +z (0 to
+    90 degrees over 2 s), with a morph target "lift" bound by the expression "happy"."""
+    corners = [(x, y, z) for x in (-1, 1) for y in (-1, 1) for z in (-0.2, 0.2)]
+    faces = [0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5]
+    lift = [(0, 0.5 if y > 0 else 0, 0) for x, y, z in corners]
+    half = 0.7071067811865476
+    chunks = [
+        struct.pack("<24f", *[c for p in corners for c in p]),
+        struct.pack("<36H", *faces),
+        struct.pack("<24f", *[c for p in lift for c in p]),
+        struct.pack("<2f", 0, 2),
+        struct.pack("<8f", 0, 0, 0, 1, 0, 0, half, half),
+    ]
+    views, offset = [], 0
+    for chunk in chunks:
+        views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(chunk)})
+        offset += len(chunk)
+    binary = b"".join(chunks)
+    doc = {
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["VRMC_vrm"],
+        "extensions": {"VRMC_vrm": {"specVersion": "1.0", "expressions": {
+            "preset": {"happy": {"morphTargetBinds": [{"node": 0, "index": 0, "weight": 1.0}]}}}}},
+        "buffers": [{"byteLength": len(binary)}],
+        "bufferViews": views,
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+             "min": [-1, -1, -0.2], "max": [1, 1, 0.2]},
+            {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5126, "count": 8, "type": "VEC3"},
+            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "SCALAR"},
+            {"bufferView": 4, "componentType": 5126, "count": 2, "type": "VEC4"},
+        ],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "targets": [{"POSITION": 2}]}],
+                    "extras": {"targetNames": ["lift"]}}],
+        "nodes": [{"mesh": 0}],
+        "scenes": [{"nodes": [0]}],
+        "scene": 0,
+        "animations": [{"name": "spin", "samplers": [{"input": 3, "output": 4}],
+                        "channels": [{"sampler": 0, "target": {"node": 0, "path": "rotation"}}]}],
+    }
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    glb = struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(text) + 8 + len(binary))
+    glb += struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(binary), b"BIN\0") + binary
+    with open(path, "wb") as f:
+        f.write(glb)
+
+
+class PoseTest(unittest.TestCase):
+    """time=, animation=, morph=, expression= on load_mesh and on render, as the CLI's options."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.model = os.path.join(cls.tmp.name, "box.vrm")
+        posed_glb(cls.model)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def cli_png(self, *options):
+        png = os.path.join(self.tmp.name, "cli.png")
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", *options, "-o", png],
+                                capture_output=True, text=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        return read_png(png)
+
+    def test_render_keywords_are_the_clis_options(self):
+        r = inkshade.Renderer()
+        r.set_mesh(inkshade.load_mesh(self.model))
+        rest = r.render("lambert", size=(64, 48))
+        np.testing.assert_array_equal(rest, self.cli_png())
+        spun = r.render("lambert", size=(64, 48), animation="spin", time=1.0)
+        np.testing.assert_array_equal(spun, self.cli_png("--animation", "spin", "--time", "1"))
+        self.assertFalse(np.array_equal(spun, rest))
+        # The mesh keeps the pose; time= alone samples the same animation again.
+        np.testing.assert_array_equal(r.render("lambert", size=(64, 48), time=2.0),
+                                      self.cli_png("--animation", "spin", "--time", "2"))
+        happy = r.render("lambert", size=(64, 48), animation=0, time=0.5, expression={"happy": 1.0},
+                         morph=["lift=0.5"])
+        np.testing.assert_array_equal(happy, self.cli_png("--animation", "0", "--time", "0.5", "--expression",
+                                                          "happy=1", "--morph", "lift=0.5"))
+        svg = r.svg(["contour"], size=(64, 48), animation="spin", time=1.0)
+        self.assertIn("<path", svg)
+
+    def test_load_mesh_takes_the_pose(self):
+        r = inkshade.Renderer()
+        r.set_mesh(inkshade.load_mesh(self.model, animation="spin", time=1.0, morph={"lift": 1.0}))
+        np.testing.assert_array_equal(r.render("lambert", size=(64, 48)),
+                                      self.cli_png("--animation", "spin", "--time", "1", "--morph", "lift=1"))
+        with self.assertRaisesRegex(ValueError, r"no animation 'spn' \(did you mean 'spin'\?\)"):
+            inkshade.load_mesh(self.model, animation="spn")
+        with self.assertRaisesRegex(ValueError, r"^expression: happy: expression weights are in \[0, 1\], got 2$"):
+            inkshade.load_mesh(self.model, expression={"happy": 2})
+        with self.assertRaisesRegex(ValueError, r"^morph: expected NAME=WEIGHT, got 'lift'$"):
+            r.render("lambert", morph=["lift"])
+        with self.assertRaisesRegex(ValueError, "no morph target 'lfit'"):
+            r.render("lambert", morph={"lfit": 1})
+        with self.assertRaisesRegex(ValueError, "unknown keyword 'pose'"):
+            inkshade.load_mesh(self.model, pose=1)
+
+    def test_batch_samples_an_animation(self):
+        manifest = os.path.join(self.tmp.name, "frames.csv")
+        with open(manifest, "w") as f:
+            f.write("model,name,time\n" + self.model + ",t1,1\n" + self.model + ",t2,\n")
+        out = os.path.join(self.tmp.name, "frames")
+        summary = inkshade.batch(out, manifest=manifest, size=(64, 48), views="35:20", animation="spin", time=2.0)
+        self.assertEqual(summary["done"], 2, summary["failures"])
+        for stem, t in (("t1", "1"), ("t2", "2")):  # t2 takes the default time
+            np.testing.assert_array_equal(read_png(os.path.join(out, stem, "lambert", "az035_el20.png")),
+                                          self.cli_png("--animation", "spin", "--time", t))
+
+
 if __name__ == "__main__":
     unittest.main()
