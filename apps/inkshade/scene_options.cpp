@@ -67,6 +67,10 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
     cmd.add_option("--background", background, "background colour or 'transparent' (default: the style's, white)");
     cmd.add_option("--samples", r.samples, "MSAA samples (1 = off)")->capture_default_str();
     cmd.add_flag("--srgb", r.srgb, "decode textures from sRGB, sRGB-encode the output (default: as they are)");
+    cmd.add_option("--time", r.time,
+                   "the moment drawn, in seconds >= 0: mtoon's UV animation scrolled and turned by speed x time "
+                   "(default 0)")
+        ->option_text("SECONDS");
 }
 
 std::optional<std::vector<std::string>> split_names(const std::string& text) {

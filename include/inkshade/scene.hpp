@@ -87,6 +87,7 @@ struct SceneRequest {
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
     // case), for render_scene's AovImages overload and write_aov_files.
     std::vector<std::string> aovs;
+    std::optional<float> time;  // seconds (--time): glTF animations and MToon UV animation
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;
@@ -112,6 +113,7 @@ struct Scene {
     LightSource lights = LightSource::Style;
     std::optional<FileLight> file_light;  // the file's light in use (apply_file_scene)
     AovSet aovs;                          // the request's; options.aovs holds the renderer's part
+    float time = 0.0f;
 
     // Takes what the request asks of the loaded model file: its camera becomes the camera
     // options (placement, projection, near and far; the image's aspect with size_from_camera)

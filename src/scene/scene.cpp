@@ -284,6 +284,8 @@ Scene make_scene(const SceneRequest& r) {
     check_color(r.background, "background", r.names);
     if (r.smooth_angle && !(*r.smooth_angle >= 0.0f && *r.smooth_angle <= 180.0f))
         throw InputError(name("smooth-angle") + ": expected degrees in [0, 180]");
+    if (r.time && !(std::isfinite(*r.time) && *r.time >= 0.0f))
+        throw InputError(name("time") + ": expected seconds, a finite number >= 0");
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
     check_file_scene_alternatives(r);
     const AovSet aovs = parse_aovs(r);
@@ -319,6 +321,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.options.bit_depth = r.bit_depth;
     scene.aovs = aovs;
     scene.options.aovs = aovs.gpu();
+    scene.time = r.time.value_or(0.0f);
     scene.camera = r.camera;
     scene.light_type = r.light_type;
     scene.light_position = r.light_position;
@@ -369,7 +372,9 @@ Light Scene::light(const BoundingBox& box, const Camera& cam) const {
 
 Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
                    std::vector<PassTiming>* timings) {
-    return renderer.render(camera, light, scene.shading(), scene.style.lines, scene.options, timings);
+    RenderOptions options = scene.options;
+    options.time = scene.time;  // mtoon's UV animation
+    return renderer.render(camera, light, scene.shading(), scene.style.lines, options, timings);
 }
 
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
