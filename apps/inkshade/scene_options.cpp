@@ -31,7 +31,9 @@ void SceneOptions::add_to(CLI::App& cmd, bool model_required) {
                    "auto-smooth for files without normals: shading normals split at edges sharper than this "
                    "many degrees (default: the style's, else 30; 180 = all smooth)");
     cmd.add_option("--time", r.time,
-                   "seconds: the time --animation is sampled at, clamped to its keyframes (default 0)");
+                   "the moment drawn, in seconds >= 0: the time --animation is sampled at (clamped to its "
+                   "keyframes) and mtoon's UV animation scrolled and turned by speed x time (default 0)")
+        ->option_text("SECONDS");
     cmd.add_option("--animation", r.animation,
                    "pose a glTF/VRM model by one of its animations (name or index) at --time (default: none, the "
                    "file's pose)");

@@ -47,18 +47,24 @@ struct Material {
     // copies of a Material (and materials using the same image) cost no pixel copies.
     std::shared_ptr<const Texture> texture;
     // MToon parameters of a VRM material (VRM 0.x extensions.VRM.materialProperties, converted as
-    // three-vrm does, or VRM 1.0 VRMC_materials_mtoon), keyed by the `mtoon` shading model's
-    // parameter names: shade-color (3), shading-shift, shading-toony, rim-color (3),
+    // three-vrm does, or VRM 1.0 VRMC_materials_mtoon with the glTF material's emissive and normal
+    // map scale; io/vrm_materials.hpp), keyed by the `mtoon` shading model's parameter names:
+    // shade-color (3), shading-shift, shading-toony, shading-shift-texture-scale, rim-color (3),
     // rim-fresnel-power, rim-lift, rim-lighting-mix, outline-width-mode (0 none, 1 world,
-    // 2 screen), outline-width, outline-color (3), outline-lighting-mix, matcap-color (3), plus
-    // gi-equalization.
+    // 2 screen), outline-width, outline-color (3), outline-lighting-mix, matcap-color (3),
+    // emissive (3), emissive-intensity, normal-scale, uv-animation-scroll-x-speed,
+    // uv-animation-scroll-y-speed, uv-animation-rotation-speed, plus gi-equalization.
     // Colours linear. Empty = not an MToon material.
     std::map<std::string, std::vector<float>> mtoon;
     // The textures of a VRM MToon material (VRMC_materials_mtoon's matcapTexture,
-    // rimMultiplyTexture, outlineWidthMultiplyTexture; VRM 0.x _SphereAdd, _RimTexture,
-    // _OutlineWidthTexture), keyed "matcap-texture", "rim-multiply-texture",
-    // "outline-width-multiply-texture"; read at the mesh's uvs (the matcap at the view-space
-    // normal). Shared as `texture` is.
+    // rimMultiplyTexture, outlineWidthMultiplyTexture, shadeMultiplyTexture, shadingShiftTexture,
+    // uvAnimationMaskTexture and the glTF emissiveTexture and normalTexture; VRM 0.x _SphereAdd,
+    // _RimTexture, _OutlineWidthTexture, _ShadeTexture, _UvAnimMaskTexture, _EmissionMap,
+    // _BumpMap), keyed as render/mtoon_textures.hpp's slots ("matcap-texture",
+    // "rim-multiply-texture", "outline-width-multiply-texture", "shade-multiply-texture",
+    // "shading-shift-texture", "emissive-texture", "normal-texture", "uv-animation-mask-texture");
+    // read at the mesh's uvs moved by the UV animation (the matcap at the view-space normal, the
+    // mask and the outline width at the uvs as they are). Shared as `texture` is.
     std::map<std::string, std::shared_ptr<const Texture>> mtoon_textures;
     // glTF KHR_materials_unlit: drawn in its base colour (x texture x vertex colour) without
     // lighting, whatever the shading model.

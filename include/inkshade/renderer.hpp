@@ -31,6 +31,8 @@ struct RenderOptions {
     // others are the scene's: render_scene_aovs), returned by the render overload that takes
     // AovImages. One sample a pixel but the mask, whose samples are averaged.
     AovSet aovs;
+    // The moment drawn, in seconds: mtoon's UV animation is at speed x time (Scene::time).
+    float time = 0.0f;
 };
 
 struct PassTiming {

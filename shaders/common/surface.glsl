@@ -9,11 +9,19 @@ in vec3 v_color;
 in vec3 v_object_pos;
 #if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
 in vec2 v_uv;
+// Where the textures are read: the uvs as texture coordinates (s, t), t = 0 at the image's top
+// row, as three.js reads a glTF texture (flipY false). A model that moves them (mtoon's UV
+// animation) defines INKSHADE_TEXTURE_UV before including this file, and texture_uv() itself.
+#ifdef INKSHADE_TEXTURE_UV
+vec2 texture_uv();
+#else
+vec2 texture_uv() { return vec2(v_uv.x, 1.0 - v_uv.y); }
+#endif
 #endif
 #ifdef INKSHADE_BASE_TEXTURE
 // Base-colour texture, read in the frame's colour convention (bound by the shading pass:
-// the bytes as stored, or decoded from sRGB to linear light); rows stored top first while uvs
-// have v = 0 at the bottom (inkshade::Texture), hence 1 - v.
+// the bytes as stored, or decoded from sRGB to linear light) at texture_uv(): rows stored top
+// first while uvs have v = 0 at the bottom (inkshade::Texture), hence t = 1 - v.
 uniform sampler2D u_base_texture;
 #endif
 
@@ -34,7 +42,7 @@ uniform float u_alpha_cutoff;
 float surface_alpha() {
     float a = u_base_alpha;
 #ifdef INKSHADE_BASE_TEXTURE
-    a *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).a;
+    a *= texture(u_base_texture, texture_uv()).a;
 #endif
     return a;
 }
@@ -69,7 +77,7 @@ Surface surface() {
     s.l = to_light(s.p);
     s.albedo = u_base_color * v_color;
 #ifdef INKSHADE_BASE_TEXTURE
-    s.albedo *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;
+    s.albedo *= texture(u_base_texture, texture_uv()).rgb;
 #endif
     return s;
 }

@@ -13,7 +13,8 @@
 // - POSITION, NORMAL, TEXCOORD_n, COLOR_0 in any component type the spec or
 //   KHR_mesh_quantization allows, sparse accessors (3.6.2.3), accessors without a bufferView;
 // - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), alphaMode, alphaCutoff
-//   and doubleSided (3.9.4-3.9.5), KHR_materials_unlit, VRM 0.x and VRM 1.0 MToon parameters;
+//   and doubleSided (3.9.4-3.9.5), KHR_materials_unlit, VRM 0.x and VRM 1.0 MToon parameters
+//   and textures with an MToon material's emissive and normal map (vrm_materials.cpp);
 // - the nodes' cameras (3.10) and KHR_lights_punctual lights (gltf_cameras_lights.cpp);
 // - skins, morph targets, animations and VRM expressions, posed as LoadOptions::pose asks
 //   (gltf_pose.cpp and the files it uses).
@@ -52,6 +53,7 @@
 #include "io/gltf_pose.hpp"
 #include "io/readers.hpp"
 #include "io/texture_image.hpp"
+#include "io/vrm_materials.hpp"
 
 namespace inkshade::io {
 namespace {
@@ -569,37 +571,6 @@ SceneNodes scene_nodes(const tinygltf::Model& model, const std::string& path, co
 
 // --- materials (section 3.9) and VRM MToon ------------------------------------------------
 
-double number(const tinygltf::Value& object, const char* key, double fallback) {
-    if (!object.IsObject() || !object.Has(key)) return fallback;
-    const tinygltf::Value& v = object.Get(key);
-    if (!v.IsNumber()) return fallback;
-    double d = v.GetNumberAsDouble();
-    return std::isfinite(d) ? d : fallback;
-}
-
-std::vector<float> numbers(const tinygltf::Value& object, const char* key, std::vector<float> fallback) {
-    if (!object.IsObject() || !object.Has(key)) return fallback;
-    const tinygltf::Value& v = object.Get(key);
-    if (!v.IsArray() || v.ArrayLen() < fallback.size()) return fallback;
-    for (size_t i = 0; i < fallback.size(); ++i) {
-        const tinygltf::Value& x = v.Get(int(i));
-        if (x.IsNumber() && std::isfinite(x.GetNumberAsDouble())) fallback[i] = float(x.GetNumberAsDouble());
-    }
-    return fallback;
-}
-
-// Texture index in a VRM 0.x textureProperties object, or -1.
-int texture_property(const tinygltf::Value& props, const char* key) {
-    double d = number(props, key, -1.0);
-    return d >= 0.0 && d < 1e9 ? int(d) : -1;
-}
-
-// VRM 0.x colours are gamma-encoded; three-vrm decodes them with x^2.2 (gammaEOTF).
-std::vector<float> gamma_decode(std::vector<float> c) {
-    for (float& x : c) x = std::pow(std::max(x, 0.0f), 2.2f);
-    return c;
-}
-
 // glTF alphaMode, alphaCutoff, doubleSided and baseColorFactor's alpha (sections 3.9.4, 3.9.5),
 // as three.js's GLTFLoader reads them; the default material is opaque and single-sided.
 void read_alpha_and_sides(const tinygltf::Material& g, Material& m) {
@@ -623,77 +594,6 @@ bool keyword_on(const tinygltf::Value& props, const char* key) {
     if (!props.IsObject() || !props.Has("keywordMap")) return false;
     const tinygltf::Value& k = props.Get("keywordMap");
     return k.IsObject() && k.Has(key) && k.Get(key).IsBool() && k.Get(key).Get<bool>();
-}
-
-// MToon 1.0 defaults (the VRM MToon 1.0 specification, VRMC_materials_mtoon; docs/shading.md).
-std::map<std::string, std::vector<float>> mtoon_defaults() {
-    return {{"shade-color", {0, 0, 0}},   {"shading-shift", {0}},        {"shading-toony", {0.9f}},
-            {"rim-color", {0, 0, 0}},     {"rim-fresnel-power", {5}},    {"rim-lift", {0}},
-            {"rim-lighting-mix", {1}},    {"outline-width-mode", {0}},   {"outline-width", {0}},
-            {"outline-color", {0, 0, 0}}, {"outline-lighting-mix", {1}}, {"gi-equalization", {0.9f}},
-            {"matcap-color", {1, 1, 1}}};
-}
-
-// The MToon textures (Material::mtoon_textures) by their VRM 1.0 and VRM 0.x names.
-struct MtoonTextureName {
-    const char* key;  // Material::mtoon_textures
-    const char* v1;   // VRMC_materials_mtoon textureInfo
-    const char* v0;   // VRM 0.x textureProperties
-};
-constexpr MtoonTextureName kMtoonTextureNames[] = {
-    {"matcap-texture", "matcapTexture", "_SphereAdd"},
-    {"rim-multiply-texture", "rimMultiplyTexture", "_RimTexture"},
-    {"outline-width-multiply-texture", "outlineWidthMultiplyTexture", "_OutlineWidthTexture"},
-};
-
-// VRM 1.0: materials[i].extensions.VRMC_materials_mtoon, factors linear as written.
-std::map<std::string, std::vector<float>> mtoon_v1(const tinygltf::Value& e) {
-    auto m = mtoon_defaults();
-    m["shade-color"] = numbers(e, "shadeColorFactor", m["shade-color"]);
-    m["shading-shift"] = {float(number(e, "shadingShiftFactor", 0.0))};
-    m["shading-toony"] = {float(number(e, "shadingToonyFactor", 0.9))};
-    m["rim-color"] = numbers(e, "parametricRimColorFactor", m["rim-color"]);
-    m["rim-fresnel-power"] = {float(number(e, "parametricRimFresnelPowerFactor", 5.0))};
-    m["rim-lift"] = {float(number(e, "parametricRimLiftFactor", 0.0))};
-    m["rim-lighting-mix"] = {float(number(e, "rimLightingMixFactor", 1.0))};
-    if (e.IsObject() && e.Has("outlineWidthMode") && e.Get("outlineWidthMode").IsString()) {
-        const std::string& mode = e.Get("outlineWidthMode").Get<std::string>();
-        m["outline-width-mode"] = {mode == "worldCoordinates" ? 1.0f : mode == "screenCoordinates" ? 2.0f : 0.0f};
-    }
-    m["outline-width"] = {float(number(e, "outlineWidthFactor", 0.0))};
-    m["outline-color"] = numbers(e, "outlineColorFactor", m["outline-color"]);
-    m["outline-lighting-mix"] = {float(number(e, "outlineLightingMixFactor", 1.0))};
-    m["gi-equalization"] = {float(number(e, "giEqualizationFactor", 0.9))};
-    m["matcap-color"] = numbers(e, "matcapFactor", m["matcap-color"]);
-    return m;
-}
-
-// VRM 0.x: extensions.VRM.materialProperties[i] for "VRM/MToon", converted to MToon 1.0 the way
-// three-vrm's VRMMaterialsV0CompatPlugin does (three-vrm 3.5.5, the reference implementation
-// the mtoon model is measured against).
-std::map<std::string, std::vector<float>> mtoon_v0(const tinygltf::Value& props) {
-    const tinygltf::Value& f = props.IsObject() && props.Has("floatProperties") ? props.Get("floatProperties") : props;
-    const tinygltf::Value& v =
-        props.IsObject() && props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
-    auto m = mtoon_defaults();
-    m["shade-color"] = gamma_decode(numbers(v, "_ShadeColor", {0.97f, 0.81f, 0.86f}));
-    const double shift0 = number(f, "_ShadeShift", 0.0), toony0 = number(f, "_ShadeToony", 0.9);
-    const double toony = toony0 + (1.0 - toony0) * (0.5 + 0.5 * shift0);
-    m["shading-toony"] = {float(toony)};
-    m["shading-shift"] = {float(-shift0 - (1.0 - toony))};
-    m["rim-color"] = gamma_decode(numbers(v, "_RimColor", {0, 0, 0}));
-    m["rim-fresnel-power"] = {float(number(f, "_RimFresnelPower", 1.0))};
-    m["rim-lift"] = {float(number(f, "_RimLift", 0.0))};
-    m["rim-lighting-mix"] = {float(number(f, "_RimLightingMix", 0.0))};
-    const double mode = number(f, "_OutlineWidthMode", 0.0);
-    m["outline-width-mode"] = {mode == 1.0 ? 1.0f : mode == 2.0 ? 2.0f : 0.0f};
-    m["outline-width"] = {float(0.01 * number(f, "_OutlineWidth", 0.0))};  // v0 widths are centimetres
-    m["outline-color"] = gamma_decode(numbers(v, "_OutlineColor", {0, 0, 0}));
-    m["outline-lighting-mix"] = {
-        number(f, "_OutlineColorMode", 0.0) == 1.0 ? float(number(f, "_OutlineLightingMix", 1.0)) : 0.0f};
-    const double gi = number(f, "_IndirectLightIntensity", 0.1);
-    m["gi-equalization"] = {gi != 0.0 ? float(1.0 - gi) : 0.9f};
-    return m;
 }
 
 // Builds Mesh materials from glTF materials on first use, decoding each image once.
@@ -745,14 +645,14 @@ private:
     void v0_alpha_and_sides(const tinygltf::Value& props, const std::string& shader, Material& m) const {
         const tinygltf::Value& f = props.Has("floatProperties") ? props.Get("floatProperties") : props;
         const tinygltf::Value& v = props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
-        const float alpha = numbers(v, "_Color", {1, 1, 1, 1})[3];
+        const float alpha = json_numbers(v, "_Color", {1, 1, 1, 1})[3];
         bool blend = false, z_write = false, cutout = false;
         if (shader == "VRM/MToon") {
             blend = keyword_on(props, "_ALPHABLEND_ON");
-            z_write = blend && number(f, "_ZWrite", 0.0) == 1.0;
+            z_write = blend && json_number(f, "_ZWrite", 0.0) == 1.0;
             cutout = keyword_on(props, "_ALPHATEST_ON");
             m.alpha = std::clamp(alpha, 0.0f, 1.0f);
-            m.sides = number(f, "_CullMode", 2.0) == 0.0 ? FaceSides::Double : FaceSides::Front;
+            m.sides = json_number(f, "_CullMode", 2.0) == 0.0 ? FaceSides::Double : FaceSides::Front;
         } else {
             z_write = shader == "VRM/UnlitTransparentZWrite";
             blend = z_write || shader == "VRM/UnlitTransparent";
@@ -760,7 +660,7 @@ private:
             m.alpha = std::clamp(std::pow(std::max(alpha, 0.0f), 2.2f), 0.0f, 1.0f);
         }
         m.alpha_mode = blend ? AlphaMode::Blend : cutout ? AlphaMode::Mask : AlphaMode::Opaque;
-        m.alpha_cutoff = cutout ? float(std::max(number(f, "_Cutoff", 0.5), 0.0)) : 0.5f;
+        m.alpha_cutoff = cutout ? float(std::max(json_number(f, "_Cutoff", 0.5), 0.0)) : 0.5f;
         mtoon_render_order(m, z_write, v0_queue_offset(props, shader));
     }
 
@@ -772,7 +672,7 @@ private:
         const bool unlit_z = shader == "VRM/UnlitTransparentZWrite";
         const bool has_blend = props.Has("keywordMap") && props.Get("keywordMap").IsObject() &&
                                props.Get("keywordMap").Has("_ALPHABLEND_ON");
-        *z_write = number(f, "_ZWrite", 0.0) == 1.0 || unlit_z;
+        *z_write = json_number(f, "_ZWrite", 0.0) == 1.0 || unlit_z;
         return has_blend || shader == "VRM/UnlitTransparent" || unlit_z;
     }
     static std::string shader_of(const tinygltf::Value& props) {
@@ -820,16 +720,11 @@ private:
         read_alpha_and_sides(g, m);
         const auto v1 = g.extensions.find("VRMC_materials_mtoon");
         if (v1 != g.extensions.end()) {
-            m.mtoon = mtoon_v1(v1->second);
             const tinygltf::Value& e = v1->second;
+            add_mtoon(vrm1_mtoon(g, e), m);
             const bool z_write = e.IsObject() && e.Has("transparentWithZWrite") &&
                                  e.Get("transparentWithZWrite").IsBool() && e.Get("transparentWithZWrite").Get<bool>();
-            mtoon_render_order(m, z_write, number(e, "renderQueueOffsetNumber", 0.0));
-            for (const MtoonTextureName& t : kMtoonTextureNames) {
-                if (!e.IsObject() || !e.Has(t.v1)) continue;
-                const int index = texture_property(e.Get(t.v1), "index");
-                if (index >= 0) m.mtoon_textures[t.key] = texture_of(index, m.name);
-            }
+            mtoon_render_order(m, z_write, json_number(e, "renderQueueOffsetNumber", 0.0));
         } else if (v0_ != nullptr && i < v0_->ArrayLen()) {
             const tinygltf::Value& props = v0_->Get(int(i));
             const std::string shader = props.IsObject() && props.Has("shader") && props.Get("shader").IsString()
@@ -838,28 +733,27 @@ private:
             if (shader == "VRM/MToon" || shader.rfind("VRM/Unlit", 0) == 0) {
                 // Like three-vrm: the v0 properties replace the glTF material's colour and texture.
                 const tinygltf::Value& v = props.Has("vectorProperties") ? props.Get("vectorProperties") : props;
-                std::vector<float> c = gamma_decode(numbers(v, "_Color", {1, 1, 1}));
+                std::vector<float> c = gamma_decode(json_numbers(v, "_Color", {1, 1, 1}));
                 m.diffuse = glm::clamp(glm::vec3(c[0], c[1], c[2]), 0.0f, 1.0f);
                 v0_alpha_and_sides(props, shader, m);
-                int main = texture_property(props.Has("textureProperties") ? props.Get("textureProperties") : props,
-                                            "_MainTex");
+                const int main = json_texture_index(
+                    props.Has("textureProperties") ? props.Get("textureProperties") : props, "_MainTex");
                 if (main >= 0) texture = main;
-                if (shader == "VRM/MToon") {
-                    m.mtoon = mtoon_v0(props);
-                    const tinygltf::Value& tex =
-                        props.Has("textureProperties") ? props.Get("textureProperties") : props;
-                    for (const MtoonTextureName& t : kMtoonTextureNames)
-                        if (const int index = texture_property(tex, t.v0); index >= 0)
-                            m.mtoon_textures[t.key] = texture_of(index, m.name);
-                } else {  // unlit: an MToon whose shade colour is the lit colour
-                    m.mtoon = mtoon_defaults();
-                    m.mtoon["shade-color"] = {m.diffuse.r, m.diffuse.g, m.diffuse.b};
-                }
+                // unlit: an MToon whose shade colour and shade multiply texture are the lit ones
+                add_mtoon(shader == "VRM/MToon" ? vrm0_mtoon(props) : vrm0_unlit(m.diffuse, main), m);
             }
         }
         if (texture >= 0) m.texture = texture_of(texture, m.name);
-        m.unlit = g.extensions.count("KHR_materials_unlit") > 0;
+        // three-vrm removes KHR_materials_unlit from a material that has MToon.
+        m.unlit = m.mtoon.empty() && g.extensions.count("KHR_materials_unlit") > 0;
         return m;
+    }
+
+    // A VRM material's MToon values, and its textures decoded.
+    void add_mtoon(const VrmMaterial& vrm, Material& m) {
+        m.mtoon = vrm.values;
+        for (const auto& [key, index] : vrm.textures)
+            if (auto t = texture_of(index, m.name)) m.mtoon_textures[key] = std::move(t);
     }
 
     std::shared_ptr<const Texture> texture_of(int texture, const std::string& material) {

@@ -124,12 +124,10 @@ struct MaterialKind {
     const char* three_name;
     const char* model;
 };
-constexpr MaterialKind kMaterials[] = {{"MeshBasicMaterial", "threejs-basic"},
-                                       {"MeshLambertMaterial", "threejs-lambert"},
-                                       {"MeshPhongMaterial", "threejs-phong"},
-                                       {"MeshToonMaterial", "threejs-toon"},
-                                       {"MeshNormalMaterial", "threejs-normal"},
-                                       {"MToonMaterial", "mtoon"}};
+constexpr MaterialKind kMaterials[] = {
+    {"MeshBasicMaterial", "threejs-basic"},   {"MeshLambertMaterial", "threejs-lambert"},
+    {"MeshPhongMaterial", "threejs-phong"},   {"MeshToonMaterial", "threejs-toon"},
+    {"MeshNormalMaterial", "threejs-normal"}, {"MToonMaterial", "mtoon"}};
 
 // three-vrm 3.5's MToonMaterial (VRMC_materials_mtoon by its three-vrm names), as the `mtoon`
 // model in its threejs convention. `color` (three-vrm's litFactor) is the base colour; the
@@ -149,22 +147,33 @@ constexpr MtoonField kMtoonFields[] = {{"shadeColorFactor", "shade-color", true}
                                        {"outlineWidthFactor", "outline-width", false},
                                        {"outlineColorFactor", "outline-color", true},
                                        {"outlineLightingMixFactor", "outline-lighting-mix", false},
-                                       {"matcapFactor", "matcap-color", true}};
+                                       {"matcapFactor", "matcap-color", true},
+                                       {"shadingShiftTextureScale", "shading-shift-texture-scale", false},
+                                       {"emissive", "emissive", true},
+                                       {"emissiveIntensity", "emissive-intensity", false},
+                                       {"uvAnimationScrollXSpeedFactor", "uv-animation-scroll-x-speed", false},
+                                       {"uvAnimationScrollYSpeedFactor", "uv-animation-scroll-y-speed", false},
+                                       {"uvAnimationRotationSpeedFactor", "uv-animation-rotation-speed", false}};
 // MToonMaterial's outlineWidthMode strings (MToonMaterialOutlineWidthMode), in the order of
 // mtoon's outline-width-mode choices.
 constexpr const char* kOutlineWidthModes[] = {"none", "worldCoordinates", "screenCoordinates"};
 // Fields that change nothing in a scene of this format, so they are accepted and ignored:
-// giEqualizationFactor evens out light probes (an AmbientLight is already even) and
-// shadingShiftTextureScale scales a texture the format cannot give.
-constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor", "shadingShiftTextureScale"};
+// giEqualizationFactor evens out light probes (an AmbientLight is already even).
+constexpr const char* kMtoonIgnored[] = {"giEqualizationFactor"};
 // Fields accepted only at the value that changes nothing here (three-vrm's default); any other
-// value is a one-line error, as is every texture: the `mtoon` model does not have them yet.
-constexpr const char* kMtoonUnsupported[] = {
-    "emissive",          "emissiveIntensity",   "uvAnimationScrollXSpeedFactor",
-    "uvAnimationScrollYSpeedFactor", "uvAnimationRotationSpeedFactor", "transparentWithZWrite", "v0CompatShade",
-    "map",               "normalMap",           "emissiveMap",      "shadeMultiplyTexture",
-    "shadingShiftTexture", "matcapTexture",     "rimMultiplyTexture", "outlineWidthMultiplyTexture",
-    "uvAnimationMaskTexture"};
+// value is a one-line error, as is every texture: the format cannot give one (the mesh file's
+// own textures are used).
+constexpr const char* kMtoonUnsupported[] = {"transparentWithZWrite",
+                                             "v0CompatShade",
+                                             "map",
+                                             "normalMap",
+                                             "emissiveMap",
+                                             "shadeMultiplyTexture",
+                                             "shadingShiftTexture",
+                                             "matcapTexture",
+                                             "rimMultiplyTexture",
+                                             "outlineWidthMultiplyTexture",
+                                             "uvAnimationMaskTexture"};
 
 void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
     for (const auto& item : m.items()) {
@@ -198,6 +207,17 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
             scene.param_fields[f->param] = field;
             continue;
         }
+        if (key == "normalScale") {
+            // three.js's Vector2 as GLTFLoader sets it for a mesh without tangents: (s, -s) is
+            // mtoon's normal-scale s (docs/mtoon.md, normal maps).
+            if (!v.is_array() || v.size() != 2) r.fail(field, "expected [x, y] with y = -x");
+            const float x = r.number(v[0], field + "[0]"), y = r.number(v[1], field + "[1]");
+            if (y != -x)
+                r.fail(field, "expected [x, y] with y = -x (GLTFLoader's normalScale for a mesh without tangents)");
+            scene.params["normal-scale"] = {x};
+            scene.param_fields["normal-scale"] = field;
+            continue;
+        }
         if (std::any_of(std::begin(kMtoonIgnored), std::end(kMtoonIgnored), [&](const char* k) { return key == k; })) {
             r.number(v, field);
             continue;
@@ -205,17 +225,16 @@ void read_mtoon_material(const Reader& r, const json& m, ThreejsScene& scene) {
         if (std::any_of(std::begin(kMtoonUnsupported), std::end(kMtoonUnsupported),
                         [&](const char* k) { return key == k; })) {
             // three-vrm's defaults, at which these change nothing.
-            const bool harmless = (key == "emissive" && r.colour(v, field).linear() == glm::vec3(0.0f)) ||
-                                  key == "emissiveIntensity" ||
-                                  (key.starts_with("uvAnimation") && v.is_number() && v.get<double>() == 0.0) ||
-                                  ((key == "transparentWithZWrite" || key == "v0CompatShade") && v.is_boolean() &&
-                                   !v.get<bool>());
-            if (key == "emissiveIntensity") r.number(v, field);
+            const bool harmless =
+                ((key == "transparentWithZWrite" || key == "v0CompatShade") && v.is_boolean() && !v.get<bool>()) ||
+                ((key.ends_with("Map") || key.ends_with("Texture")) && v.is_null());
             if (!harmless)
-                r.fail(field, "not supported by Inkshade's mtoon model yet (accepted only as three-vrm's default)");
+                r.fail(field, key.ends_with("Map") || key.ends_with("Texture")
+                                  ? "a scene file cannot give a texture (the mesh file's own textures are used)"
+                                  : "not supported by Inkshade's mtoon model (accepted only as three-vrm's default)");
             continue;
         }
-        std::string list = "type, name, color, outlineWidthMode";
+        std::string list = "type, name, color, outlineWidthMode, normalScale";
         for (const MtoonField& k : kMtoonFields) list += ", " + std::string(k.three_name);
         for (const char* k : kMtoonIgnored) list += ", " + std::string(k);
         r.fail(field, "unknown field (allowed: " + list + ")");

@@ -327,6 +327,12 @@ void GpuMesh::draw_by_material(GLuint texture_unit, gpu::Texels texels,
     }
 }
 
+bool GpuMesh::range_has_mtoon_texture(size_t range, int slot) const {
+    const uint32_t m = ranges_[range].material;
+    return has_mtoon_textures() && m < material_mtoon_.size() && slot >= 0 && slot < kMtoonTextureSlotCount &&
+           material_mtoon_[m][size_t(slot)] + 2 < mtoon_textures_.size();
+}
+
 void GpuMesh::draw_range(size_t range, GLuint texture_unit, gpu::Texels texels) const {
     glBindVertexArray(vao_.id());
     const Range& r = ranges_[range];

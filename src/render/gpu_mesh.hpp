@@ -74,6 +74,9 @@ public:
     const Material* range_material(size_t range) const;
     glm::vec3 range_center(size_t range) const { return ranges_[range].center; }
     void draw_range(size_t range, GLuint texture_unit, gpu::Texels texels) const;
+    // The range's material has its own MToon texture in `slot` (kMtoonTextureSlots), not the
+    // slot's fallback.
+    bool range_has_mtoon_texture(size_t range, int slot) const;
 
     // The (part, material) ids of each object id (attribute 4) from 1: the id and material AOVs.
     const std::vector<glm::uvec2>& object_parts() const { return object_parts_; }

@@ -103,6 +103,12 @@ void set_mtoon_samplers(gpu::ShaderProgram& program) {
         program.set(kMtoonTextureSlots[slot].sampler, int(kBaseTextureUnit) + 1 + slot);
 }
 
+// Whether the range's material has a normal map (the one MToon texture whose absence the shader
+// must know: no texel value means "no perturbation" exactly).
+void set_normal_texture_on(gpu::ShaderProgram& program, const GpuMesh& mesh, size_t range) {
+    program.set("u_normal_texture_on", mesh.range_has_mtoon_texture(range, kMtoonNormalTextureSlot) ? 1 : 0);
+}
+
 // mtoon's outline is on in `values`: a width mode other than none and a width above 0.
 bool outline_on(const ShadingModel& model, const ParamValues& values) {
     const ParamSpec* mode = model.param("outline-width-mode");
@@ -178,6 +184,7 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame, const A
     program.set("u_bbox_min", frame.bounds.min);
     program.set("u_bbox_max", frame.bounds.max);
     program.set("u_viewport_size", glm::vec2(frame.options.width, frame.options.height));
+    program.set("u_time", frame.options.time);
 }
 
 class ShadingPass final : public Pass {
@@ -231,11 +238,13 @@ public:
         if (textured || material_params || unlit || rules) program.set("u_base_texture", int(kBaseTextureUnit));
         if (mtoon_textures) set_mtoon_samplers(program);
         set_material_rules(program, nullptr);
-        // Per material: its values, unlit flag, alpha mode and sides.
-        auto prepare = [&](const Material* material) {
+        // Per material range: its values, unlit flag, alpha mode, sides and normal map.
+        auto prepare = [&](size_t r) {
+            const Material* material = mesh.range_material(r);
             if (material_params) upload_params(program, model, with_material_params(model, shading.params, material));
             if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
             if (rules) set_material_rules(program, material);
+            if (mtoon_textures) set_normal_texture_on(program, mesh, r);
         };
         // Two-sided (open meshes show their lit inside), front faces winning depth ties
         // (render/back_faces.hpp); back faces culled when none can be seen. Opaque and cut-out
@@ -246,7 +255,7 @@ public:
             for (size_t r = 0; r < mesh.range_count(); ++r) {
                 const Material* material = mesh.range_material(r);
                 if (rules && material && (blended(material) || (back && material->sides == FaceSides::Front))) continue;
-                prepare(material);
+                prepare(r);
                 mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
             }
         });
@@ -306,6 +315,7 @@ private:
                 upload_params(program, model, merged);
             }
             if (rules) set_material_rules(program, material);
+            if (variant.mtoon_textures) set_normal_texture_on(program, mesh, r);
             mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
         }
     }
@@ -316,9 +326,8 @@ private:
     // "over" (premultiplied: the shader writes colour x alpha) with depth tested and written
     // only with transparentWithZWrite. A double-sided one draws its back faces first, then its
     // front faces (three.js's two passes for a transparent DoubleSide material).
-    void draw_blended(const Frame& frame, gpu::ShaderProgram& program,
-                      const std::function<void(const Material*)>& prepare, ColorConvention convention,
-                      const std::function<void(size_t)>& after) {
+    void draw_blended(const Frame& frame, gpu::ShaderProgram& program, const std::function<void(size_t)>& prepare,
+                      ColorConvention convention, const std::function<void(size_t)>& after) {
         const GpuMesh& mesh = *frame.mesh;
         const glm::vec3 forward = glm::normalize(frame.camera.target - frame.camera.eye);
         std::vector<size_t> order;
@@ -334,7 +343,7 @@ private:
         for (size_t r : order) {
             const Material* material = mesh.range_material(r);
             program.use();
-            prepare(material);
+            prepare(r);
             const gpu::DepthScope depth(GL_LESS, material->blend_depth_write);
             if (material->sides != FaceSides::Front) {
                 const gpu::CullScope cull(GL_FRONT);

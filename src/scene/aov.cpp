@@ -34,7 +34,9 @@ std::vector<uint8_t> line_mask(Renderer& renderer, const Scene& scene, const Cam
 Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light, AovImages& aovs,
                    std::vector<PassTiming>* timings) {
     aovs = {};
-    Image image = renderer.render(camera, light, scene.shading(), scene.style.lines, scene.options, aovs, timings);
+    RenderOptions options = scene.options;
+    options.time = scene.time;  // mtoon's UV animation
+    Image image = renderer.render(camera, light, scene.shading(), scene.style.lines, options, aovs, timings);
     aovs.width = image.width;
     aovs.height = image.height;
     if (scene.aovs.contains(Aov::Lines))

@@ -27,7 +27,9 @@ void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNa
 
 // The pose's values; the names are the model file's, checked when it loads.
 void check_pose(const SceneRequest& r) {
-    if (r.time && !std::isfinite(*r.time)) throw InputError(option_name(r.names, "time") + ": must be finite");
+    // Seconds from the start: of a glTF animation (clamped to its range) and of MToon's UV animation.
+    if (r.time && !(std::isfinite(*r.time) && *r.time >= 0.0f))
+        throw InputError(option_name(r.names, "time") + ": expected seconds, a finite number >= 0");
     for (const auto& [list, option] : {std::pair{&r.expressions, "expression"}, std::pair{&r.morphs, "morph"}})
         for (const NamedWeight& w : *list) {
             if (w.name.empty()) throw InputError(option_name(r.names, option) + ": empty name");
@@ -390,7 +392,9 @@ Light Scene::light(const BoundingBox& box, const Camera& cam) const {
 
 Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
                    std::vector<PassTiming>* timings) {
-    return renderer.render(camera, light, scene.shading(), scene.style.lines, scene.options, timings);
+    RenderOptions options = scene.options;
+    options.time = scene.time;  // mtoon's UV animation
+    return renderer.render(camera, light, scene.shading(), scene.style.lines, options, timings);
 }
 
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,

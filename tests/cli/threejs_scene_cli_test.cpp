@@ -114,7 +114,10 @@ const char* kMtoonScene = R"({
                "shadingShiftFactor": -0.1, "shadingToonyFactor": 0.7, "parametricRimColorFactor": [0.5, 0.4, 0.3],
                "parametricRimFresnelPowerFactor": 2, "parametricRimLiftFactor": 0.05, "rimLightingMixFactor": 0.5,
                "giEqualizationFactor": 0.9, "outlineWidthMode": "screenCoordinates", "outlineWidthFactor": 0.02,
-               "outlineColorFactor": [0.1, 0.05, 0.2], "outlineLightingMixFactor": 0.5},
+               "outlineColorFactor": [0.1, 0.05, 0.2], "outlineLightingMixFactor": 0.5,
+               "emissive": [0.05, 0.02, 0], "emissiveIntensity": 2, "shadingShiftTextureScale": 0.5,
+               "normalScale": [2, -2], "uvAnimationScrollXSpeedFactor": 0.3, "uvAnimationScrollYSpeedFactor": -0.1,
+               "uvAnimationRotationSpeedFactor": 0.2},
   "lights": [
     {"type": "PointLight", "color": [1, 0.9, 0.8], "intensity": 30, "position": [2, 3, 4], "decay": 1.5,
      "distance": 12},
@@ -130,7 +133,10 @@ const char* kMtoonFlags =
     "builtin:torus-knot --shading mtoon --base-color 0.9,0.6,0.4 --set shade-color=0.3,0.2,0.45 "
     "--set shading-shift=-0.1 --set shading-toony=0.7 --set rim-color=0.5,0.4,0.3 --set rim-fresnel-power=2 "
     "--set rim-lift=0.05 --set rim-lighting-mix=0.5 --set shadows=false --set outline-width-mode=screen-coordinates "
-    "--set outline-width=0.02 --set outline-color=0.1,0.05,0.2 --set outline-lighting-mix=0.5 --light-type point "
+    "--set outline-width=0.02 --set outline-color=0.1,0.05,0.2 --set outline-lighting-mix=0.5 "
+    "--set emissive=0.05,0.02,0 --set emissive-intensity=2 --set shading-shift-texture-scale=0.5 "
+    "--set normal-scale=2 --set uv-animation-scroll-x-speed=0.3 --set uv-animation-scroll-y-speed=-0.1 "
+    "--set uv-animation-rotation-speed=0.2 --light-type point "
     "--light-color 1,0.9,0.8 --light-intensity 30 --light-decay 1.5 --light-distance 12 --light-pos 2,3,4 "
     "--ambient 0.2,0.2,0.25 --ortho --ortho-height 3 --near 0.1 --far 40 --eye 3,2,6 --target 0,0,0 "
     "--background '#ffffff' --size 160x120 --samples 1";
@@ -152,6 +158,14 @@ TEST(ThreejsSceneCli, MToonMaterialSceneAndEquivalentFlagsGiveByteIdenticalImage
     for (int y = 0; y < lit.height; ++y)
         for (int x = 0; x < lit.width; ++x) sum_lit += lit.pixel(x, y)[0], sum_dark += dark.pixel(x, y)[0];
     EXPECT_GT(sum_lit, sum_dark + 20 * 255) << "intensity 30 looks like intensity 1";
+    // The emission counts too: without it (the flag over the scene) the knot is darker.
+    auto unlit = run_cli("render --scene " + scene + " --set emissive=0,0,0 -o " + dir.file("no-emission.png"));
+    ASSERT_EQ(unlit.status, 0) << unlit.err;
+    const Image plain = read_png(dir.file("no-emission.png"));
+    long sum_plain = 0;
+    for (int y = 0; y < plain.height; ++y)
+        for (int x = 0; x < plain.width; ++x) sum_plain += plain.pixel(x, y)[0];
+    EXPECT_GT(sum_lit, sum_plain + 20 * 255) << "emissive changes nothing";
 }
 
 TEST(ThreejsSceneCli, CommandLineOptionsOverrideTheScene) {

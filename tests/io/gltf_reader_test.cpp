@@ -364,6 +364,117 @@ TEST(GltfReader, VrmZeroMToonTexturesAreRead) {
     }
 }
 
+// VRM 0.x's shade, emission, bump and UV animation properties as VRMMaterialsV0CompatPlugin
+// ports them: _EmissionColor gamma-decoded into emissiveFactor, _BumpScale the normal map's
+// scale, _UvAnimScrollY negated (0.x scrolled v up the image), the textures by their 0.x names.
+TEST(GltfReader, VrmZeroMapsEmissionAndUvAnimationAreConverted) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    nlohmann::json props = vrm0_material_properties();
+    props[0]["floatProperties"]["_BumpScale"] = 0.7;
+    props[0]["floatProperties"]["_UvAnimScrollX"] = 0.2;
+    props[0]["floatProperties"]["_UvAnimScrollY"] = 0.3;
+    props[0]["floatProperties"]["_UvAnimRotation"] = 0.1;
+    props[0]["vectorProperties"]["_EmissionColor"] = {0.5, 0.25, 0, 1};
+    props[0]["textureProperties"] = {
+        {"_ShadeTexture", 0}, {"_EmissionMap", 0}, {"_BumpMap", 0}, {"_UvAnimMaskTexture", 0}};
+    g.doc["extensions"]["VRM"] = {{"materialProperties", props}};
+    const Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    const Material& mat = m.materials[0];
+    const auto& p = mat.mtoon;
+    EXPECT_NEAR(p.at("emissive")[0], std::pow(0.5f, 2.2f), 1e-6f);
+    EXPECT_NEAR(p.at("emissive")[1], std::pow(0.25f, 2.2f), 1e-6f);
+    EXPECT_EQ(p.at("emissive")[2], 0.0f);
+    EXPECT_FLOAT_EQ(p.at("emissive-intensity")[0], 1.0f);
+    EXPECT_FLOAT_EQ(p.at("normal-scale")[0], 0.7f);
+    EXPECT_FLOAT_EQ(p.at("uv-animation-scroll-x-speed")[0], 0.2f);
+    EXPECT_FLOAT_EQ(p.at("uv-animation-scroll-y-speed")[0], -0.3f);
+    EXPECT_FLOAT_EQ(p.at("uv-animation-rotation-speed")[0], 0.1f);
+    EXPECT_FLOAT_EQ(p.at("shading-shift-texture-scale")[0], 1.0f);
+    for (const char* key :
+         {"shade-multiply-texture", "emissive-texture", "normal-texture", "uv-animation-mask-texture"}) {
+        ASSERT_TRUE(mat.mtoon_textures.count(key)) << key;
+        EXPECT_EQ(mat.mtoon_textures.at(key)->rgba, kTexturePixels) << key;
+    }
+    EXPECT_EQ(mat.mtoon_textures.count("shading-shift-texture"), 0u);  // MToon 0.x has none
+
+    // Without them: no emission, scale 1, no animation.
+    const Mesh plain = load_mesh(dir.write("plain.vrm", [&] {
+        GltfBuilder q = textured_quad();
+        q.doc["extensions"]["VRM"] = {{"materialProperties", vrm0_material_properties()}};
+        return q.glb();
+    }()));
+    EXPECT_EQ(plain.materials[0].mtoon.at("emissive"), (std::vector<float>{0, 0, 0}));
+    EXPECT_FLOAT_EQ(plain.materials[0].mtoon.at("normal-scale")[0], 1.0f);
+    EXPECT_FLOAT_EQ(plain.materials[0].mtoon.at("uv-animation-scroll-y-speed")[0], 0.0f);
+}
+
+// VRM 0.x's VRM/Unlit* shaders become an MToon material whose shade colour and shade multiply
+// texture are the lit colour and main texture, so light changes nothing.
+TEST(GltfReader, VrmZeroUnlitShadesWithItsMainTexture) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    g.doc["extensions"]["VRM"] = {
+        {"materialProperties", nlohmann::json::array({{{"name", "unlit"},
+                                                       {"shader", "VRM/UnlitTexture"},
+                                                       {"vectorProperties", {{"_Color", {0.5, 1, 1, 1}}}},
+                                                       {"textureProperties", {{"_MainTex", 0}}}}})}};
+    const Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    const Material& mat = m.materials[0];
+    EXPECT_NEAR(mat.mtoon.at("shade-color")[0], std::pow(0.5f, 2.2f), 1e-6f);
+    ASSERT_TRUE(mat.mtoon_textures.count("shade-multiply-texture"));
+    EXPECT_EQ(mat.mtoon_textures.at("shade-multiply-texture"), mat.texture);
+}
+
+// VRM 1.0: the glTF material's emissiveFactor, KHR_materials_emissive_strength, emissiveTexture
+// and normalTexture (with its scale), and VRMC_materials_mtoon's shade multiply, shading shift
+// (with its scale) and UV animation, as three-vrm's loader plugins give them to MToonMaterial;
+// KHR_materials_unlit beside MToon is dropped, as three-vrm drops it.
+TEST(GltfReader, VrmOneMapsEmissionAndUvAnimationAreRead) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    nlohmann::json& mat = g.doc["materials"][0];
+    mat["emissiveFactor"] = {0.5, 0.25, 0.125};
+    mat["emissiveTexture"] = {{"index", 0}};
+    mat["normalTexture"] = {{"index", 0}, {"scale", 0.6}};
+    mat["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", 4}};
+    mat["extensions"]["KHR_materials_unlit"] = nlohmann::json::object();
+    mat["extensions"]["VRMC_materials_mtoon"] = {{"specVersion", "1.0"},
+                                                 {"shadeMultiplyTexture", {{"index", 0}}},
+                                                 {"shadingShiftTexture", {{"index", 0}, {"scale", 0.3}}},
+                                                 {"uvAnimationMaskTexture", {{"index", 0}}},
+                                                 {"uvAnimationScrollXSpeedFactor", 0.5},
+                                                 {"uvAnimationScrollYSpeedFactor", -0.25},
+                                                 {"uvAnimationRotationSpeedFactor", 2}};
+    const Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    const Material& out = m.materials[0];
+    const auto& p = out.mtoon;
+    EXPECT_EQ(p.at("emissive"), (std::vector<float>{0.5f, 0.25f, 0.125f}));  // linear, as written
+    EXPECT_FLOAT_EQ(p.at("emissive-intensity")[0], 4.0f);
+    EXPECT_FLOAT_EQ(p.at("normal-scale")[0], 0.6f);
+    EXPECT_FLOAT_EQ(p.at("shading-shift-texture-scale")[0], 0.3f);
+    EXPECT_FLOAT_EQ(p.at("uv-animation-scroll-x-speed")[0], 0.5f);
+    EXPECT_FLOAT_EQ(p.at("uv-animation-scroll-y-speed")[0], -0.25f);
+    EXPECT_FLOAT_EQ(p.at("uv-animation-rotation-speed")[0], 2.0f);
+    for (const char* key : {"shade-multiply-texture", "shading-shift-texture", "emissive-texture", "normal-texture",
+                            "uv-animation-mask-texture"}) {
+        ASSERT_TRUE(out.mtoon_textures.count(key)) << key;
+        EXPECT_EQ(out.mtoon_textures.at(key), out.texture) << key;  // one image, decoded once
+    }
+    EXPECT_FALSE(out.unlit);
+
+    // The specification's defaults: no emission (intensity 1), scales 1, no animation.
+    mat = {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}}},
+           {"extensions", {{"VRMC_materials_mtoon", {{"specVersion", "1.0"}}}}}};
+    const Mesh defaults = load_mesh(dir.write("plain.vrm", g.glb()));
+    const auto& d = defaults.materials[0].mtoon;
+    EXPECT_EQ(d.at("emissive"), (std::vector<float>{0, 0, 0}));
+    EXPECT_FLOAT_EQ(d.at("emissive-intensity")[0], 1.0f);
+    EXPECT_FLOAT_EQ(d.at("normal-scale")[0], 1.0f);
+    EXPECT_FLOAT_EQ(d.at("shading-shift-texture-scale")[0], 1.0f);
+    EXPECT_FLOAT_EQ(d.at("uv-animation-rotation-speed")[0], 0.0f);
+}
+
 TEST(GltfReader, PlainGltfMaterialHasNoMToonParameters) {
     TempDir dir;
     Mesh m = load_mesh(dir.write("quad.glb", textured_quad().glb()));

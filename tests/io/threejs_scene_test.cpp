@@ -71,6 +71,24 @@ TEST(ThreejsScene, MToonMaterialFieldsMapOntoTheMtoonModel) {
     EXPECT_EQ(s.params.at("outline-width-mode"), ParamValue{0.0f});  // "none"
     EXPECT_EQ(s.params.at("outline-width"), ParamValue{0.02f});
 
+    // Emission, the shading shift texture's scale, the normal map's scale and the UV animation.
+    const ThreejsScene em = parse(R"({"mesh": "m.obj", "material": {"type": "MToonMaterial",
+        "emissive": [0.5, 0.25, 0], "emissiveIntensity": 2, "shadingShiftTextureScale": 0.5, "normalScale": [2, -2],
+        "uvAnimationScrollXSpeedFactor": 0.25, "uvAnimationScrollYSpeedFactor": -0.5,
+        "uvAnimationRotationSpeedFactor": 1.5}})");
+    EXPECT_EQ(em.params.at("emissive"), (ParamValue{0.5f, 0.25f, 0.0f}));
+    EXPECT_EQ(em.params.at("emissive-intensity"), ParamValue{2.0f});
+    EXPECT_EQ(em.params.at("shading-shift-texture-scale"), ParamValue{0.5f});
+    EXPECT_EQ(em.params.at("normal-scale"), ParamValue{2.0f});
+    EXPECT_EQ(em.params.at("uv-animation-scroll-x-speed"), ParamValue{0.25f});
+    EXPECT_EQ(em.params.at("uv-animation-scroll-y-speed"), ParamValue{-0.5f});
+    EXPECT_EQ(em.params.at("uv-animation-rotation-speed"), ParamValue{1.5f});
+    EXPECT_EQ(em.param_fields.at("emissive"), "material.emissive");
+    // Hex text is sRGB, decoded as THREE.Color holds it.
+    EXPECT_EQ(parse(R"({"mesh": "m.obj", "material": {"type": "MToonMaterial", "emissive": "#808080"}})")
+                  .params.at("emissive")[0],
+              srgb_to_linear(128.0f / 255.0f));
+
     // The outline: outlineWidthMode by three-vrm's strings, the colour linear as THREE.Color holds it.
     const ThreejsScene o = parse(R"({"mesh": "m.obj", "material": {"type": "MToonMaterial",
         "outlineWidthMode": "screenCoordinates", "outlineWidthFactor": 0.004, "outlineColorFactor": "#ff0000",
@@ -94,13 +112,18 @@ TEST(ThreejsScene, MToonMaterialFieldsMapOntoTheMtoonModel) {
         }
         return std::string();
     };
-    const std::string unsupported = "not supported by Inkshade's mtoon model yet";
     EXPECT_EQ(error(R"("outlineWidthMode": "screen")"),
               "scene.json: material.outlineWidthMode: expected \"none\", \"worldCoordinates\" or "
               "\"screenCoordinates\", got \"screen\"");
-    EXPECT_NE(error(R"("emissive": "#100000")").find("material.emissive: " + unsupported), std::string::npos);
-    EXPECT_NE(error(R"("matcapTexture": 0)").find("material.matcapTexture: " + unsupported), std::string::npos);
-    EXPECT_NE(error(R"("uvAnimationRotationSpeedFactor": 1)").find(unsupported), std::string::npos);
+    EXPECT_EQ(error(R"("matcapTexture": 0)"),
+              "scene.json: material.matcapTexture: a scene file cannot give a "
+              "texture (the mesh file's own textures are used)");
+    EXPECT_NE(error(R"("normalMap": {"uuid": "x"})").find("material.normalMap: a scene file cannot give a texture"),
+              std::string::npos);
+    EXPECT_NE(error(R"("v0CompatShade": true)").find("material.v0CompatShade: not supported by Inkshade's mtoon"),
+              std::string::npos);
+    EXPECT_NE(error(R"("normalScale": [1, 1])").find("material.normalScale: expected [x, y] with y = -x"),
+              std::string::npos);
     EXPECT_NE(error(R"("shadeColor": [0, 0, 0])").find("material.shadeColor: unknown field (allowed: type, name"),
               std::string::npos);
     EXPECT_NE(error(R"("shadingToonyFactor": "hard")").find("material.shadingToonyFactor: expected a number"),
