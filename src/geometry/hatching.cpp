@@ -367,7 +367,10 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
     Hatching out;
     const double diagonal = bounding_diagonal(mesh);
     const double spacing =
-        options.spacing > 0.0f && std::isfinite(options.spacing) ? double(options.spacing) : 0.015 * diagonal;
+        options.spacing > 0.0f && std::isfinite(options.spacing)
+            ? double(options.spacing)
+            : 0.015 * diagonal /
+                  std::clamp(std::isfinite(options.density) ? double(options.density) : 1.0, 0.01, 100.0);
     out.spacing = float(spacing);
     if (!(spacing > 0.0) || mesh.triangles.empty()) return out;
     const int levels = std::clamp(options.levels, 1, 4);

@@ -28,8 +28,10 @@ constexpr uint32_t kMaxHatchNodes = 0xfffffff0u;
 
 struct HatchOptions {
     // World distance between neighbouring level-0 strokes of one family; 0 = 1.5 % of the
-    // bounding-box diagonal. Level k strokes are spacing / 2^k from their neighbours.
+    // bounding-box diagonal divided by `density`. Level k strokes are spacing / 2^k from their
+    // neighbours.
     float spacing = 0.0f;
+    float density = 1.0f;
     int levels = 2;     // density levels per family (1..4)
     bool cross = true;  // also the second family, across the first
     int smoothing = 8;  // smoothing iterations of the cross field
