@@ -4,8 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <random>
 #include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace inkshade::geometry {
 namespace {
@@ -318,47 +322,86 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
     const size_t n = mesh.positions.size();
     if (normals.size() != n || c.pdir1.size() != n || c.pdir2.size() != n || c.k1.size() != n || c.k2.size() != n)
         throw std::invalid_argument("hatch_direction_field: need normals and curvature per vertex");
-    std::vector<glm::dvec3> dir(n, glm::dvec3(0.0)), nrm(n, glm::dvec3(0.0));
-    std::vector<double> weight(n, 0.0);
+    // Each vertex's frame: e1 the principal direction of larger |k| in its tangent plane,
+    // e2 = n × e1. A cross at angle θ from e1 is the unit complex number z = e^{4iθ} (a cross
+    // looks the same turned by 90°: Hertzmann & Zorin 2000 §4.1, Ray et al. 2008's N-RoSy), so
+    // crosses average as complex numbers; each starts at z = 1, its own principal direction.
+    std::vector<glm::vec3> e1(n, glm::vec3(0.0f)), e2(n, glm::vec3(0.0f));
+    std::vector<float> weight(n, 0.0f);
     for (size_t v = 0; v < n; ++v) {
         const glm::dvec3 nv = unit_or_zero(glm::dvec3(normals[v]));
-        nrm[v] = nv;
         const double k1 = c.k1[v], k2 = c.k2[v];
         const glm::dvec3 d = std::abs(k1) >= std::abs(k2) ? glm::dvec3(c.pdir1[v]) : glm::dvec3(c.pdir2[v]);
-        dir[v] = unit_or_zero(d - glm::dot(d, nv) * nv);
+        const glm::dvec3 t = unit_or_zero(d - glm::dot(d, nv) * nv);
+        e1[v] = glm::vec3(t);
+        e2[v] = glm::vec3(glm::cross(nv, t));
         const double sum = std::abs(k1) + std::abs(k2);
-        weight[v] = std::isfinite(sum) && sum > 0.0 ? std::abs(k1 - k2) / sum : 0.0;
+        // Anisotropy: strongly curved, non-umbilic vertices keep their direction; a floor lets
+        // umbilic regions (all weights near 0) still average.
+        weight[v] = float((std::isfinite(sum) && sum > 0.0 ? std::abs(k1 - k2) / sum : 0.0) + 1e-3);
     }
-    // Vertex neighbours through the faces (each undirected edge once per face side is fine:
-    // a neighbour counted twice on a manifold weighs the same for every vertex).
+    // Each vertex's distinct neighbours through its faces, with the turn of a neighbour's frame
+    // into the vertex's (its e1 laid into the vertex's tangent plane), as e^{4iφ}.
     const auto& tris = mesh.triangles;
-    std::vector<glm::dvec3> next(n);
-    for (int it = 0; it < iterations; ++it) {
-        for (size_t v = 0; v < n; ++v) next[v] = dir[v] * (weight[v] + 1e-3);
-        for (const glm::uvec3& t : tris) {
-            if (t.x >= n || t.y >= n || t.z >= n) continue;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = t[k];
-                if (dir[v] == glm::dvec3(0.0)) continue;
-                for (int j = 1; j < 3; ++j) {
-                    const uint32_t u = t[(k + j) % 3];
-                    if (dir[u] == glm::dvec3(0.0)) continue;
-                    // u's cross brought into v's tangent plane, its member nearest v's direction.
-                    glm::dvec3 du = dir[u] - glm::dot(dir[u], nrm[v]) * nrm[v];
-                    du = unit_or_zero(du);
-                    if (du == glm::dvec3(0.0)) continue;
-                    next[v] += matched(du, nrm[v], dir[v]) * (weight[u] + 1e-3);
-                }
+    std::vector<uint32_t> first(n + 1, 0), around;
+    for (const glm::uvec3& t : tris)
+        if (t.x < n && t.y < n && t.z < n)
+            for (int k = 0; k < 3; ++k) first[t[k] + 1] += 2;
+    for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    around.resize(first[n]);
+    {
+        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+        for (const glm::uvec3& t : tris)
+            if (t.x < n && t.y < n && t.z < n)
+                for (int k = 0; k < 3; ++k)
+                    for (int j = 1; j < 3; ++j) around[fill[t[k]]++] = t[(k + j) % 3];
+    }
+    std::vector<std::complex<float>> turn(around.size(), 0.0f);
+    std::vector<uint32_t> count(n, 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t v = r.begin(); v != r.end(); ++v) {
+            uint32_t* begin = around.data() + first[v];
+            uint32_t* end = around.data() + first[v + 1];
+            std::sort(begin, end);
+            end = std::unique(begin, end);
+            count[v] = uint32_t(end - begin);
+            if (e1[v] == glm::vec3(0.0f)) continue;
+            for (uint32_t a = first[v]; a < first[v] + count[v]; ++a) {
+                const uint32_t u = around[a];
+                if (e1[u] == glm::vec3(0.0f)) continue;
+                const float x = glm::dot(e1[u], e1[v]), y = glm::dot(e1[u], e2[v]);
+                const float len = std::hypot(x, y);
+                if (!(len > 1e-6f)) continue;
+                const std::complex<float> once(x / len, y / len);
+                turn[a] = (once * once) * (once * once);
             }
         }
-        for (size_t v = 0; v < n; ++v) {
-            if (dir[v] == glm::dvec3(0.0)) continue;
-            const glm::dvec3 d = unit_or_zero(next[v] - glm::dot(next[v], nrm[v]) * nrm[v]);
-            if (d != glm::dvec3(0.0)) dir[v] = d;
-        }
+    });
+    std::vector<std::complex<float>> z(n, 1.0f), next(n);
+    for (size_t v = 0; v < n; ++v)
+        if (e1[v] == glm::vec3(0.0f)) z[v] = 0.0f;
+    // Jacobi rounds (every vertex from the previous round's crosses), so the result does not
+    // depend on how the vertices are split between threads.
+    for (int it = 0; it < iterations; ++it) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t v = r.begin(); v != r.end(); ++v) {
+                next[v] = z[v];
+                if (z[v] == 0.0f) continue;
+                std::complex<float> sum = weight[v] * z[v];
+                for (uint32_t a = first[v]; a < first[v] + count[v]; ++a)
+                    sum += weight[around[a]] * turn[a] * z[around[a]];
+                const float len = std::abs(sum);
+                if (len > 1e-12f && std::isfinite(len)) next[v] = sum / len;
+            }
+        });
+        std::swap(z, next);
     }
-    std::vector<glm::vec3> out(n);
-    for (size_t v = 0; v < n; ++v) out[v] = glm::vec3(dir[v]);
+    std::vector<glm::vec3> out(n, glm::vec3(0.0f));
+    for (size_t v = 0; v < n; ++v) {
+        if (z[v] == 0.0f) continue;
+        const float theta = 0.25f * std::arg(z[v]);
+        out[v] = std::cos(theta) * e1[v] + std::sin(theta) * e2[v];
+    }
     return out;
 }
 
@@ -367,7 +410,10 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
     Hatching out;
     const double diagonal = bounding_diagonal(mesh);
     const double spacing =
-        options.spacing > 0.0f && std::isfinite(options.spacing) ? double(options.spacing) : 0.015 * diagonal;
+        options.spacing > 0.0f && std::isfinite(options.spacing)
+            ? double(options.spacing)
+            : 0.015 * diagonal /
+                  std::clamp(std::isfinite(options.density) ? double(options.density) : 1.0, 0.01, 100.0);
     out.spacing = float(spacing);
     if (!(spacing > 0.0) || mesh.triangles.empty()) return out;
     const int levels = std::clamp(options.levels, 1, 4);

@@ -28,8 +28,10 @@ constexpr uint32_t kMaxHatchNodes = 0xfffffff0u;
 
 struct HatchOptions {
     // World distance between neighbouring level-0 strokes of one family; 0 = 1.5 % of the
-    // bounding-box diagonal. Level k strokes are spacing / 2^k from their neighbours.
+    // bounding-box diagonal divided by `density`. Level k strokes are spacing / 2^k from their
+    // neighbours.
     float spacing = 0.0f;
+    float density = 1.0f;
     int levels = 2;     // density levels per family (1..4)
     bool cross = true;  // also the second family, across the first
     int smoothing = 8;  // smoothing iterations of the cross field
@@ -57,10 +59,10 @@ struct Hatching {
 
 // The per-vertex cross field: a unit tangent direction per vertex (the other family is
 // normal × direction), the principal direction of larger |curvature| smoothed by
-// `iterations` rounds of averaging with the neighbours, each weighted by its anisotropy
-// |k1 − k2| / (|k1| + |k2|) (umbilic regions take their neighbours' directions, strongly
-// curved ones keep theirs; Hertzmann & Zorin 2000, section 4.1). Zero for vertices without a
-// usable tangent frame.
+// `iterations` rounds of averaging with the neighbours as crosses (unit complex numbers
+// e^{4iθ}), each weighted by its anisotropy |k1 − k2| / (|k1| + |k2|) (umbilic regions take
+// their neighbours' directions, strongly curved ones keep theirs; Hertzmann & Zorin 2000,
+// section 4.1). Zero for vertices without a usable tangent frame.
 std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                                              const Curvature& curvature, int iterations);
 

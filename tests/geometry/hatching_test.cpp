@@ -271,6 +271,38 @@ TEST(Hatching, FinerLevelsFadeOutWhereTheSurfaceTurnsAway) {
     for (const LineSegment& s : thinned) EXPECT_FALSE(grazing(s.a) && grazing(s.b));
 }
 
+// The field averages crosses, not vectors: on a flat grid whose principal directions alternate
+// between x and y (the same cross), smoothing leaves every direction on an axis; averaging
+// them as vectors would turn them to the diagonals.
+TEST(Hatching, DirectionFieldAveragesCrossesNotVectors) {
+    Mesh grid;
+    const int n = 12;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            grid.positions.push_back({float(i), float(j), 0.0f});
+            grid.normals.push_back({0.0f, 0.0f, 1.0f});
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const uint32_t a = uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+            grid.triangles.push_back({a, b, d});
+            grid.triangles.push_back({a, d, c});
+        }
+    Curvature k;
+    for (int v = 0; v < n * n; ++v) {
+        const bool along_x = (v + v / n) % 2 == 0;
+        k.pdir1.push_back(along_x ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0));
+        k.pdir2.push_back(along_x ? glm::vec3(0, 1, 0) : glm::vec3(-1, 0, 0));
+        k.k1.push_back(1.0f);
+        k.k2.push_back(0.0f);
+    }
+    const std::vector<glm::vec3> field = hatch_direction_field(grid, grid.normals, k, 20);
+    for (const glm::vec3& d : field) {
+        EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);
+        EXPECT_LT(std::min(std::abs(d.x), std::abs(d.y)), 0.02f) << d.x << ", " << d.y;
+    }
+}
+
 TEST(Hatching, DegenerateInputDoesNotCrash) {
     Mesh empty;
     const Hatching h0 = trace_hatching(empty, {}, Curvature{}, EdgeAdjacency{});

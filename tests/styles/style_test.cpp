@@ -270,13 +270,26 @@ TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
     EXPECT_EQ(types_of(load_style("ink-vector")),
               (std::vector<std::string>{"contour", "suggestive", "crease", "border"}));
     EXPECT_EQ(load_style("anime").shading.params, load_style("cel-000").shading.params);
+    // sketch and manga: the hatching model's strokes under tapered object-space contours,
+    // sketch's drawn twice with jitter, manga's with a calligraphic nib.
+    for (const char* name : {"sketch", "manga"}) {
+        const Style st = load_style(name);
+        EXPECT_EQ(st.shading.model, "hatching") << name;
+        ASSERT_FALSE(st.lines.empty());
+        EXPECT_EQ(st.lines.front().type, "contour");
+        EXPECT_GT(line_param(st.lines.front(), "taper-in").at(0), 0.0f) << name;
+        EXPECT_GT(line_param(st.lines.front(), "taper-out").at(0), 0.0f) << name;
+    }
+    EXPECT_EQ(line_param(load_style("sketch").lines.front(), "sketch-passes").at(0), 2.0f);
+    EXPECT_GT(line_param(load_style("sketch").lines.front(), "sketch-jitter").at(0), 0.0f);
+    EXPECT_GT(line_param(load_style("manga").lines.front(), "calligraphy").at(0), 0.0f);
 
     Renderer& r = test::shared_renderer();
     const Mesh teapot = load_mesh("builtin:teapot");
     r.set_mesh(teapot);
     CameraOptions co;
     const Camera camera = frame_camera(teapot.bounds(), co, 1.0f);
-    for (const char* name : {"anime", "toon", "ink", "technical", "ink-vector"}) {
+    for (const char* name : {"anime", "toon", "ink", "technical", "ink-vector", "sketch", "manga"}) {
         Style s = load_style(name);
         RenderOptions o;
         o.width = o.height = 192;
@@ -286,7 +299,9 @@ TEST(Style, CompositeStylesCarryTheirLinesAndRender) {
         auto dark_pixels = [&](const std::vector<LineSettings>& lines) {
             Image img = r.render(camera, light, s.shading, lines, o);
             int n = 0;
-            for (size_t i = 0; i < img.rgba.size(); i += 4) n += img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2] < 60;
+            // Pencil-grey contours (sketch) are darker than its hatching, not black.
+            const int dark = s.shading.model == "hatching" ? 200 : 60;
+            for (size_t i = 0; i < img.rgba.size(); i += 4) n += img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2] < dark;
             return n;
         };
         const int with = dark_pixels(s.lines), without = dark_pixels({});

@@ -11,6 +11,7 @@ namespace {
 
 std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
     const HatchOptions options{.spacing = line_number(settings, "spacing"),
+                               .density = line_number(settings, "density"),
                                .levels = int(line_number(settings, "levels")),
                                .cross = line_number(settings, "cross") != 0.0f,
                                .smoothing = int(line_number(settings, "smoothing")),
@@ -42,7 +43,9 @@ const ObjectLineRegistration registration{
          glm::vec3(0.0f), 0.75f,
          {float_param("spacing", 0.0f, 0.0f, 1e9f,
                       "world distance between neighbouring strokes of the lightest level; 0 = 1.5% of the "
-                      "bounding-box diagonal"),
+                      "bounding-box diagonal / density"),
+          float_param("density", 1.0f, 0.01f, 100.0f,
+                      "with spacing 0: strokes this many times denser than at 1.5% of the diagonal apart"),
           int_param("levels", 2, 1, 4, "density levels per direction, each adding strokes halfway between"),
           bool_param("cross", true, "also strokes across the first direction (cross-hatching)"),
           list_param("tones", {0.8f, 0.6f, 0.4f, 0.2f}, 8, 0.0f, 1.0f,
@@ -55,7 +58,7 @@ const ObjectLineRegistration registration{
           float_param("thin", 0.25f, 0.0f, 1.0f,
                       "level k > 0 fades out where n·v < thin·2^(k−1), so strokes do not crowd towards the "
                       "outline; 0 = never"),
-          int_param("smoothing", 8, 0, 100, "smoothing iterations of the principal-direction field")},
+          int_param("smoothing", 30, 0, 1000, "smoothing iterations of the principal-direction field")},
          0.0f)},
     extract,
     {.adjacency = true, .curvature = true}};

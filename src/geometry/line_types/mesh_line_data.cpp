@@ -150,7 +150,7 @@ const std::vector<LineSegment>& MeshLineData::intersections() {
 
 const Hatching& MeshLineData::hatching(const HatchOptions& o) {
     const HatchOptions& k = hatch_options_;
-    if (!hatching_ || k.spacing != o.spacing || k.levels != o.levels || k.cross != o.cross ||
+    if (!hatching_ || k.spacing != o.spacing || k.density != o.density || k.levels != o.levels || k.cross != o.cross ||
         k.smoothing != o.smoothing || k.seed != o.seed) {
         const Curvature& curv = curvature();
         const EdgeAdjacency& adj = adjacency();
