@@ -5,8 +5,9 @@
 #include <mutex>
 #include <stdexcept>
 
+#include <stb_image.h>
+
 #include "core/embedded_file.hpp"
-#include "io/texture_image.hpp"
 
 namespace inkshade::render {
 
@@ -19,15 +20,15 @@ const BrushImage* shipped_brush(const std::string& name) {
     if (auto it = decoded.find(name); it != decoded.end()) return it->second.get();
     for (const EmbeddedBinary& f : embedded_brushes()) {
         if (f.path != name + ".png") continue;
-        std::string problem;
-        const auto texture = io::decode_texture(f.bytes, f.size, f.path, problem);
+        int w = 0, h = 0, channels = 0;
+        unsigned char* grey = stbi_load_from_memory(f.bytes, int(f.size), &w, &h, &channels, 1);
         // The images are part of the build: one that does not decode is a build defect.
-        if (!texture) throw std::logic_error("embedded brush " + name + ": " + problem);
+        if (!grey) throw std::logic_error("embedded brush " + name + ": " + stbi_failure_reason());
         auto brush = std::make_unique<BrushImage>();
-        brush->width = texture->width;
-        brush->height = texture->height;
-        brush->grey.resize(size_t(texture->width) * texture->height);
-        for (size_t i = 0; i < brush->grey.size(); ++i) brush->grey[i] = texture->rgba[4 * i];
+        brush->width = w;
+        brush->height = h;
+        brush->grey.assign(grey, grey + size_t(w) * h);
+        stbi_image_free(grey);
         return (decoded[name] = std::move(brush)).get();
     }
     return nullptr;
