@@ -6,6 +6,7 @@ layout(location = 0) in vec4 a_ends;          // x0, y0, x1, y1
 layout(location = 1) in vec4 a_radius_depth;  // r0, r1, d0, d1
 layout(location = 2) in vec4 a_color0;        // colour at the start; w: flat cap there
 layout(location = 3) in vec4 a_color1;        // colour at the end; w: flat cap there
+layout(location = 4) in vec2 a_arc;           // the path's arc length at the start and the end
 
 uniform vec2 u_image_size;
 
@@ -14,6 +15,7 @@ flat out vec4 v_ends;
 flat out vec4 v_radius_depth;
 flat out vec4 v_color0;
 flat out vec4 v_color1;
+flat out vec2 v_arc;
 
 void main() {
     vec2 a = a_ends.xy, b = a_ends.zw;
@@ -29,6 +31,7 @@ void main() {
     v_radius_depth = a_radius_depth;
     v_color0 = a_color0;
     v_color1 = a_color1;
+    v_arc = a_arc;
     vec2 ndc = vec2(v_px.x / u_image_size.x * 2.0 - 1.0, 1.0 - v_px.y / u_image_size.y * 2.0);
     gl_Position = vec4(ndc, 0.0, 1.0);
 }

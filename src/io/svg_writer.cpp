@@ -15,6 +15,7 @@
 #include <map>
 #include <string>
 
+#include "geometry/brush_names.hpp"
 #include "geometry/stroke_style.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "io/atomic_file.hpp"
@@ -291,6 +292,13 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
            "\" fill=\"none\" stroke=\"" + style.color + "\" stroke-opacity=\"" + number(stroke.opacity) +
            "\" stroke-width=\"" + number(stroke.width) + "\" stroke-linecap=\"" + geometry::cap_name(style.ends.cap) +
            "\" stroke-linejoin=\"" + geometry::join_name(style.ends.join) + "\"";
+    // A raster brush has no SVG equivalent: the outline stays the stroke's, the brush is named
+    // for tools that can draw it.
+    if (const size_t brush = size_t(line_param(layer.settings, "brush").at(0)); brush > 0) {
+        out += " data-brush=\"" + geometry::brush_names().at(brush) + "\"";
+        if (const float length = line_param(layer.settings, "brush-length").at(0); length > 0.0f)
+            out += " data-brush-length=\"" + number(length) + "\"";
+    }
     // Hidden levels are dashed by the viewer unless the layer's own dash pattern already cut
     // its strokes into dashes.
     double dash_sum = 0.0;

@@ -1,7 +1,10 @@
 #include "render/stroke_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "geometry/brush_names.hpp"
+#include "geometry/line_types/object_line_registry.hpp"
 #include "gpu/gl_state.hpp"
 #include "render/frame.hpp"
 
@@ -10,26 +13,31 @@ namespace inkshade::render {
 namespace {
 
 // One segment = one instance: end points (pixels), half-widths and window depths at both ends,
-// colours at both ends with, in w, whether that end is a path's flat (butt or square) cap.
+// colours at both ends with, in w, whether that end is a path's flat (butt or square) cap, and
+// the arc length of the path from its start at both ends (the brush runs on across joins).
 struct Segment {
     glm::vec4 ends;          // x0, y0, x1, y1
     glm::vec4 radius_depth;  // r0, r1, d0, d1
     glm::vec4 color0;        // r, g, b, flat start
     glm::vec4 color1;        // r, g, b, flat end
+    glm::vec2 arc;           // s0, s1
 };
+
+constexpr GLuint kAttributes = 5;
 
 }  // namespace
 
 StrokePass::StrokePass()
     : program_("lines/stroke.vert", "lines/stroke.frag"),
       vao_(gpu::GlVertexArray::create()),
-      buffer_(gpu::GlBuffer::create()) {
+      buffer_(gpu::GlBuffer::create()),
+      brush_texture_(gpu::GlTexture::create(GL_TEXTURE_2D)) {
     const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, buffer_.id(), 0, sizeof(Segment));
     glVertexArrayBindingDivisor(vao, 0, 1);
-    for (GLuint a = 0; a < 4; ++a) {
+    for (GLuint a = 0; a < kAttributes; ++a) {
         glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
+        glVertexArrayAttribFormat(vao, a, a == 4 ? 2 : 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
         glVertexArrayAttribBinding(vao, a, 0);
     }
 }
@@ -63,10 +71,16 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
             extend(0, 1);
             extend(n - 1, n - 2);
         }
+        // Cumulative image-space length from the path's start, so the brush does not restart
+        // at every segment.
+        std::vector<float> arc(n, 0.0f);
+        for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + glm::length(points[i] - points[i - 1]);
         auto add = [&](size_t a, size_t b, bool flat_a, bool flat_b) {
             const glm::vec3 ca = color(a), cb = color(b);
-            segments.push_back({glm::vec4(points[a], points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b)),
-                                glm::vec4(ca, flat_a ? 1.0f : 0.0f), glm::vec4(cb, flat_b ? 1.0f : 0.0f)});
+            segments.push_back(
+                {glm::vec4(points[a], points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b)),
+                 glm::vec4(ca, flat_a ? 1.0f : 0.0f), glm::vec4(cb, flat_b ? 1.0f : 0.0f),
+                 glm::vec2(arc[a], b == 0 && a != 0 ? arc[a] + glm::length(points[0] - points[a]) : arc[b])});
         };
         if (n == 1) add(0, 0, false, false);  // a dot
         for (size_t i = 0; i + 1 < n; ++i) add(i, i + 1, open && flat_caps && i == 0, open && flat_caps && i + 2 == n);
@@ -82,6 +96,14 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
     p.set("u_depth_bias", style.depth_bias);
     p.set("u_depth_test", depth_test ? 1 : 0);
     p.set("u_multisample", samples > 1 ? 1 : 0);
+    const BrushImage* brush = style.brush;
+    p.set("u_brush", brush ? 1 : 0);
+    if (brush) {
+        upload_brush(*brush);
+        glBindTextureUnit(0, brush_texture_.id());
+        p.set("u_brush_texture", 0);
+        p.set("u_brush_length", style.brush_length > 0.0f ? style.brush_length : 4.0f * std::max(style.width, 0.25f));
+    }
 
     const gpu::CullScope cull(std::nullopt);
     const gpu::DepthScope depth(depth_test ? std::optional<GLenum>(GL_LEQUAL) : std::nullopt, /*write=*/false);
@@ -96,17 +118,37 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(segments.size()));
 }
 
+void StrokePass::upload_brush(const BrushImage& brush) {
+    // A fresh texture each draw (a brush is 1 KiB): immutable storage cannot change size.
+    brush_texture_ = gpu::GlTexture::create(GL_TEXTURE_2D);
+    const GLuint t = brush_texture_.id();
+    const int levels = 1 + int(std::floor(std::log2(std::max(brush.width, brush.height))));
+    glTextureStorage2D(t, levels, GL_R8, brush.width, brush.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(t, 0, 0, 0, brush.width, brush.height, GL_RED, GL_UNSIGNED_BYTE, brush.grey.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // Mipmaps: a brush length of a few pixels minifies the texture along the stroke.
+    glGenerateTextureMipmap(t);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 void StrokePass::draw_layers(const std::vector<LineLayer>& layers, int width, int height, int samples) {
     for (const LineLayer& layer : layers) {
         const Stroke stroke = stroke_of(layer.settings);
         // Hidden parts are already cut away exactly by ray casting; a depth test would only
         // nibble at the half of a contour stroke that lies over the surface it outlines.
-        const StrokeStyle style{.color = stroke.color,
-                                .opacity = stroke.opacity,
-                                .width = stroke.width,
-                                .taper = line_param(layer.settings, "taper").at(0) != 0.0f,
-                                .cap = geometry::stroke_ends(layer.settings).cap,
-                                .depth_test = false};
+        const StrokeStyle style{
+            .color = stroke.color,
+            .opacity = stroke.opacity,
+            .width = stroke.width,
+            .taper = line_param(layer.settings, "taper").at(0) != 0.0f,
+            .cap = geometry::stroke_ends(layer.settings).cap,
+            .depth_test = false,
+            .brush = shipped_brush(geometry::brush_names().at(size_t(geometry::line_number(layer.settings, "brush")))),
+            .brush_length = geometry::line_number(layer.settings, "brush-length")};
         // The widths are those the SVG writer draws (geometry::drawn_widths): the paths' own,
         // else the layer's width, times the strength with taper.
         draw(layer.visible, style, width, height, samples);

@@ -15,6 +15,7 @@
 #include "gpu/gl_handle.hpp"
 #include "geometry/stroke_style.hpp"
 #include "gpu/shader_program.hpp"
+#include "render/brush_texture.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "render/pass.hpp"
 
@@ -28,6 +29,8 @@ struct StrokeStyle {
     geometry::StrokeCap cap = geometry::StrokeCap::Round;  // at the ends of open paths
     float depth_bias = 2e-4f;                              // subtracted from the paths' window depth before the test
     bool depth_test = true;                                // false: no test even where the paths carry depth
+    const BrushImage* brush = nullptr;  // null: solid; else its texture times the coverage (outlives the draw)
+    float brush_length = 0.0f;          // pixels of arc length per repeat of the brush; 0: 4 × width
 };
 
 class StrokePass final : public Pass {
@@ -44,9 +47,12 @@ public:
     void run(Frame& frame) override;
 
 private:
+    void upload_brush(const BrushImage& brush);
+
     gpu::ShaderProgram program_;
     gpu::GlVertexArray vao_;
     gpu::GlBuffer buffer_;
+    gpu::GlTexture brush_texture_;
 };
 
 }  // namespace inkshade::render

@@ -180,7 +180,8 @@ TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
              // and lists.
              "builtin:sphere --set contour.dash=0.2,0.3", "builtin:sphere --set contour.max-length=0.5",
              "builtin:sphere --set contour.cap=pointy", "builtin:sphere --set contour.depth-width=1,2,3",
-             "builtin:sphere --set contour.sketch-passes=0", "builtin:sphere --set contour.dash=-4"}) {
+             "builtin:sphere --set contour.sketch-passes=0", "builtin:sphere --set contour.dash=-4",
+             "builtin:sphere --set contour.brush=felt", "builtin:sphere --set contour.brush-length=-2"}) {
         auto r = run_cli("lines " + args + " -o " + out);
         EXPECT_EQ(r.status, 2) << args << ": " << r.err;
         EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
@@ -196,6 +197,37 @@ TEST(LinesCommand, BadInputIsExit2WithOneLineAndNoFile) {
     EXPECT_FALSE(std::filesystem::exists(out)) << "no output after a failure";
     for (const auto& e : std::filesystem::directory_iterator(dir.path()))
         EXPECT_EQ(e.path().filename().string().find("x.svg"), std::string::npos) << e.path();
+}
+
+// A brush: the GPU strokes (lines -o x.png) take ink away inside the same outline, the SVG keeps
+// the outline's path data and names the brush; a bad name lists the choices.
+TEST(LinesCommand, BrushTexturesGpuStrokesAndIsNamedInTheSvg) {
+    TempDir dir;
+    const std::string common = "lines builtin:torus --lines contour --size 160x120 --set contour.width=6 ";
+    for (const char* out : {"solid.png", "solid.svg"}) ASSERT_EQ(run_cli(common + "-o " + dir.file(out)).status, 0);
+    for (const char* out : {"ink.png", "ink.svg"})
+        ASSERT_EQ(run_cli(common + "--set contour.brush=ink --set contour.brush-length=30 -o " + dir.file(out)).status,
+                  0);
+    const Image solid = read_png(dir.file("solid.png")), ink = read_png(dir.file("ink.png"));
+    int covered = 0, outside = 0, lighter = 0;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x) {
+            const int a = solid.pixel(x, y)[0], b = ink.pixel(x, y)[0];
+            covered += a < 128;
+            outside += a == 255 && b != 255;  // ink where the solid stroke has none
+            lighter += a < 128 && b > a + 64;
+        }
+    EXPECT_GT(covered, 500);
+    EXPECT_EQ(outside, 0);
+    EXPECT_GT(lighter, covered / 10) << "the dry brush leaves gaps";
+    const std::string solid_svg = slurp(dir.file("solid.svg")), ink_svg = slurp(dir.file("ink.svg"));
+    EXPECT_EQ(solid_svg.find("data-brush"), std::string::npos);
+    EXPECT_NE(ink_svg.find("data-brush=\"ink\" data-brush-length=\"30\""), std::string::npos);
+    EXPECT_EQ(solid_svg.substr(solid_svg.find("<path")), ink_svg.substr(ink_svg.find("<path"))) << "same outline";
+    const auto r = run_cli(common + "--set contour.brush=felt -o " + dir.file("x.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("'felt' is not one of none, pencil, ink, chalk, marker"), std::string::npos) << r.err;
 }
 
 // Paths are fitted cubic Béziers by default (a sphere's outline: a few C commands) and the
@@ -316,7 +348,8 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "apparent-ridge, border, contour, crease, hatch, intersection, isophote, principal-highlight, ridge, suggestive, "
+              "apparent-ridge, border, contour, crease, hatch, intersection, isophote, principal-highlight, ridge, "
+              "suggestive, "
               "suggestive-highlight, topo, valley)\n");
     // Seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has

@@ -121,5 +121,13 @@ TEST(LinesOverlay, VariableWidthDashedStrokesCoverTheSamePixelsOnTheTorus) {
                    /*check_ink=*/true);
 }
 
+// A brush changes the ink inside a stroke, not its outline: the marker's GPU strokes (at least
+// 0.78 of the coverage everywhere) still cover the SVG's pixels and no others.
+TEST(LinesOverlay, BrushedStrokesCoverTheSamePixelsOnTheTorus) {
+    expect_overlap("builtin:torus", "--azimuth 20 --elevation 35",
+                   "[[lines]]\ntype = 'contour'\nwidth = 4.0\nbrush = 'marker'\n"
+                   "[[lines]]\ntype = 'crease'\nwidth = 3.0\nbrush = 'marker'\nbrush-length = 9\n");
+}
+
 }  // namespace
 }  // namespace inkshade::test

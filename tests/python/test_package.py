@@ -40,7 +40,7 @@ print(inkshade._inkshade.__file__)
 # What setup.py's CMake build reads (MANIFEST.in), relative to the source tree: files, then folders.
 SDIST_FILES = ["CMakeLists.txt", "setup.py", "pyproject.toml", "README.md", "MANIFEST.in",
                "python/CMakeLists.txt", "python/extension.map", "python/inkshade_module.cpp"]
-SDIST_FOLDERS = ["cmake", "include", "src", "apps", "shaders", "python/inkshade"]
+SDIST_FOLDERS = ["cmake", "include", "src", "apps", "shaders", "data/brushes", "python/inkshade"]
 
 
 def source_files():

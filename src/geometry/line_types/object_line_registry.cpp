@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 
+#include "geometry/brush_names.hpp"
 #include "inkshade/error.hpp"
 
 namespace inkshade::geometry {
@@ -80,7 +81,8 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
                                  "value noise in [−1, 1] (Freestyle's ThicknessNoiseShader)"));
     params.push_back(float_param("noise-period", 50.0f, 1.0f, 100000.0f,
                                  "wavelength in pixels of the width noise and the sketch jitter along a stroke"));
-    params.push_back(int_param("seed", 0, 0, 1000000, "seed of the width noise and the sketch jitter (and of hatch strokes' layout)"));
+    params.push_back(int_param("seed", 0, 0, 1000000,
+                               "seed of the width noise and the sketch jitter (and of hatch strokes' layout)"));
     params.push_back(choice_param("color-along", {"none", "depth", "length"}, 0,
                                   "blend the colour towards color-end by depth (near → far over the model) or "
                                   "along the stroke (start → end)"));
@@ -91,6 +93,11 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
     params.push_back(list_param("dash", {0.0f}, 8, 0.0f, 100000.0f,
                                 "dash pattern: on, off, ... lengths in pixels along each stroke (an odd list "
                                 "repeats, as SVG's stroke-dasharray); 0 = solid"));
+    params.push_back(choice_param("brush", brush_names(), 0,
+                                  "GPU strokes' texture, repeated along the stroke, times its coverage (the SVG "
+                                  "keeps the outline and names the brush in data-brush); none = solid"));
+    params.push_back(float_param("brush-length", 0.0f, 0.0f, 100000.0f,
+                                 "pixels of stroke per repeat of the brush texture; 0 = 4 x width"));
     params.push_back(float_param("split-angle", 0.0f, 0.0f, 180.0f,
                                  "a stroke ends where its direction turns by more than this many degrees; 0 = "
                                  "never"));
