@@ -20,12 +20,8 @@
 //   (gltf_pose.cpp and the files it uses).
 #include <fstream>  // tiny_gltf.h's writers use std::ofstream but include <fstream> only without TINYGLTF_NO_FS
 
-#define TINYGLTF_IMPLEMENTATION
-#define TINYGLTF_NO_STB_IMAGE        // images are decoded in texture_image.cpp
-#define TINYGLTF_NO_STB_IMAGE_WRITE  // never writes
-#define TINYGLTF_NO_EXTERNAL_IMAGE   // image files are opened here, with warnings
-#define TINYGLTF_NO_FS               // no wordexp() path expansion: our callbacks only
-#include <tiny_gltf.h>
+#define TINYGLTF_IMPLEMENTATION  // compiled here, configured as everywhere (io/tiny_gltf_config.hpp)
+#include "io/tiny_gltf_config.hpp"
 
 #include <algorithm>
 #include <bit>

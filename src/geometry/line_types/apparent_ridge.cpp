@@ -23,9 +23,7 @@ const ObjectLineRegistration registration{
          {float_param("threshold", 0.1f, 0.0f, 100.0f,
                       "keep points where q1² > threshold / feature-size² (dimensionless; rtsc's ar_thresh default "
                       "0.1); lines fade in above it as 1 − threshold / (q1² feature-size²)"),
-          float_param("feature-size", 0.0f, 0.0f, 1e9f,
-                      "world length making threshold dimensionless; 0 = automatic from the curvature (rtsc's "
-                      "estimator, as for suggestive contours)")},
+          feature_size_param("threshold")},
          2.0f)},
     extract,
     {.curvature = true}};

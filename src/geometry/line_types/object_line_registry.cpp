@@ -120,6 +120,13 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
     return params;
 }
 
+ParamSpec feature_size_param(const std::string& made_dimensionless) {
+    return float_param("feature-size", 0.0f, 0.0f, 1e9f,
+                       "world length making " + made_dimensionless +
+                           " dimensionless; 0 = automatic, as rtsc: 1% of the reciprocal of the 10th percentile of "
+                           "|k1|, |k2|, at most 5% of the bounding sphere's radius");
+}
+
 float line_number(const LineSettings& settings, const std::string& name) { return line_param(settings, name).at(0); }
 
 glm::vec3 line_direction(const LineSettings& settings, const std::string& name) {

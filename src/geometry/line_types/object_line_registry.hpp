@@ -34,6 +34,10 @@ MeshLineNeeds object_line_needs(const std::string& type_name);
 std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::vector<ParamSpec> own,
                                           float min_length_px);
 
+// The `feature-size` parameter of the curvature-based types: the world length that makes
+// `made_dimensionless` (e.g. "threshold") dimensionless; 0 = automatic (feature_size.hpp).
+ParamSpec feature_size_param(const std::string& made_dimensionless);
+
 // The value of a Float/Int/Bool parameter of `settings` as one number.
 float line_number(const LineSettings& settings, const std::string& name);
 

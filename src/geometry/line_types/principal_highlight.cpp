@@ -30,9 +30,7 @@ const ObjectLineRegistration registration{
           bool_param("fade", true, "strength rises from 0 at the threshold (rtsc's draw_faded); false: strength 1"),
           bool_param("convex", true, "where k1 > 0: bumps, a cylinder from outside (rtsc's Principal Hlt. (R))"),
           bool_param("concave", true, "where k1 < 0: grooves (rtsc's Principal Hlt. (V))"),
-          float_param("feature-size", 0.0f, 0.0f, 1e9f,
-                      "world length making threshold dimensionless; 0 = automatic (rtsc's estimator, as for "
-                      "suggestive contours)")},
+          feature_size_param("threshold")},
          2.0f)},
     extract,
     {.curvature = true}};

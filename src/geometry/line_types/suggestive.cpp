@@ -27,10 +27,7 @@ const ObjectLineRegistration registration{
           float_param("fade", 0.03f, 0.0f, 10.0f,
                       "fade-in above the trim threshold, in the same units (rtsc's draw_faded constant 0.03); "
                       "0 = no fading"),
-          float_param("feature-size", 0.0f, 0.0f, 1e9f,
-                      "world length making threshold and fade dimensionless; 0 = automatic, as rtsc: 1% of "
-                      "the reciprocal of the 10th percentile of |k1|, |k2|, at most 5% of the bounding "
-                      "sphere's radius")},
+          feature_size_param("threshold and fade")},
          4.0f)},
     extract,
     {.curvature = true}};

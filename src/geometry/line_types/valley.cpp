@@ -19,9 +19,7 @@ const ObjectLineRegistration registration{
          glm::vec3(0.0f), 1.0f,
          {float_param("threshold", 0.1f, 0.0f, 100.0f,
                       "keep points where −k2 > threshold / feature-size (dimensionless; rtsc's rv_thresh default 0.1)"),
-          float_param("feature-size", 0.0f, 0.0f, 1e9f,
-                      "world length making threshold dimensionless; 0 = automatic from the curvature (rtsc's "
-                      "estimator, as for suggestive contours)")},
+          feature_size_param("threshold")},
          2.0f)},
     extract,
     {.curvature = true}};
