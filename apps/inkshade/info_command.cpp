@@ -10,17 +10,22 @@
 #include "commands.hpp"
 #include "geometry/mesh_stats.hpp"
 #include "inkshade/io.hpp"
+#include "io/gltf_names.hpp"
 #include "mesh_warnings.hpp"
 
 namespace inkshade::cli {
 
 namespace {
 
-// Distinct images among the materials' textures (materials may share one).
+// Distinct images among the materials' textures, base colour and MToon maps (materials may
+// share one).
 size_t texture_count(const Mesh& mesh) {
     std::set<const Texture*> textures;
-    for (const Material& m : mesh.materials)
+    for (const Material& m : mesh.materials) {
         if (m.texture) textures.insert(m.texture.get());
+        for (const auto& [slot, t] : m.mtoon_textures)
+            if (t) textures.insert(t.get());
+    }
     return textures.size();
 }
 
@@ -76,6 +81,31 @@ void print_lights(const Mesh& mesh) {
     }
 }
 
+// The names --animation, --morph and --expression take (glTF/VRM), one a line; a kind the file
+// has none of is left out.
+void print_pose_names(const FilePoseNames& names) {
+    if (!names.animations.empty()) {
+        std::printf("animations:           %zu\n", names.animations.size());
+        for (size_t i = 0; i < names.animations.size(); ++i) {
+            const FileAnimation& a = names.animations[i];
+            std::printf("  %zu '%s': ", i, io::printable_name(a.name).c_str());
+            if (a.duration)
+                std::printf("%g s\n", *a.duration);
+            else
+                std::printf("duration unknown (its keyframe times cannot be read)\n");
+        }
+    }
+    if (!names.morph_targets.empty()) {
+        std::printf("morph targets:        %zu\n", names.morph_targets.size());
+        for (const std::string& m : names.morph_targets) std::printf("  '%s'\n", io::printable_name(m).c_str());
+    }
+    if (!names.expressions.empty()) {
+        std::printf("expressions:          %zu\n", names.expressions.size());
+        for (const FileExpression& e : names.expressions)
+            std::printf("  '%s' (%s)\n", io::printable_name(e.name).c_str(), e.preset ? "preset" : "custom");
+    }
+}
+
 }  // namespace
 
 Command add_info_command(CLI::App& app) {
@@ -115,6 +145,7 @@ Command add_info_command(CLI::App& app) {
         if (unlit > 0) std::printf("unlit materials:      %zu\n", unlit);
         print_cameras(mesh);
         print_lights(mesh);
+        print_pose_names(mesh.pose_names);
         std::printf("load time:            %.1f ms\n", load_ms);
         return 0;
     };

@@ -1,9 +1,12 @@
 // The cameras and lights a model file carries (glTF 2.0 cameras, section 3.10, and the
-// KHR_lights_punctual extension), placed in the model's coordinates by their nodes. Plain data:
-// `--camera` and `--lights file` turn them into a Camera and a Light (inkshade/scene.hpp).
+// KHR_lights_punctual extension), placed in the model's coordinates by their nodes, and the names
+// its pose can be given by (animations, morph targets, VRM expressions). Plain data: `--camera`
+// and `--lights file` turn the first into a Camera and a Light (inkshade/scene.hpp); `inkshade
+// info` lists the names that `--animation`, `--morph` and `--expression` take.
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -42,6 +45,27 @@ struct FileLight {
     float inner_cone_angle = 0.0f;        // spot, radians from the axis: full intensity inside
     float outer_cone_angle = 0.7853982f;  // spot: no light outside (default pi/4)
     NodePlacement placement;              // directional and spot lights shine along forward
+};
+
+// One glTF animation (section 3.11), as `--animation` names it (its name, else its index).
+struct FileAnimation {
+    std::string name;               // may be empty
+    std::optional<float> duration;  // seconds to the last keyframe, as three.js's AnimationClip
+                                    // counts it; unset when its keyframes cannot be read
+};
+
+// One VRM expression, as `--expression` names it.
+struct FileExpression {
+    std::string name;     // VRM 1.0 name (VRM 0.x presets renamed as three-vrm does: joy -> happy)
+    bool preset = false;  // a VRM 1.0 preset (happy, blink, aa, ...), else a custom expression
+};
+
+// The names a glTF/VRM file's pose takes (empty for other formats).
+struct FilePoseNames {
+    std::vector<FileAnimation> animations;   // in file order
+    std::vector<std::string> morph_targets;  // mesh.extras.targetNames, each name once, in file order
+    std::vector<FileExpression> expressions;
+    bool empty() const { return animations.empty() && morph_targets.empty() && expressions.empty(); }
 };
 
 }  // namespace inkshade

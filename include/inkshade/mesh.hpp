@@ -120,6 +120,7 @@ struct Mesh {
     // coordinates of `positions`.
     std::vector<FileCamera> cameras;
     std::vector<FileLight> lights;
+    FilePoseNames pose_names;  // what the file's animations, morph targets and expressions are called
 
     bool has_hard_edges() const { return !triangles.empty() && shading_normal_ids.size() == triangles.size(); }
     size_t vertex_count() const { return positions.size(); }

@@ -46,6 +46,7 @@
 #include "io/file_bytes.hpp"
 #include "io/gltf_accessors.hpp"
 #include "io/gltf_cameras_lights.hpp"
+#include "io/gltf_pose_names.hpp"
 #include "io/gltf_pose.hpp"
 #include "io/readers.hpp"
 #include "io/texture_image.hpp"
@@ -1040,6 +1041,7 @@ Mesh read_gltf(const std::string& path, const Pose& pose) {
     builder.finish();
     add_gltf_cameras(model, nodes.cameras_and_lights, path, mesh);
     add_gltf_lights(model, nodes.cameras_and_lights, path, mesh);
+    mesh.pose_names = read_gltf_pose_names(model, path, reader);
     if (mesh.triangles.empty()) {
         if (builder.skipped() > 0)
             throw InputError(path, "no triangles (only point or line primitives: " + std::to_string(builder.skipped()) +

@@ -176,6 +176,10 @@ double override_amount(ExpressionOverride o, double weight) {
 
 }  // namespace
 
+bool is_vrm_preset(const std::string& name) {
+    return std::find(kPresets.begin(), kPresets.end(), name) != kPresets.end();
+}
+
 std::vector<VrmExpression> read_vrm_expressions(const tinygltf::Model& model, const std::string& path,
                                                 std::vector<std::string>& warnings) {
     Reader reader(model, path, warnings);

@@ -30,6 +30,9 @@ struct VrmExpression {
     std::vector<Bind> binds;
 };
 
+// Whether `name` is a VRM 1.0 preset expression name (happy, blink, aa, ...).
+bool is_vrm_preset(const std::string& name);
+
 // The file's expressions: VRM 1.0's when the file has VRMC_vrm expressions, else VRM 0.x's; none
 // for other files. VRM 0.x presets take their VRM 1.0 names (joy -> happy, a -> aa, ...), custom
 // groups their name; a bind to a node without a mesh, or to a morph target the mesh does not

@@ -53,6 +53,62 @@ TEST(PosingCli, LinesFollowThePose) {
     EXPECT_EQ(slurp(dir.file("up.svg")), slurp(dir.file("clamped.svg")));  // 9 s is past the end: the last key
 }
 
+// The lines of `info`'s output from the one starting with `first` to the end, minus the load time.
+std::string info_tail(const std::string& out, const std::string& first) {
+    const size_t at = out.find("\n" + first);
+    if (at == std::string::npos) return "(no line '" + first + "' in:\n" + out + ")";
+    const std::string tail = out.substr(at + 1);
+    return tail.substr(0, tail.find("load time:"));
+}
+
+TEST(PosingCli, InfoListsWhatThePoseOptionsTake) {
+    TempDir dir;
+    const std::string vrm1 = dir.write("avatar.vrm", avatar(AvatarFormat::Vrm1).glb());
+    auto r = run_cli("info " + vrm1);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(info_tail(r.out, "animations:"),
+              "animations:           2\n"
+              "  0 'wave': 2 s\n"
+              "  1 'hop': 2 s\n"
+              "morph targets:        2\n"
+              "  'happy'\n"
+              "  'blink'\n"
+              "expressions:          3\n"
+              "  'blink' (preset)\n"
+              "  'happy' (preset)\n"
+              "  'smirk' (custom)\n");
+    // VRM 0.x presets by the VRM 1.0 names --expression takes (joy -> happy), custom groups by name.
+    r = run_cli("info " + dir.write("avatar0.vrm", avatar(AvatarFormat::Vrm0).glb()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(info_tail(r.out, "expressions:"),
+              "expressions:          3\n"
+              "  'happy' (preset)\n"
+              "  'blink' (preset)\n"
+              "  'Smirk' (custom)\n");
+    // Plain glTF: no expressions line; a file without any of them: none of the three lines.
+    r = run_cli("info " + dir.write("avatar.glb", avatar(AvatarFormat::Gltf).glb()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(info_tail(r.out, "morph targets:"), "morph targets:        2\n  'happy'\n  'blink'\n");
+    r = run_cli("info builtin:sphere");
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* kind : {"animations:", "morph targets:", "expressions:"})
+        EXPECT_EQ(r.out.find(kind), std::string::npos) << kind;
+}
+
+TEST(PosingCli, InfoGivesNoDurationForUnreadableKeyframes) {
+    TempDir dir;
+    GltfBuilder g = avatar(AvatarFormat::Gltf);
+    g.doc["animations"][1]["samplers"][0]["input"] = 999;  // no such accessor
+    auto r = run_cli("info " + dir.write("broken.glb", g.glb()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\n  0 'wave': 2 s\n  1 'hop': duration unknown (its keyframe times cannot be read)\n"),
+              std::string::npos)
+        << r.out;
+    r = run_cli("render " + dir.file("broken.glb") + " --animation hop -o " + dir.file("x.png"));
+    EXPECT_EQ(r.status, 2);  // posing by it says what is wrong
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+}
+
 TEST(PosingCli, HelpListsThePoseOptions) {
     for (const char* command : {"render", "lines", "view"}) {
         const CliResult r = run_cli(std::string(command) + " --help");
