@@ -2,11 +2,7 @@
 
 #include <fstream>  // as in gltf_reader.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
 
-#define TINYGLTF_NO_STB_IMAGE  // the same configuration as gltf_reader.cpp, which compiles tinygltf
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#define TINYGLTF_NO_FS
-#include <tiny_gltf.h>
+#include "io/tiny_gltf_config.hpp"
 
 #include <algorithm>
 
