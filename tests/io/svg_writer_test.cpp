@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <regex>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -33,7 +32,6 @@ std::vector<Element> parse_xml(const std::string& text) {
     std::vector<Element> elements;
     std::vector<std::string> open;
     size_t i = 0, roots = 0;
-    const std::regex attribute(R"re(\s*([A-Za-z_:][-A-Za-z0-9_:.]*)\s*=\s*"([^"<]*)")re");
     while ((i = text.find('<', i)) != std::string::npos) {
         if (text.compare(i, 5, "<?xml") == 0) {
             i = text.find("?>", i);
@@ -60,13 +58,32 @@ std::vector<Element> parse_xml(const std::string& text) {
         Element e;
         const size_t name_end = std::min(tag.find_first_of(" \t\n"), tag.size());
         e.name = tag.substr(0, name_end);
-        std::string rest = tag.substr(name_end);
-        std::smatch m;
-        while (std::regex_search(rest, m, attribute) && m.position(0) == 0) {
-            EXPECT_TRUE(e.attributes.emplace(m[1].str(), m[2].str()).second) << "duplicate " << m[1];
-            rest = m.suffix();
+        // Attributes NAME="VALUE" scanned by hand: std::regex recurses once per character and
+        // overflows the stack on a long path's `d` (under AddressSanitizer's larger frames).
+        size_t at = name_end;
+        auto skip_space = [&] {
+            while (at < tag.size() && std::isspace(static_cast<unsigned char>(tag[at]))) ++at;
+        };
+        auto name_char = [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '-' || c == '.';
+        };
+        for (skip_space(); at < tag.size(); skip_space()) {
+            const size_t name_begin = at;
+            if (!(std::isalpha(static_cast<unsigned char>(tag[at])) || tag[at] == '_' || tag[at] == ':')) break;
+            while (at < tag.size() && name_char(tag[at])) ++at;
+            const std::string name = tag.substr(name_begin, at - name_begin);
+            skip_space();
+            if (at >= tag.size() || tag[at] != '=') break;
+            ++at;
+            skip_space();
+            if (at >= tag.size() || tag[at] != '"') break;
+            const size_t value_end = tag.find('"', at + 1);
+            if (value_end == std::string::npos || tag.find('<', at + 1) < value_end) break;
+            EXPECT_TRUE(e.attributes.emplace(name, tag.substr(at + 1, value_end - at - 1)).second)
+                << "duplicate " << name;
+            at = value_end + 1;
         }
-        EXPECT_TRUE(std::all_of(rest.begin(), rest.end(), ::isspace)) << "bad attributes in <" << tag << ">";
+        EXPECT_EQ(at, tag.size()) << "bad attributes in <" << tag.substr(0, 200) << ">";
         if (open.empty()) ++roots;
         if (!self_closing) open.push_back(e.name);
         elements.push_back(std::move(e));
