@@ -1,8 +1,7 @@
 // `hatch` (optional line type): hatching strokes along the principal directions, drawn where
 // the surface is dark (Hertzmann & Zorin 2000; trace_hatching, hatch_segments).
-#include <algorithm>
-#include <cmath>
 
+#include "geometry/isolines.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
 
 namespace inkshade::geometry {
@@ -19,16 +18,9 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     const Hatching& hatching = data.hatching(options);
     // The light is given in camera space (x right, y up, z towards the viewer), as rtsc's
     // light follows the camera; the renderer's default key light comes from the same side.
-    const ParamValue& l = line_param(settings, "light");
-    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-    const glm::vec3 up = glm::cross(right, forward);
-    const auto part = [&](size_t i) { return i < l.size() ? l[i] : 0.0f; };
-    glm::vec3 light = part(0) * right + part(1) * up - part(2) * forward;
-    const float len = glm::length(light);
-    light = len > 0.0f && std::isfinite(len) ? light / len : -forward;
+    const glm::dvec3 light = camera_to_world(camera, glm::dvec3(line_direction(settings, "light")), "hatch.light");
     HatchView view;
-    view.light = light;
+    view.light = glm::vec3(light);
     for (size_t i = 0; i < line_param(settings, "tones").size(); ++i)
         view.thresholds.push_back(line_param(settings, "tones").at(i));
     view.fade = line_number(settings, "fade");
