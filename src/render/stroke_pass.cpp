@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "geometry/brush_names.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
@@ -25,12 +26,43 @@ struct Segment {
 
 constexpr GLuint kAttributes = 5;
 
+// One miter or bevel corner = one instance (shaders/lines/stroke_join.vert).
+struct Join {
+    glm::vec4 va;           // the vertex V, the incoming segment's outer corner A
+    glm::vec4 tb;           // the miter's tip T (a bevel: the middle of A and B), the outgoing segment's B
+    glm::vec4 color_depth;  // rgb, window depth at V
+    glm::vec4 arc;          // arc length at V, outer side for the brush (+-1), radius at V, inner shift
+};
+
+// SVG's default stroke-miterlimit: the miter's length over the stroke's width at most 4.
+constexpr float kMiterLimit = 4.0f;
+
+// The join at vertex v between directions t1 (in) and t2 (out), radius r: none when the path
+// goes straight on (or turns back on itself, where SVG draws none either).
+std::optional<Join> corner_join(glm::vec2 v, glm::vec2 t1, glm::vec2 t2, float r, geometry::StrokeJoin join) {
+    const float cross = t1.x * t2.y - t1.y * t2.x, dot = glm::dot(t1, t2);
+    if (!(r > 0.0f) || std::abs(cross) < 1e-4f || dot < -0.9999f) return std::nullopt;
+    // The outer side is away from the turn; n = (-t.y, t.x) is the side `cross` > 0 turns to.
+    const float o = cross > 0.0f ? -1.0f : 1.0f;
+    const glm::vec2 n1(-t1.y, t1.x), n2(-t2.y, t2.x);
+    const glm::vec2 a = v + o * r * n1, b = v + o * r * n2;
+    glm::vec2 tip = 0.5f * (a + b);
+    const glm::vec2 m = glm::normalize(n1 + n2);
+    const float c = glm::dot(m, n1);  // cos of half the turn: the miter is r / c from v
+    if (join == geometry::StrokeJoin::Miter && c > 1.0f / kMiterLimit) tip = v + o * (r / c) * m;
+    // The brush's `across` is 0.5 + 0.5 cross(t, p - a) / r (stroke.frag): o at the outer edge.
+    return Join{glm::vec4(v, a), glm::vec4(tip, b), glm::vec4(0.0f), glm::vec4(0.0f, o, r, 0.5f * std::min(1.0f, r))};
+}
+
 }  // namespace
 
 StrokePass::StrokePass()
     : program_("lines/stroke.vert", "lines/stroke.frag"),
+      join_program_("lines/stroke_join.vert", "lines/stroke_join.frag"),
       vao_(gpu::GlVertexArray::create()),
+      join_vao_(gpu::GlVertexArray::create()),
       buffer_(gpu::GlBuffer::create()),
+      join_buffer_(gpu::GlBuffer::create()),
       brush_texture_(gpu::GlTexture::create(GL_TEXTURE_2D)) {
     const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, buffer_.id(), 0, sizeof(Segment));
@@ -40,6 +72,14 @@ StrokePass::StrokePass()
         glVertexArrayAttribFormat(vao, a, a == 4 ? 2 : 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
         glVertexArrayAttribBinding(vao, a, 0);
     }
+    const GLuint joins = join_vao_.id();
+    glVertexArrayVertexBuffer(joins, 0, join_buffer_.id(), 0, sizeof(Join));
+    glVertexArrayBindingDivisor(joins, 0, 1);
+    for (GLuint a = 0; a < 4; ++a) {
+        glEnableVertexArrayAttrib(joins, a);
+        glVertexArrayAttribFormat(joins, a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
+        glVertexArrayAttribBinding(joins, a, 0);
+    }
 }
 
 void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& style, int width, int height,
@@ -47,7 +87,9 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
     if (style.opacity <= 0.0f) return;
     bool depth_test = style.depth_test;
     const bool flat_caps = style.cap != geometry::StrokeCap::Round;
+    const bool flat_joins = style.join != geometry::StrokeJoin::Round;
     std::vector<Segment> segments;
+    std::vector<Join> joins;
     for (const LinePath& path : paths) {
         const size_t n = path.points.size();
         if (n == 0) continue;
@@ -82,28 +124,48 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
                  glm::vec4(ca, flat_a ? 1.0f : 0.0f), glm::vec4(cb, flat_b ? 1.0f : 0.0f),
                  glm::vec2(arc[a], b == 0 && a != 0 ? arc[a] + glm::length(points[0] - points[a]) : arc[b])});
         };
+        // Corners: with miter and bevel joins every segment ends flat at a corner (a vertex
+        // with a segment on both sides) and the corner's outer side gets its polygon.
+        const bool closed = path.closed && n > 2;
+        auto corner = [&](size_t i) { return flat_joins && (closed || (i > 0 && i + 1 < n)); };
         if (n == 1) add(0, 0, false, false);  // a dot
-        for (size_t i = 0; i + 1 < n; ++i) add(i, i + 1, open && flat_caps && i == 0, open && flat_caps && i + 2 == n);
-        if (path.closed && n > 2) add(n - 1, 0, false, false);
+        for (size_t i = 0; i + 1 < n; ++i)
+            add(i, i + 1, (open && flat_caps && i == 0) || corner(i),
+                (open && flat_caps && i + 2 == n) || corner(i + 1));
+        if (closed) add(n - 1, 0, corner(n - 1), corner(0));
+        for (size_t i = 0; flat_joins && i < n; ++i) {
+            if (!corner(i)) continue;
+            const glm::vec2 v = points[i], in = v - points[(i + n - 1) % n], out = points[(i + 1) % n] - v;
+            if (glm::length(in) <= 0.0f || glm::length(out) <= 0.0f) continue;
+            std::optional<Join> j = corner_join(v, glm::normalize(in), glm::normalize(out), radius(i), style.join);
+            if (!j) continue;
+            j->color_depth = glm::vec4(color(i), depth(i));
+            j->arc.x = arc[i];
+            joins.push_back(*j);
+        }
     }
     if (segments.empty()) return;
     glNamedBufferData(buffer_.id(), GLsizeiptr(segments.size() * sizeof(Segment)), segments.data(), GL_STREAM_DRAW);
+    if (!joins.empty())
+        glNamedBufferData(join_buffer_.id(), GLsizeiptr(joins.size() * sizeof(Join)), joins.data(), GL_STREAM_DRAW);
 
-    gpu::ShaderProgram& p = program_;
-    p.use();
-    p.set("u_image_size", glm::vec2(width, height));
-    p.set("u_color", glm::vec4(style.color, style.opacity));
-    p.set("u_depth_bias", style.depth_bias);
-    p.set("u_depth_test", depth_test ? 1 : 0);
-    p.set("u_multisample", samples > 1 ? 1 : 0);
     const BrushImage* brush = style.brush;
-    p.set("u_brush", brush ? 1 : 0);
-    if (brush) {
-        upload_brush(*brush);
-        glBindTextureUnit(0, brush_texture_.id());
-        p.set("u_brush_texture", 0);
-        p.set("u_brush_length", style.brush_length > 0.0f ? style.brush_length : 4.0f * std::max(style.width, 0.25f));
-    }
+    if (brush) upload_brush(*brush);
+    auto set_uniforms = [&](gpu::ShaderProgram& p) {
+        p.use();
+        p.set("u_image_size", glm::vec2(width, height));
+        p.set("u_color", glm::vec4(style.color, style.opacity));
+        p.set("u_depth_bias", style.depth_bias);
+        p.set("u_depth_test", depth_test ? 1 : 0);
+        p.set("u_multisample", samples > 1 ? 1 : 0);
+        p.set("u_brush", brush ? 1 : 0);
+        if (brush) {
+            glBindTextureUnit(0, brush_texture_.id());
+            p.set("u_brush_texture", 0);
+            p.set("u_brush_length",
+                  style.brush_length > 0.0f ? style.brush_length : 4.0f * std::max(style.width, 0.25f));
+        }
+    };
 
     const gpu::CullScope cull(std::nullopt);
     const gpu::DepthScope depth(depth_test ? std::optional<GLenum>(GL_LEQUAL) : std::nullopt, /*write=*/false);
@@ -114,8 +176,13 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
         once_per_sample.emplace(gpu::StencilFunc{GL_EQUAL, 0, 0xff, GL_KEEP, GL_KEEP, GL_INCR});
     }
     const gpu::BlendScope blend(gpu::BlendFunc{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA});
+    set_uniforms(program_);
     glBindVertexArray(vao_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(segments.size()));
+    if (joins.empty()) return;
+    set_uniforms(join_program_);
+    glBindVertexArray(join_vao_.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(joins.size()));
 }
 
 void StrokePass::upload_brush(const BrushImage& brush) {
@@ -146,6 +213,7 @@ void StrokePass::draw_layers(const std::vector<LineLayer>& layers, int width, in
             .width = stroke.width,
             .taper = line_param(layer.settings, "taper").at(0) != 0.0f,
             .cap = geometry::stroke_ends(layer.settings).cap,
+            .join = geometry::stroke_ends(layer.settings).join,
             .depth_test = false,
             .brush = shipped_brush(geometry::brush_names().at(size_t(geometry::line_number(layer.settings, "brush")))),
             .brush_length = geometry::line_number(layer.settings, "brush-length")};

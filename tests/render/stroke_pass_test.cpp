@@ -162,3 +162,64 @@ TEST(StrokePass, ButtAndSquareCapsEndTheStrokeFlat) {
 
 }  // namespace
 }  // namespace inkshade::test
+
+namespace inkshade::test {
+namespace {
+
+// A right angle at (40, 20) of a stroke 12 px wide (right along y = 20, then down x = 40): the
+// outer corner of the two segments' edges is (46, 14), the miter's tip (a miter sqrt 2 x the
+// width long is within the limit 4). A round join reaches 6 px from the vertex, so the pixel
+// centred at (45.5, 14.5), 7.8 px away, is empty; a miter covers it; a bevel cuts the corner
+// along x - y = 26 through (40, 14) and (46, 20), and that pixel lies 3.5 px beyond the cut.
+TEST(StrokePass, MiterAndBevelJoinsFillTheCornerAsSvgDoes) {
+    const LinePath p = path({{10, 20}, {40, 20}, {40, 50}});
+    render::StrokeStyle style;
+    style.width = 12.0f;
+    for (int samples : {1, 4}) {
+        const Image round = draw({p}, style, samples);
+        style.join = geometry::StrokeJoin::Miter;
+        const Image miter = draw({p}, style, samples);
+        style.join = geometry::StrokeJoin::Bevel;
+        const Image bevel = draw({p}, style, samples);
+        style.join = geometry::StrokeJoin::Round;
+        EXPECT_GE(int(round.pixel(45, 14)[0]), 250) << "round join reaches the corner, samples " << samples;
+        EXPECT_LE(int(miter.pixel(45, 14)[0]), 5) << "miter misses the corner, samples " << samples;
+        EXPECT_LE(int(miter.pixel(44, 15)[0]), 5) << "miter misses the corner, samples " << samples;
+        EXPECT_GE(int(miter.pixel(47, 13)[0]), 250) << "miter beyond its tip, samples " << samples;
+        EXPECT_GE(int(bevel.pixel(45, 14)[0]), 250) << "bevel fills beyond its cut, samples " << samples;
+        // Inside the bevel's triangle (40,20)-(46,20)-(40,14): near the cut, on the vertex side.
+        EXPECT_LE(int(bevel.pixel(41, 17)[0]), 5) << "bevel leaves a gap, samples " << samples;
+        // No seam where the join meets its segments: every pixel well inside the stroke is full.
+        for (const Image* img : {&miter, &bevel})
+            for (int y = 15; y < 50; ++y)
+                for (int x = 10; x < 46; ++x) {
+                    const bool in_h = x >= 11 && x <= 38 && y >= 15 && y <= 24;
+                    const bool in_v = x >= 35 && x <= 44 && y >= 22 && y <= 48;
+                    if (in_h || in_v) {
+                        EXPECT_LE(int(img->pixel(x, y)[0]), 5) << x << "," << y << " samples " << samples;
+                    }
+                }
+    }
+}
+
+// A miter longer than SVG's limit (4 x the width: a turn sharper than about 151 degrees) is
+// drawn as a bevel, and a straight run of collinear points gets no join at all.
+TEST(StrokePass, SharpMiterFallsBackToBevel) {
+    // A hairpin: in along +x, out turned by 165 degrees (cos 82.5 degrees < 1/4: over the limit).
+    const float a = glm::radians(165.0f);
+    const glm::vec2 v(40, 32), out = v + 30.0f * glm::vec2(std::cos(a), std::sin(a));
+    const LinePath p = path({{10, 32}, v, out});
+    render::StrokeStyle style;
+    style.width = 6.0f;
+    style.join = geometry::StrokeJoin::Miter;
+    const Image miter = draw({p}, style);
+    style.join = geometry::StrokeJoin::Bevel;
+    const Image bevel = draw({p}, style);
+    for (int y = 0; y < kW; ++y)
+        for (int x = 0; x < kW; ++x) EXPECT_EQ(int(miter.pixel(x, y)[0]), int(bevel.pixel(x, y)[0])) << x << "," << y;
+    // Nothing past the vertex along +x beyond the stroke's flat end and its bevel (3 px out).
+    EXPECT_GE(int(miter.pixel(46, 32)[0]), 250);
+}
+
+}  // namespace
+}  // namespace inkshade::test
