@@ -106,7 +106,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
                 if (faces[f][k] < vertex_ids.size()) vertex_ids[faces[f][k]] = face_ids[f];
         object_id_vbo_ = upload_buffer(GLsizeiptr(vertex_ids.size() * sizeof(uint32_t)), vertex_ids.data());
     }
-    if (textured() || has_mtoon_textures()) {
+    if ((textured() || has_mtoon_textures()) && mesh.uvs.size() == mesh.positions.size()) {
         std::vector<glm::vec2> uvs(stream_size);
         for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source_of(i)];
         uv_vbo_ = upload_buffer(GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data());
@@ -148,8 +148,10 @@ void GpuMesh::upload_materials(const Mesh& mesh, bool has_face_materials) {
             textures_.push_back(gpu::BaseTexture::white());
             for (size_t& t : material_texture_) t = std::min(t, textures_.size() - 1);
         }
-        upload_mtoon_textures(mesh);
     }
+    // MToon textures without uvs too: the matcap is read at the normal; the others read the
+    // uv attribute's default (0, 0), as WebGL reads an absent attribute in three-vrm's shader.
+    if (has_face_materials) upload_mtoon_textures(mesh);
 }
 
 void GpuMesh::upload_mtoon_textures(const Mesh& mesh) {

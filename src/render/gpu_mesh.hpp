@@ -41,8 +41,9 @@ public:
 
     // Uvs and a texture are uploaded: shaders read them under INKSHADE_BASE_TEXTURE.
     bool textured() const { return !textures_.empty(); }
-    // Some material has MToon textures (Material::mtoon_textures) and the mesh has uvs: each
-    // draw_by_material range binds them (render/mtoon_textures.hpp).
+    // Some material has MToon textures (Material::mtoon_textures): each draw_by_material range
+    // binds them (render/mtoon_textures.hpp). A mesh without uvs reads them at uv (0, 0), but
+    // for the matcap, read at the normal.
     bool has_mtoon_textures() const { return !mtoon_textures_.empty(); }
     // Some material carries VRM MToon values (Material::mtoon).
     bool has_material_params() const { return has_material_params_; }

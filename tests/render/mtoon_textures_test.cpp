@@ -151,6 +151,38 @@ TEST(MtoonTextures, MatcapAndRimMultiplyFollowThreeVrm) {
         "use-material-params off");
 }
 
+// A mesh without uvs still gets its matcap (three-vrm reads it at the view-space normal, not
+// at the uvs); the rim multiply texture is then read at uv (0, 0), WebGL's value of an absent
+// attribute: here its texel there, the same on every pixel.
+TEST(MtoonTextures, MatcapNeedsNoUvs) {
+    const Look k;
+    const auto matcap = ramps(80);
+    Material m;
+    m.name = "vrm";
+    m.diffuse = glm::vec3(1.0f);
+    m.mtoon = {{"matcap-color", {k.matcap.r, k.matcap.g, k.matcap.b}}};
+    m.mtoon_textures = {{"matcap-texture", matcap}};
+    Mesh mesh = sphere_with(m);
+    mesh.uvs.clear();
+    RenderOptions o;
+    o.width = o.height = kSize;
+    o.samples = 1;
+    const Light light = key_light();
+    const glm::vec3 eye = ortho_camera().eye;
+    const Image img = render_ortho(mesh, light, selection(k), o);
+    int differs = 0;
+    const int compared = compare_on_sphere(
+        img,
+        [&](const glm::vec3& n) {
+        const glm::vec3 want = three_vrm(k, light, n, eye, matcap.get(), nullptr);
+        differs += std::abs(to_byte(want.g) - to_byte(three_vrm(k, light, n, eye, nullptr, nullptr).g)) > 8;
+        return want;
+        },
+        0.45f, "matcap without uvs");
+    EXPECT_GE(compared, 150);
+    EXPECT_GE(differs, compared / 2) << "the matcap hardly changes the picture: the test proves little";
+}
+
 // outlineWidthMultiplyTexture's green channel (data: as stored) scales the outline width: full
 // on the left half of the uvs, 128/255 on the right.
 TEST(MtoonTextures, OutlineWidthMultiplyScalesTheRing) {
