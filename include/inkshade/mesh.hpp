@@ -66,6 +66,11 @@ struct Material {
     // read at the mesh's uvs moved by the UV animation (the matcap at the view-space normal, the
     // mask and the outline width at the uvs as they are). Shared as `texture` is.
     std::map<std::string, std::shared_ptr<const Texture>> mtoon_textures;
+    // Per texture, the uv transform of its glTF KHR_texture_transform (VRM 0.x: the _MainTex
+    // scale and offset, ported as three-vrm ports them) as three.js applies it
+    // (io/texture_transform.hpp), keyed "base-color-texture" or as mtoon_textures; absent =
+    // identity. Applied to the uvs in glTF's convention (t down) after mtoon's UV animation.
+    std::map<std::string, glm::mat3> uv_transforms;
     // glTF KHR_materials_unlit: drawn in its base colour (x texture x vertex colour) without
     // lighting, whatever the shading model.
     bool unlit = false;

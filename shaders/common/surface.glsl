@@ -23,6 +23,10 @@ vec2 texture_uv() { return vec2(v_uv.x, 1.0 - v_uv.y); }
 // the bytes as stored, or decoded from sRGB to linear light) at texture_uv(): rows stored top
 // first while uvs have v = 0 at the bottom (inkshade::Texture), hence t = 1 - v.
 uniform sampler2D u_base_texture;
+// Per draw, the material's KHR_texture_transform of its base-colour texture (Material::uv_transforms,
+// three.js's mapUvTransform), applied after texture_uv(); identity unless the draw sets one.
+uniform mat3 u_base_uv_transform = mat3(1.0);
+vec2 base_uv() { return (u_base_uv_transform * vec3(texture_uv(), 1.0)).xy; }
 #endif
 
 layout(location = 0) out vec4 o_color;
@@ -42,7 +46,7 @@ uniform float u_alpha_cutoff;
 float surface_alpha() {
     float a = u_base_alpha;
 #ifdef INKSHADE_BASE_TEXTURE
-    a *= texture(u_base_texture, texture_uv()).a;
+    a *= texture(u_base_texture, base_uv()).a;
 #endif
     return a;
 }
@@ -77,7 +81,7 @@ Surface surface() {
     s.l = to_light(s.p);
     s.albedo = u_base_color * v_color;
 #ifdef INKSHADE_BASE_TEXTURE
-    s.albedo *= texture(u_base_texture, texture_uv()).rgb;
+    s.albedo *= texture(u_base_texture, base_uv()).rgb;
 #endif
     return s;
 }

@@ -7,7 +7,7 @@
 void shade() {
     vec3 c = v_color;
 #ifdef INKSHADE_BASE_TEXTURE
-    c *= texture(u_base_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;
+    c *= texture(u_base_texture, base_uv()).rgb;
 #endif
     o_color = encode_output(c);
 }

@@ -77,6 +77,17 @@ uniform sampler2D u_emissive_texture;             // colour, white
 uniform sampler2D u_normal_texture;               // data; read only when u_normal_texture_on
 uniform sampler2D u_uv_animation_mask_texture;    // data (blue channel), white
 uniform int u_normal_texture_on;                  // per draw: the material has a normal map
+// Per draw, each texture's KHR_texture_transform (three-vrm's *UvTransform uniforms; identity
+// unless the material has one), applied to the animated uv (the mask's to the uv before the
+// animation, the matcap's to its view-space coordinate).
+uniform mat3 u_matcap_texture_uv_transform = mat3(1.0);
+uniform mat3 u_rim_multiply_texture_uv_transform = mat3(1.0);
+uniform mat3 u_shade_multiply_texture_uv_transform = mat3(1.0);
+uniform mat3 u_shading_shift_texture_uv_transform = mat3(1.0);
+uniform mat3 u_emissive_texture_uv_transform = mat3(1.0);
+uniform mat3 u_normal_texture_uv_transform = mat3(1.0);
+uniform mat3 u_uv_animation_mask_texture_uv_transform = mat3(1.0);
+vec2 transformed(mat3 t, vec2 uv) { return (t * vec3(uv, 1.0)).xy; }
 
 // three-vrm's matcap (mtoon.frag, USE_MATCAPTEXTURE): the normal in a view-space frame whose z
 // is the direction to the viewer, x = normalize(v.z, 0, -v.x), y = v x x; the texture read
@@ -86,7 +97,7 @@ vec3 matcap(vec3 n, vec3 v) {
     vec3 vd = normalize(mat3(u_view) * v), nv = mat3(u_view) * n;
     vec3 x = normalize(vec3(vd.z, 0.0, -vd.x));
     vec3 y = cross(vd, x);
-    return texture(u_matcap_texture, 0.5 + 0.5 * vec2(dot(x, nv), -dot(y, nv))).rgb;
+    return texture(u_matcap_texture, transformed(u_matcap_texture_uv_transform, 0.5 + 0.5 * vec2(dot(x, nv), -dot(y, nv)))).rgb;
 }
 
 // three.js's getTangentFrame (normal_fragment_begin without a tangent attribute) in world space
@@ -113,7 +124,7 @@ vec2 texture_uv() {
     vec2 uv = vec2(v_uv.x, 1.0 - v_uv.y);
     float mask = 1.0;
 #ifdef INKSHADE_MTOON_TEXTURES
-    mask = texture(u_uv_animation_mask_texture, uv).b;
+    mask = texture(u_uv_animation_mask_texture, transformed(u_uv_animation_mask_texture_uv_transform, uv)).b;
 #endif
     uv += vec2(u_uv_animation_scroll_x_speed, u_uv_animation_scroll_y_speed) * (u_time * mask);
     float phase = u_uv_animation_rotation_speed * u_time * mask;
@@ -143,10 +154,12 @@ void shade() {
     vec2 uv = texture_uv();
     // three-vrm's normal map replaces the normal, the outline's negated one too.
     if (u_normal_texture_on == 1)
-        s.n = normal_mapped(frame_n, dot(frame_n, raw) < 0.0 ? -1.0 : 1.0, s.p, uv);
-    shade_color *= texture(u_shade_multiply_texture, uv).rgb;
-    shift += texture(u_shading_shift_texture, uv).r * u_shading_shift_texture_scale;
-    emissive *= texture(u_emissive_texture, uv).rgb;
+        s.n = normal_mapped(frame_n, dot(frame_n, raw) < 0.0 ? -1.0 : 1.0, s.p,
+                            transformed(u_normal_texture_uv_transform, uv));
+    shade_color *= texture(u_shade_multiply_texture, transformed(u_shade_multiply_texture_uv_transform, uv)).rgb;
+    shift += texture(u_shading_shift_texture, transformed(u_shading_shift_texture_uv_transform, uv)).r *
+             u_shading_shift_texture_scale;
+    emissive *= texture(u_emissive_texture, transformed(u_emissive_texture_uv_transform, uv)).rgb;
 #endif
     const float kInvPi = 0.31830988618;
     float k = (u_convention == 1) ? kInvPi : 1.0;
@@ -161,7 +174,7 @@ void shade() {
     vec3 rim = u_rim_color * fresnel;
 #ifdef INKSHADE_MTOON_TEXTURES
     rim += u_matcap_color * matcap(s.n, v);
-    rim *= texture(u_rim_multiply_texture, uv).rgb;
+    rim *= texture(u_rim_multiply_texture, transformed(u_rim_multiply_texture_uv_transform, uv)).rgb;
 #endif
     rim *= mix(vec3(1.0), E + A, u_rim_lighting_mix);
     vec3 c = direct + gi + rim + emissive;

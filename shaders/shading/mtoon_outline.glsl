@@ -13,7 +13,11 @@ uniform float u_outline_width;
 uniform mat4 u_projection;
 #ifdef INKSHADE_MTOON_TEXTURES
 uniform sampler2D u_outline_width_multiply_texture;  // data: green channel as stored
-float outline_width_multiply() { return textureLod(u_outline_width_multiply_texture, vec2(a_uv.x, 1.0 - a_uv.y), 0.0).g; }
+uniform mat3 u_outline_width_multiply_texture_uv_transform = mat3(1.0);  // KHR_texture_transform
+float outline_width_multiply() {
+    vec2 uv = (u_outline_width_multiply_texture_uv_transform * vec3(a_uv.x, 1.0 - a_uv.y, 1.0)).xy;
+    return textureLod(u_outline_width_multiply_texture, uv, 0.0).g;
+}
 #else
 float outline_width_multiply() { return 1.0; }
 #endif

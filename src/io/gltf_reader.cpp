@@ -12,7 +12,8 @@
 // - TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN primitives (3.7.2.1); points and lines skipped;
 // - POSITION, NORMAL, TEXCOORD_n, COLOR_0 in any component type the spec or
 //   KHR_mesh_quantization allows, sparse accessors (3.6.2.3), accessors without a bufferView;
-// - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2), alphaMode, alphaCutoff
+// - pbrMetallicRoughness baseColorFactor and baseColorTexture (3.9.2) with its KHR_texture_transform
+//   (texture_transform.cpp), alphaMode, alphaCutoff
 //   and doubleSided (3.9.4-3.9.5), KHR_materials_unlit, VRM 0.x and VRM 1.0 MToon parameters
 //   and textures with an MToon material's emissive and normal map (vrm_materials.cpp);
 // - the nodes' cameras (3.10) and KHR_lights_punctual lights (gltf_cameras_lights.cpp);
@@ -50,6 +51,7 @@
 #include "io/gltf_pose.hpp"
 #include "io/readers.hpp"
 #include "io/texture_image.hpp"
+#include "io/texture_transform.hpp"
 #include "io/vrm_materials.hpp"
 
 namespace inkshade::io {
@@ -710,9 +712,12 @@ private:
             m.diffuse[int(k)] = std::isfinite(f[k]) ? std::clamp(float(f[k]), 0.0f, 1.0f) : 1.0f;
         if (f.size() < 3) m.diffuse = glm::vec3(1.0f);
         int texture = g.pbrMetallicRoughness.baseColorTexture.index;
-        if (texture >= 0 && g.pbrMetallicRoughness.baseColorTexture.extensions.count("KHR_texture_transform"))
-            mesh_.warnings.push_back(path_ + ": material '" + one_line(m.name) +
-                                     "' uses KHR_texture_transform, which is ignored");
+        std::optional<glm::mat3> base_transform;
+        if (texture >= 0) {
+            const auto& extensions = g.pbrMetallicRoughness.baseColorTexture.extensions;
+            if (const auto it = extensions.find("KHR_texture_transform"); it != extensions.end())
+                base_transform = khr_texture_transform(it->second);
+        }
 
         read_alpha_and_sides(g, m);
         const auto v1 = g.extensions.find("VRMC_materials_mtoon");
@@ -736,11 +741,17 @@ private:
                 const int main = json_texture_index(
                     props.Has("textureProperties") ? props.Get("textureProperties") : props, "_MainTex");
                 if (main >= 0) texture = main;
+                const std::optional<glm::mat3> main_transform = vrm0_main_texture_transform(v);
+                if (main >= 0) base_transform = main_transform;
                 // unlit: an MToon whose shade colour and shade multiply texture are the lit ones
-                add_mtoon(shader == "VRM/MToon" ? vrm0_mtoon(props) : vrm0_unlit(m.diffuse, main), m);
+                add_mtoon(shader == "VRM/MToon" ? vrm0_mtoon(props)
+                                                : vrm0_unlit(m.diffuse, main, main_transform.value_or(glm::mat3(1.0f))),
+                          m);
             }
         }
         if (texture >= 0) m.texture = texture_of(texture, m.name);
+        if (m.texture && base_transform && *base_transform != glm::mat3(1.0f))
+            m.uv_transforms["base-color-texture"] = *base_transform;
         // three-vrm removes KHR_materials_unlit from a material that has MToon.
         m.unlit = m.mtoon.empty() && g.extensions.count("KHR_materials_unlit") > 0;
         return m;
@@ -750,7 +761,12 @@ private:
     void add_mtoon(const VrmMaterial& vrm, Material& m) {
         m.mtoon = vrm.values;
         for (const auto& [key, index] : vrm.textures)
-            if (auto t = texture_of(index, m.name)) m.mtoon_textures[key] = std::move(t);
+            if (auto t = texture_of(index, m.name)) {
+                m.mtoon_textures[key] = std::move(t);
+                const auto transform = vrm.uv_transforms.find(key);
+                if (transform != vrm.uv_transforms.end() && transform->second != glm::mat3(1.0f))
+                    m.uv_transforms[key] = transform->second;
+            }
     }
 
     std::shared_ptr<const Texture> texture_of(int texture, const std::string& material) {

@@ -1,5 +1,7 @@
 #include "io/vrm_materials.hpp"
 
+#include "io/texture_transform.hpp"
+
 #include <fstream>  // as in gltf_reader.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
 
 #include "io/tiny_gltf_config.hpp"
@@ -110,8 +112,14 @@ VrmMaterial vrm1_mtoon(const tinygltf::Material& g, const tinygltf::Value& e) {
     m["uv-animation-scroll-x-speed"] = {float(json_number(e, "uvAnimationScrollXSpeedFactor", 0.0))};
     m["uv-animation-scroll-y-speed"] = {float(json_number(e, "uvAnimationScrollYSpeedFactor", 0.0))};
     m["uv-animation-rotation-speed"] = {float(json_number(e, "uvAnimationRotationSpeedFactor", 0.0))};
-    for (const MtoonTextureName& t : kMtoonTextureNames)
-        if (const int index = json_texture_index(member(e, t.v1), "index"); index >= 0) out.textures[t.key] = index;
+    for (const MtoonTextureName& t : kMtoonTextureNames) {
+        const tinygltf::Value& info = member(e, t.v1);
+        if (const int index = json_texture_index(info, "index"); index >= 0) {
+            out.textures[t.key] = index;
+            if (auto m3 = khr_texture_transform(member(member(info, "extensions"), "KHR_texture_transform")))
+                out.uv_transforms[t.key] = *m3;
+        }
+    }
 
     // The glTF material's own (section 3.9.3 and 3.9.4 of glTF 2.0), as three.js's GLTFLoader
     // gives them to an MToonMaterial: emissiveFactor linear, KHR_materials_emissive_strength as
@@ -124,9 +132,18 @@ VrmMaterial vrm1_mtoon(const tinygltf::Material& g, const tinygltf::Value& e) {
     }
     if (const auto strength = g.extensions.find("KHR_materials_emissive_strength"); strength != g.extensions.end())
         m["emissive-intensity"] = {float(std::max(json_number(strength->second, "emissiveStrength", 1.0), 0.0))};
-    if (g.emissiveTexture.index >= 0) out.textures["emissive-texture"] = g.emissiveTexture.index;
+    auto transform_of = [&](const tinygltf::ExtensionMap& extensions, const char* key) {
+        const auto it = extensions.find("KHR_texture_transform");
+        if (it == extensions.end()) return;
+        if (auto m3 = khr_texture_transform(it->second)) out.uv_transforms[key] = *m3;
+    };
+    if (g.emissiveTexture.index >= 0) {
+        out.textures["emissive-texture"] = g.emissiveTexture.index;
+        transform_of(g.emissiveTexture.extensions, "emissive-texture");
+    }
     if (g.normalTexture.index >= 0) {
         out.textures["normal-texture"] = g.normalTexture.index;
+        transform_of(g.normalTexture.extensions, "normal-texture");
         if (std::isfinite(g.normalTexture.scale)) m["normal-scale"] = {float(g.normalTexture.scale)};
     }
     return out;
@@ -169,14 +186,21 @@ VrmMaterial vrm0_mtoon(const tinygltf::Value& props) {
             if (const int index = json_texture_index(tex, t.v0); index >= 0) out.textures[t.key] = index;
     if (const int index = json_texture_index(tex, "_EmissionMap"); index >= 0) out.textures["emissive-texture"] = index;
     if (const int index = json_texture_index(tex, "_BumpMap"); index >= 0) out.textures["normal-texture"] = index;
+    // three-vrm gives the main texture's transform to every texture but the matcap.
+    if (const auto main = vrm0_main_texture_transform(v))
+        for (const auto& [key, index] : out.textures)
+            if (key != "matcap-texture") out.uv_transforms[key] = *main;
     return out;
 }
 
-VrmMaterial vrm0_unlit(const glm::vec3& lit, int main_texture) {
+VrmMaterial vrm0_unlit(const glm::vec3& lit, int main_texture, const glm::mat3& main_transform) {
     VrmMaterial out;
     out.values = mtoon_defaults();
     out.values["shade-color"] = {lit.r, lit.g, lit.b};
-    if (main_texture >= 0) out.textures["shade-multiply-texture"] = main_texture;
+    if (main_texture >= 0) {
+        out.textures["shade-multiply-texture"] = main_texture;
+        if (main_transform != glm::mat3(1.0f)) out.uv_transforms["shade-multiply-texture"] = main_transform;
+    }
     return out;
 }
 

@@ -22,6 +22,7 @@ namespace inkshade::io {
 struct VrmMaterial {
     std::map<std::string, std::vector<float>> values;
     std::map<std::string, int> textures;
+    std::map<std::string, glm::mat3> uv_transforms;  // Material::uv_transforms, for `textures`
 };
 
 // The number at `key` of a JSON object, or `fallback` when it is absent, not a number or not finite.
@@ -47,6 +48,7 @@ VrmMaterial vrm0_mtoon(const tinygltf::Value& properties);
 
 // VRM 0.x: a "VRM/Unlit*" entry, which three-vrm draws as an MToon material whose shade colour
 // and shade multiply texture are its lit colour `lit` and main texture (`main_texture`, -1: none).
-VrmMaterial vrm0_unlit(const glm::vec3& lit, int main_texture);
+// `main_transform`: the main texture's (vrm0_main_texture_transform), identity without one.
+VrmMaterial vrm0_unlit(const glm::vec3& lit, int main_texture, const glm::mat3& main_transform = glm::mat3(1.0f));
 
 }  // namespace inkshade::io

@@ -103,6 +103,21 @@ void set_mtoon_samplers(gpu::ShaderProgram& program) {
         program.set(kMtoonTextureSlots[slot].sampler, int(kBaseTextureUnit) + 1 + slot);
 }
 
+// The range's material's texture transforms (Material::uv_transforms; KHR_texture_transform),
+// identity where it has none: the base colour's, and with `mtoon` each MToon texture's.
+void set_uv_transforms(gpu::ShaderProgram& program, const GpuMesh& mesh, size_t range, bool mtoon) {
+    const Material* material = mesh.range_material(range);
+    auto transform = [&](const std::string& key) {
+        if (!material) return glm::mat3(1.0f);
+        const auto it = material->uv_transforms.find(key);
+        return it == material->uv_transforms.end() ? glm::mat3(1.0f) : it->second;
+    };
+    program.set("u_base_uv_transform", transform("base-color-texture"));
+    for (int slot = 0; mtoon && slot < kMtoonTextureSlotCount; ++slot)
+        program.set(std::string(kMtoonTextureSlots[slot].sampler) + "_uv_transform",
+                    transform(kMtoonTextureSlots[slot].name));
+}
+
 // Whether the range's material has a normal map (the one MToon texture whose absence the shader
 // must know: no texel value means "no perturbation" exactly).
 void set_normal_texture_on(gpu::ShaderProgram& program, const GpuMesh& mesh, size_t range) {
@@ -245,6 +260,7 @@ public:
             if (unlit) program.set("u_unlit", material && material->unlit ? 1 : 0);
             if (rules) set_material_rules(program, material);
             if (mtoon_textures) set_normal_texture_on(program, mesh, r);
+            if (textured || mtoon_textures) set_uv_transforms(program, mesh, r, mtoon_textures);
         };
         // Two-sided (open meshes show their lit inside), front faces winning depth ties
         // (render/back_faces.hpp); back faces culled when none can be seen. Opaque and cut-out
@@ -316,6 +332,7 @@ private:
             }
             if (rules) set_material_rules(program, material);
             if (variant.mtoon_textures) set_normal_texture_on(program, mesh, r);
+            if (textured || variant.mtoon_textures) set_uv_transforms(program, mesh, r, variant.mtoon_textures);
             mesh.draw_range(r, kBaseTextureUnit, texels_of(convention));
         }
     }

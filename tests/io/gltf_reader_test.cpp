@@ -475,6 +475,55 @@ TEST(GltfReader, VrmOneMapsEmissionAndUvAnimationAreRead) {
     EXPECT_FLOAT_EQ(d.at("uv-animation-rotation-speed")[0], 0.0f);
 }
 
+// KHR_texture_transform as three.js's GLTFLoader and Texture.matrix apply it: rotate, scale,
+// then offset, s' = sx (cos r s + sin r t) + ox, t' = sy (-sin r s + cos r t) + oy.
+glm::vec2 three_uv(glm::vec2 st, float ox, float oy, float r, float sx, float sy) {
+    return {sx * (std::cos(r) * st.x + std::sin(r) * st.y) + ox, sy * (-std::sin(r) * st.x + std::cos(r) * st.y) + oy};
+}
+glm::vec2 apply(const glm::mat3& m, glm::vec2 st) { return glm::vec2(m * glm::vec3(st, 1.0f)); }
+void expect_near2(glm::vec2 a, glm::vec2 b, float eps) { expect_near(glm::vec3(a, 0.0f), glm::vec3(b, 0.0f), eps); }
+
+TEST(GltfReader, TextureTransformsAreReadAsThreeJsAppliesThem) {
+    TempDir dir;
+    GltfBuilder g = textured_quad();
+    nlohmann::json& mat = g.doc["materials"][0];
+    mat["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+        {"offset", {0.1, 0.2}}, {"rotation", 0.5}, {"scale", {2, 3}}};
+    mat["emissiveTexture"] = {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {4, 4}}}}}}};
+    mat["extensions"]["VRMC_materials_mtoon"] = {
+        {"specVersion", "1.0"},
+        {"shadeMultiplyTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0}}}}}}}},
+        {"rimMultiplyTexture", {{"index", 0}}}};
+    const Mesh m = load_mesh(dir.write("avatar.vrm", g.glb()));
+    const Material& out = m.materials[0];
+    const glm::vec2 st(0.3f, 0.7f);
+    ASSERT_TRUE(out.uv_transforms.count("base-color-texture"));
+    expect_near2(apply(out.uv_transforms.at("base-color-texture"), st), three_uv(st, 0.1f, 0.2f, 0.5f, 2, 3), 1e-6f);
+    ASSERT_TRUE(out.uv_transforms.count("shade-multiply-texture"));
+    expect_near2(apply(out.uv_transforms.at("shade-multiply-texture"), st), st + glm::vec2(0.5f, 0.0f), 1e-6f);
+    ASSERT_TRUE(out.uv_transforms.count("emissive-texture"));
+    expect_near2(apply(out.uv_transforms.at("emissive-texture"), st), 4.0f * st, 1e-6f);
+    EXPECT_EQ(out.uv_transforms.count("rim-multiply-texture"), 0u);  // none given: identity
+    for (const std::string& w : m.warnings) EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;
+
+    // VRM 0.x: _MainTex [offset s, offset t, scale s, scale t] ported as three-vrm ports it
+    // (offset t' = (scale t (1 - offset t)) mod 1), for every texture but the matcap.
+    GltfBuilder v0 = textured_quad();
+    nlohmann::json props = vrm0_material_properties();
+    props[0]["vectorProperties"]["_MainTex"] = {0.25, 0.1, 2, 3};
+    props[0]["textureProperties"] = {{"_MainTex", 0}, {"_ShadeTexture", 0}, {"_SphereAdd", 0}, {"_EmissionMap", 0}};
+    v0.doc["extensions"]["VRM"] = {{"materialProperties", props}};
+    const Mesh old = load_mesh(dir.write("old.vrm", v0.glb()));
+    const Material& o = old.materials[0];
+    const glm::vec2 want = three_uv(st, 0.25f, std::fmod(3.0f * 0.9f, 1.0f), 0.0f, 2, 3);
+    for (const char* key : {"base-color-texture", "shade-multiply-texture", "emissive-texture"}) {
+        ASSERT_TRUE(o.uv_transforms.count(key)) << key;
+        expect_near2(apply(o.uv_transforms.at(key), st), want, 1e-5f);
+    }
+    EXPECT_TRUE(o.mtoon_textures.count("matcap-texture"));
+    EXPECT_EQ(o.uv_transforms.count("matcap-texture"), 0u);
+}
+
 TEST(GltfReader, PlainGltfMaterialHasNoMToonParameters) {
     TempDir dir;
     Mesh m = load_mesh(dir.write("quad.glb", textured_quad().glb()));

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 
+#include "io/texture_transform.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade::test {
@@ -346,6 +347,37 @@ TEST(MtoonMaps, UvAnimationScrollsTheTexturesBySpeedTimesTime) {
     compare_grid(
         moved, filling_camera(), on_square,
         [&](const glm::vec3& p) { return texture_pixel(*tex, animated(st_of(p), a, 1.0f)); }, "scrolled");
+}
+
+// KHR_texture_transform on the base colour texture (Material::uv_transforms): three.js's
+// setUvTransform (rotate, then scale, then offset) applied to the animated uv, here with a
+// scroll at time 1 so the order shows.
+TEST(MtoonMaps, TextureTransformMovesTheAnimatedUvAsThreeJs) {
+    const auto tex = waves(0.3f);
+    Material m;
+    m.name = "textured";
+    m.diffuse = glm::vec3(1.0f);
+    m.texture = tex;
+    const glm::mat3 t = io::uv_transform(0.1, -0.2, 0.4, 1.5, 0.75);
+    m.uv_transforms["base-color-texture"] = t;
+    Look k;
+    k.C = glm::vec3(1.0f);
+    k.toony = 0.9f;
+    ShadingSelection s = selection(k);
+    s.params["uv-animation-scroll-x-speed"] = {0.125f};
+    const Image img = render_at(with_material(square(), m), s, 1.0f);
+    const UvAnimation a{0.125f, 0.0f, 0.0f, nullptr};
+    int differs = 0;
+    const int compared = compare_grid(
+        img, filling_camera(), on_square,
+        [&](const glm::vec3& p) {
+        const glm::vec2 st = animated(st_of(p), a, 1.0f);
+        const glm::vec3 want = texture_pixel(*tex, glm::vec2(t * glm::vec3(st, 1.0f)));
+        differs += glm::length(want - texture_pixel(*tex, st)) > 0.1f;
+        return want;
+        },
+        "texture transform");
+    EXPECT_GE(differs, compared / 3) << "the transform hardly changes the picture: the test proves little";
 }
 
 // Rotation about the uv centre (0.5, 0.5) by rotation speed x time radians, and the mask
