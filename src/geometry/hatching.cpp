@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <iterator>
 #include <random>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
 
 namespace inkshade::geometry {
@@ -153,11 +155,7 @@ struct SurfacePoint {
 class Tracer {
 public:
     Tracer(const Mesh& mesh, const std::vector<glm::vec3>& field, const EdgeAdjacency& adj)
-        : mesh_(mesh),
-          field_(field),
-          frames_(mesh),
-          nbr_(face_neighbours(mesh, adj)),
-          visit_(mesh.triangles.size(), kNone) {}
+        : mesh_(mesh), field_(field), frames_(mesh), nbr_(face_neighbours(mesh, adj)) {}
 
     const FaceFrames& frames() const { return frames_; }
 
@@ -262,9 +260,10 @@ public:
     // Traces from `seed` (direction `d`, in the field) until a border, an unusable face, a
     // sharp turn of the field, a face this stroke crossed already, or a point nearer than
     // `stop` to `grid`'s points. Returns the nodes (edge points) in order; `looped` when the
-    // trace came back into the seed's face.
+    // trace came back into the seed's face. `visit` holds per face the stamp of the last trace
+    // that crossed it (the caller's own, so that traces may run on several threads).
     std::vector<Node> trace(const SurfacePoint& seed, glm::dvec3 d, const PointGrid& grid, double stop, uint32_t stamp,
-                            uint32_t seed_stamp, bool& looped) {
+                            uint32_t seed_stamp, std::vector<uint32_t>& visit_, bool& looped) const {
         std::vector<Node> nodes;
         looped = false;
         SurfacePoint at = seed;
@@ -297,14 +296,11 @@ public:
         return nodes;
     }
 
-    std::vector<uint32_t>& visits() { return visit_; }
-
 private:
     const Mesh& mesh_;
     const std::vector<glm::vec3>& field_;
     FaceFrames frames_;
     std::vector<glm::uvec3> nbr_;
-    std::vector<uint32_t> visit_;  // per face: the stamp of the last trace that crossed it
 };
 
 double bounding_diagonal(const Mesh& mesh) {
@@ -445,10 +441,13 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
         std::shuffle(free_seeds.begin(), free_seeds.end(), rng);
     }
 
-    uint32_t stamp = 0;
-    const int families = options.cross ? 2 : 1;
-    for (int family = 0; family < families; ++family) {
-        const size_t family_begin = out.strokes.size();
+    // The two families never meet (each keeps its spacing only against its own strokes), so
+    // each is traced on its own thread with its own visit stamps, and family 0's strokes come
+    // first whatever the thread count.
+    auto trace_family = [&](const int family) {
+        std::vector<HatchStroke> strokes;
+        std::vector<uint32_t> visit(tris.size(), kNone);  // per face: the last trace that crossed it
+        uint32_t stamp = 0;
         for (int level = 0; level < levels; ++level) {
             const double d_sep = spacing / double(1 << level);
             const double d_test = 0.5 * d_sep;
@@ -459,7 +458,7 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                 for (size_t i = 0; i + 1 < m + (s.closed ? 1 : 0); ++i)
                     grid.add_segment(glm::dvec3(s.points[i]), glm::dvec3(s.points[(i + 1) % m]), d_test * 0.5);
             };
-            for (size_t i = family_begin; i < out.strokes.size(); ++i) add_stroke(out.strokes[i]);
+            for (const HatchStroke& s : strokes) add_stroke(s);
 
             auto try_seed = [&](const SurfacePoint& seed) -> bool {
                 if (!frames.usable(seed.face) || grid.any_within(seed.p, d_sep * 0.9)) return false;
@@ -473,14 +472,14 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                 const glm::dvec3 d = tracer.field_in(seed.face, ref);
                 if (d == glm::dvec3(0.0)) return false;
                 const uint32_t seed_stamp = ++stamp;
-                tracer.visits()[seed.face] = seed_stamp;
+                visit[seed.face] = seed_stamp;
                 bool looped = false, back_looped = false;
                 const uint32_t trace_stamp = ++stamp;  // both halves: neither re-enters a face of the other
                 const std::vector<Tracer::Node> fwd =
-                    tracer.trace(seed, d, grid, d_test, trace_stamp, seed_stamp, looped);
+                    tracer.trace(seed, d, grid, d_test, trace_stamp, seed_stamp, visit, looped);
                 const std::vector<Tracer::Node> back =
                     looped ? std::vector<Tracer::Node>{}
-                           : tracer.trace(seed, -d, grid, d_test, trace_stamp, seed_stamp, back_looped);
+                           : tracer.trace(seed, -d, grid, d_test, trace_stamp, seed_stamp, visit, back_looped);
                 HatchStroke s;
                 s.family = uint8_t(family);
                 s.level = uint8_t(level);
@@ -506,17 +505,17 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                     length += glm::length(glm::dvec3(s.points[i + 1]) - glm::dvec3(s.points[i]));
                 if (length < d_sep) return false;  // a stub between two strokes
                 add_stroke(s);
-                out.strokes.push_back(std::move(s));
+                strokes.push_back(std::move(s));
                 return true;
             };
 
             // Seeds beside every stroke of the family, d_sep to either side (Jobard & Lefer),
             // the new ones included as they come; free seeds where none reached.
-            size_t next_stroke = family_begin;
+            size_t next_stroke = 0;
             size_t next_free = 0;
             for (;;) {
-                if (next_stroke < out.strokes.size()) {
-                    const HatchStroke s = out.strokes[next_stroke++];  // a copy: try_seed appends
+                if (next_stroke < strokes.size()) {
+                    const HatchStroke s = strokes[next_stroke++];  // a copy: try_seed appends
                     const size_t pieces = s.faces.size();
                     double start = 0.0, next_at = 0.5 * d_sep;
                     for (size_t i = 0; i < pieces; ++i) {
@@ -541,6 +540,15 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                 if (!found) break;
             }
         }
+        return strokes;
+    };
+    if (options.cross) {
+        std::vector<HatchStroke> across;
+        tbb::parallel_invoke([&] { out.strokes = trace_family(0); }, [&] { across = trace_family(1); });
+        out.strokes.insert(out.strokes.end(), std::make_move_iterator(across.begin()),
+                           std::make_move_iterator(across.end()));
+    } else {
+        out.strokes = trace_family(0);
     }
     return out;
 }
