@@ -303,6 +303,10 @@ private:
     std::vector<glm::uvec3> nbr_;
 };
 
+// |(x, y)| as glibc's hypotf computes it for finite values (squares summed in double, one
+// square root), inline: the library call was a tenth of the hatching setup.
+float hypot_float(float x, float y) { return float(std::sqrt(double(x) * double(x) + double(y) * double(y))); }
+
 double bounding_diagonal(const Mesh& mesh) {
     if (mesh.positions.empty()) return 0.0;
     glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
@@ -366,7 +370,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 const uint32_t u = around[a];
                 if (e1[u] == glm::vec3(0.0f)) continue;
                 const float x = glm::dot(e1[u], e1[v]), y = glm::dot(e1[u], e2[v]);
-                const float len = std::hypot(x, y);
+                const float len = hypot_float(x, y);
                 if (!(len > 1e-6f)) continue;
                 const std::complex<float> once(x / len, y / len);
                 turn[a] = (once * once) * (once * once);
@@ -386,7 +390,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 std::complex<float> sum = weight[v] * z[v];
                 for (uint32_t a = first[v]; a < first[v] + count[v]; ++a)
                     sum += weight[around[a]] * turn[a] * z[around[a]];
-                const float len = std::abs(sum);
+                const float len = hypot_float(sum.real(), sum.imag());
                 if (len > 1e-12f && std::isfinite(len)) next[v] = sum / len;
             }
         });
