@@ -3,6 +3,7 @@
 #include "geometry/hatching.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <complex>
 #include <iterator>
@@ -118,7 +119,9 @@ private:
     static uint64_t key(const glm::i64vec3& c) {
         return (uint64_t(c.x & 0x1fffff) << 42) | (uint64_t(c.y & 0x1fffff) << 21) | uint64_t(c.z & 0x1fffff);
     }
-    size_t slot_of(uint64_t k) const { return size_t((k * 0x9e3779b97f4a7c15ull) >> 20) & (slots_.size() - 1); }
+    // Fibonacci hashing: the product's top bits depend on every bit of the key (its low bits
+    // only on the key's low bits, which left cells differing in x alone in one probe run).
+    size_t slot_of(uint64_t k) const { return size_t((k * 0x9e3779b97f4a7c15ull) >> shift_); }
     Slot& find(uint64_t k) {
         for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1))
             if (slots_[h].key == k || slots_[h].key == kEmpty) {
@@ -135,12 +138,14 @@ private:
     void rehash(size_t capacity) {
         std::vector<Slot> old = std::move(slots_);
         slots_.assign(capacity, Slot{});
+        shift_ = 64 - std::countr_zero(capacity);
         for (const Slot& s : old)
             if (s.key != kEmpty) find(s.key).head = s.head;
     }
 
     double cell_;
     std::vector<Slot> slots_;
+    int shift_ = 64;
     size_t used_ = 0;
     std::vector<glm::vec3> points_;
     std::vector<uint32_t> next_;
