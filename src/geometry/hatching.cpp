@@ -82,23 +82,46 @@ public:
         if (2 * (used_ + 1) > slots_.size()) rehash(2 * slots_.size());
         Slot& slot = find(key(cell_of(p)));
         if (slot.head == kNone) ++used_;
-        points_.push_back(glm::vec3(p));
-        next_.push_back(slot.head);
+        points_.push_back({glm::vec3(p), slot.head});
         slot.head = uint32_t(points_.size() - 1);
     }
     // Whether some point lies within r (≤ the cell size) of p: the cells that the box of
-    // radius r around p touches (two or three a side).
+    // radius r around p touches (two or three a side), its own cell first (where a point is
+    // most likely), skipping those whose box is farther than r (the corners of a 3 × 3 × 3
+    // block mostly are).
     bool any_within(const glm::dvec3& p, double r) const {
-        const glm::i64vec3 lo = cell_of(p - glm::dvec3(r)), hi = cell_of(p + glm::dvec3(r));
+        const glm::i64vec3 lo = cell_of(p - glm::dvec3(r)), hi = cell_of(p + glm::dvec3(r)), home = cell_of(p);
         const float r2 = float(r * r);
         const glm::vec3 pf(p);
-        for (int64_t z = lo.z; z <= hi.z; ++z)
-            for (int64_t y = lo.y; y <= hi.y; ++y)
-                for (int64_t x = lo.x; x <= hi.x; ++x)
-                    for (uint32_t i = lookup(key({x, y, z})); i != kNone; i = next_[i]) {
-                        const glm::vec3 d = points_[i] - pf;
-                        if (glm::dot(d, d) < r2) return true;
-                    }
+        auto near_in = [&](const glm::i64vec3& c) {
+            for (uint32_t i = lookup(key(c)); i != kNone; i = points_[i].next) {
+                const glm::vec3 d = points_[i].p - pf;
+                if (glm::dot(d, d) < r2) return true;
+            }
+            return false;
+        };
+        if (near_in(home)) return true;
+        // A point is stored in float, so it may sit a rounding step outside its cell's box:
+        // the boxes are tested grown by `slack`.
+        const double slack = 1e-5 * (cell_ + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+        const double reach2 = (r + slack) * (r + slack);
+        auto gap = [&](int64_t c, double v) {
+            const double below = double(c) * cell_ - v, above = v - double(c + 1) * cell_;
+            const double g = std::max({below, above, 0.0});
+            return g * g;
+        };
+        for (int64_t z = lo.z; z <= hi.z; ++z) {
+            const double gz = gap(z, p.z);
+            for (int64_t y = lo.y; y <= hi.y; ++y) {
+                const double gyz = gz + gap(y, p.y);
+                if (gyz > reach2) continue;
+                for (int64_t x = lo.x; x <= hi.x; ++x) {
+                    const glm::i64vec3 c(x, y, z);
+                    if (c == home || gyz + gap(x, p.x) > reach2) continue;
+                    if (near_in(c)) return true;
+                }
+            }
+        }
         return false;
     }
     // Adds the points along a segment, at most spacing apart.
@@ -147,8 +170,11 @@ private:
     std::vector<Slot> slots_;
     int shift_ = 64;
     size_t used_ = 0;
-    std::vector<glm::vec3> points_;
-    std::vector<uint32_t> next_;
+    struct Entry {
+        glm::vec3 p;
+        uint32_t next;  // the next point of the cell's list
+    };
+    std::vector<Entry> points_;
 };
 
 // A point on the surface: inside or on the boundary of `face`.
