@@ -124,10 +124,12 @@ public:
         }
         return false;
     }
-    // Adds the points along a segment, at most spacing apart.
-    void add_segment(const glm::dvec3& a, const glm::dvec3& b, double spacing) {
+    // Adds the points along a segment, at most spacing apart; `with_start` false leaves out
+    // its first point (the previous segment's last: stored twice it would only lengthen the
+    // lists the queries walk).
+    void add_segment(const glm::dvec3& a, const glm::dvec3& b, double spacing, bool with_start = true) {
         const int n = std::max(1, int(std::ceil(glm::length(b - a) / spacing)));
-        for (int i = 0; i <= n; ++i) add(a + (b - a) * (double(i) / n));
+        for (int i = with_start ? 0 : 1; i <= n; ++i) add(a + (b - a) * (double(i) / n));
     }
 
 private:
@@ -334,6 +336,14 @@ private:
     std::vector<glm::uvec3> nbr_;
 };
 
+// f(v) for every vertex, in parallel (each v writes only its own entries).
+template <class F>
+void parallel_vertices(size_t n, const F& f) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t v = r.begin(); v != r.end(); ++v) f(v);
+    });
+}
+
 // |(x, y)| as glibc's hypotf computes it for finite values (squares summed in double, one
 // square root), inline: the library call was a tenth of the hatching setup.
 float hypot_float(float x, float y) { return float(std::sqrt(double(x) * double(x) + double(y) * double(y))); }
@@ -359,7 +369,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
     // crosses average as complex numbers; each starts at z = 1, its own principal direction.
     std::vector<glm::vec3> e1(n, glm::vec3(0.0f)), e2(n, glm::vec3(0.0f));
     std::vector<float> weight(n, 0.0f);
-    for (size_t v = 0; v < n; ++v) {
+    parallel_vertices(n, [&](size_t v) {
         const glm::dvec3 nv = unit_or_zero(glm::dvec3(normals[v]));
         const double k1 = c.k1[v], k2 = c.k2[v];
         const glm::dvec3 d = std::abs(k1) >= std::abs(k2) ? glm::dvec3(c.pdir1[v]) : glm::dvec3(c.pdir2[v]);
@@ -370,7 +380,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
         // Anisotropy: strongly curved, non-umbilic vertices keep their direction; a floor lets
         // umbilic regions (all weights near 0) still average.
         weight[v] = float((std::isfinite(sum) && sum > 0.0 ? std::abs(k1 - k2) / sum : 0.0) + 1e-3);
-    }
+    });
     // Each vertex's distinct neighbours through its faces, with the turn of a neighbour's frame
     // into the vertex's (its e1 laid into the vertex's tangent plane), as e^{4iφ}.
     const auto& tris = mesh.triangles;
@@ -404,7 +414,9 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 const float len = hypot_float(x, y);
                 if (!(len > 1e-6f)) continue;
                 const std::complex<float> once(x / len, y / len);
-                turn[a] = (once * once) * (once * once);
+                // Weighted here once (the product is the same float either way: the weight
+                // multiplied the turn first in the rounds as well).
+                turn[a] = weight[u] * ((once * once) * (once * once));
             }
         }
     });
@@ -420,7 +432,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 if (z[v] == 0.0f) continue;
                 std::complex<float> sum = weight[v] * z[v];
                 for (uint32_t a = first[v]; a < first[v] + count[v]; ++a)
-                    sum += weight[around[a]] * turn[a] * z[around[a]];
+                    sum += turn[a] * z[around[a]];
                 const float len = hypot_float(sum.real(), sum.imag());
                 if (len > 1e-12f && std::isfinite(len)) next[v] = sum / len;
             }
@@ -428,11 +440,11 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
         std::swap(z, next);
     }
     std::vector<glm::vec3> out(n, glm::vec3(0.0f));
-    for (size_t v = 0; v < n; ++v) {
-        if (z[v] == 0.0f) continue;
+    parallel_vertices(n, [&](size_t v) {
+        if (z[v] == 0.0f) return;
         const float theta = 0.25f * std::arg(z[v]);
         out[v] = std::cos(theta) * e1[v] + std::sin(theta) * e2[v];
-    }
+    });
     return out;
 }
 
@@ -491,7 +503,7 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
             auto add_stroke = [&](const HatchStroke& s) {
                 const size_t m = s.points.size();
                 for (size_t i = 0; i + 1 < m + (s.closed ? 1 : 0); ++i)
-                    grid.add_segment(glm::dvec3(s.points[i]), glm::dvec3(s.points[(i + 1) % m]), d_test * 0.5);
+                    grid.add_segment(glm::dvec3(s.points[i]), glm::dvec3(s.points[(i + 1) % m]), d_test * 0.5, i == 0);
             };
             for (const HatchStroke& s : strokes) add_stroke(s);
 
