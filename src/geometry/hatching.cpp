@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <iterator>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -460,16 +461,19 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
     out.spacing = float(spacing);
     if (!(spacing > 0.0) || mesh.triangles.empty()) return out;
     const int levels = std::clamp(options.levels, 1, 4);
-    const std::vector<glm::vec3> field = hatch_direction_field(mesh, normals, curvature, options.smoothing);
-    Tracer tracer(mesh, field, adjacency);
-    const FaceFrames& frames = tracer.frames();
     const auto& tris = mesh.triangles;
-
-    // Free seeds: random points of the faces, about one per (finest spacing)² of area, in an
-    // order fixed by the seed.
-    std::mt19937_64 rng(options.seed);
+    // The cross field beside the faces' frames and the free seeds, which do not read it: the
+    // seeds' serial random draws run while the field's rounds take the other threads.
+    std::vector<glm::vec3> field;
+    std::optional<Tracer> tracer_slot;
     std::vector<SurfacePoint> free_seeds;
-    {
+    tbb::parallel_invoke([&] { field = hatch_direction_field(mesh, normals, curvature, options.smoothing); },
+                         [&] {
+        tracer_slot.emplace(mesh, field, adjacency);  // keeps a reference to `field`, read later
+        const FaceFrames& frames = tracer_slot->frames();
+        // Free seeds: random points of the faces, about one per (finest spacing)² of area, in
+        // an order fixed by the seed.
+        std::mt19937_64 rng(options.seed);
         const double finest = spacing / double(1 << (levels - 1));
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         for (uint32_t f = 0; f < tris.size(); ++f) {
@@ -486,7 +490,9 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
             }
         }
         std::shuffle(free_seeds.begin(), free_seeds.end(), rng);
-    }
+    });
+    const Tracer& tracer = *tracer_slot;
+    const FaceFrames& frames = tracer.frames();
 
     // The two families never meet (each keeps its spacing only against its own strokes), so
     // each is traced on its own thread with its own visit stamps, and family 0's strokes come
