@@ -165,9 +165,9 @@ void BM_SvgBezierFit(benchmark::State& state) {
         const Camera camera = frame_camera(box, CameraOptions{}, 1.0f);
         LineExtractor extractor(std::move(mesh));
         std::vector<LineSettings> lines;
-        for (const char* type : {"contour", "suggestive", "crease", "border", "ridge", "valley", "intersection",
-                                 "isophote", "topo", "suggestive-highlight", "principal-highlight", "apparent-ridge",
-                                 "hatch"})
+        for (const char* type :
+             {"contour", "suggestive", "crease", "border", "ridge", "valley", "intersection", "isophote", "topo",
+              "suggestive-highlight", "principal-highlight", "apparent-ridge", "hatch"})
             lines.push_back({type, {}});
         return extractor.draw(camera, 1024, 1024, lines);
     }();

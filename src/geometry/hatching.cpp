@@ -3,7 +3,6 @@
 #include "geometry/hatching.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <complex>
 #include <iterator>
@@ -14,6 +13,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
+
+#include "geometry/point_grid.hpp"
 
 namespace inkshade::geometry {
 namespace {
@@ -71,113 +72,6 @@ struct FaceFrames {
         }
     }
     bool usable(uint32_t f) const { return f < normal.size() && normal[f] != glm::dvec3(0.0); }
-};
-
-// 3-D spatial hash of points: an open-addressing table from a cell to the head of its list of
-// points (the lists threaded through one array), so adding a point allocates nothing but the
-// two arrays' growth.
-class PointGrid {
-public:
-    explicit PointGrid(double cell) : cell_(cell) { rehash(1024); }
-    void add(const glm::dvec3& p) {
-        if (2 * (used_ + 1) > slots_.size()) rehash(2 * slots_.size());
-        Slot& slot = find(key(cell_of(p)));
-        if (slot.head == kNone) ++used_;
-        points_.push_back({glm::vec3(p), slot.head});
-        slot.head = uint32_t(points_.size() - 1);
-    }
-    // Whether some point lies within r (≤ the cell size) of p: the cells that the box of
-    // radius r around p touches (two or three a side), its own cell first (where a point is
-    // most likely), skipping those whose box is farther than r (the corners of a 3 × 3 × 3
-    // block mostly are).
-    bool any_within(const glm::dvec3& p, double r) const {
-        const glm::i64vec3 lo = cell_of(p - glm::dvec3(r)), hi = cell_of(p + glm::dvec3(r)), home = cell_of(p);
-        const float r2 = float(r * r);
-        const glm::vec3 pf(p);
-        auto near_in = [&](const glm::i64vec3& c) {
-            for (uint32_t i = lookup(key(c)); i != kNone; i = points_[i].next) {
-                const glm::vec3 d = points_[i].p - pf;
-                if (glm::dot(d, d) < r2) return true;
-            }
-            return false;
-        };
-        if (near_in(home)) return true;
-        // A point is stored in float, so it may sit a rounding step outside its cell's box:
-        // the boxes are tested grown by `slack`.
-        const double slack = 1e-5 * (cell_ + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
-        const double reach2 = (r + slack) * (r + slack);
-        auto gap = [&](int64_t c, double v) {
-            const double below = double(c) * cell_ - v, above = v - double(c + 1) * cell_;
-            const double g = std::max({below, above, 0.0});
-            return g * g;
-        };
-        for (int64_t z = lo.z; z <= hi.z; ++z) {
-            const double gz = gap(z, p.z);
-            for (int64_t y = lo.y; y <= hi.y; ++y) {
-                const double gyz = gz + gap(y, p.y);
-                if (gyz > reach2) continue;
-                for (int64_t x = lo.x; x <= hi.x; ++x) {
-                    const glm::i64vec3 c(x, y, z);
-                    if (c == home || gyz + gap(x, p.x) > reach2) continue;
-                    if (near_in(c)) return true;
-                }
-            }
-        }
-        return false;
-    }
-    // Adds the points along a segment, at most spacing apart; `with_start` false leaves out
-    // its first point (the previous segment's last: stored twice it would only lengthen the
-    // lists the queries walk).
-    void add_segment(const glm::dvec3& a, const glm::dvec3& b, double spacing, bool with_start = true) {
-        const int n = std::max(1, int(std::ceil(glm::length(b - a) / spacing)));
-        for (int i = with_start ? 0 : 1; i <= n; ++i) add(a + (b - a) * (double(i) / n));
-    }
-
-private:
-    struct Slot {
-        uint64_t key = kEmpty;
-        uint32_t head = kNone;
-    };
-    static constexpr uint64_t kEmpty = ~uint64_t(0);
-
-    glm::i64vec3 cell_of(const glm::dvec3& p) const { return glm::i64vec3(glm::floor(p / cell_)); }
-    // 21 bits a coordinate (cells wrap beyond ±2^20: only more points per list, never a miss).
-    static uint64_t key(const glm::i64vec3& c) {
-        return (uint64_t(c.x & 0x1fffff) << 42) | (uint64_t(c.y & 0x1fffff) << 21) | uint64_t(c.z & 0x1fffff);
-    }
-    // Fibonacci hashing: the product's top bits depend on every bit of the key (its low bits
-    // only on the key's low bits, which left cells differing in x alone in one probe run).
-    size_t slot_of(uint64_t k) const { return size_t((k * 0x9e3779b97f4a7c15ull) >> shift_); }
-    Slot& find(uint64_t k) {
-        for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1))
-            if (slots_[h].key == k || slots_[h].key == kEmpty) {
-                slots_[h].key = k;
-                return slots_[h];
-            }
-    }
-    uint32_t lookup(uint64_t k) const {
-        for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1)) {
-            if (slots_[h].key == k) return slots_[h].head;
-            if (slots_[h].key == kEmpty) return kNone;
-        }
-    }
-    void rehash(size_t capacity) {
-        std::vector<Slot> old = std::move(slots_);
-        slots_.assign(capacity, Slot{});
-        shift_ = 64 - std::countr_zero(capacity);
-        for (const Slot& s : old)
-            if (s.key != kEmpty) find(s.key).head = s.head;
-    }
-
-    double cell_;
-    std::vector<Slot> slots_;
-    int shift_ = 64;
-    size_t used_ = 0;
-    struct Entry {
-        glm::vec3 p;
-        uint32_t next;  // the next point of the cell's list
-    };
-    std::vector<Entry> points_;
 };
 
 // A point on the surface: inside or on the boundary of `face`.
@@ -432,8 +326,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 next[v] = z[v];
                 if (z[v] == 0.0f) continue;
                 std::complex<float> sum = weight[v] * z[v];
-                for (uint32_t a = first[v]; a < first[v] + count[v]; ++a)
-                    sum += turn[a] * z[around[a]];
+                for (uint32_t a = first[v]; a < first[v] + count[v]; ++a) sum += turn[a] * z[around[a]];
                 const float len = hypot_float(sum.real(), sum.imag());
                 if (len > 1e-12f && std::isfinite(len)) next[v] = sum / len;
             }
