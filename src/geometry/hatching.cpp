@@ -1,5 +1,6 @@
 // Hatching strokes: a smoothed cross field, streamlines traced face to face, spacing kept with
-// a hash grid of the accepted strokes' points (one grid per family and level).
+// a hash grid of the accepted strokes' points (one grid per family and level; point_grid.hpp).
+// The two families are traced as two tasks; the result does not depend on the thread count.
 #include "geometry/hatching.hpp"
 
 #include <algorithm>
@@ -360,8 +361,8 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
     std::vector<glm::vec3> field;
     std::optional<Tracer> tracer_slot;
     std::vector<SurfacePoint> free_seeds;
-    tbb::parallel_invoke([&] { field = hatch_direction_field(mesh, normals, curvature, options.smoothing); },
-                         [&] {
+    auto make_field = [&] { field = hatch_direction_field(mesh, normals, curvature, options.smoothing); };
+    auto make_seeds = [&] {
         tracer_slot.emplace(mesh, field, adjacency);  // keeps a reference to `field`, read later
         const FaceFrames& frames = tracer_slot->frames();
         // Free seeds: random points of the faces, about one per (finest spacing)² of area, in
@@ -383,7 +384,8 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
             }
         }
         std::shuffle(free_seeds.begin(), free_seeds.end(), rng);
-    });
+    };
+    tbb::parallel_invoke(make_field, make_seeds);
     const Tracer& tracer = *tracer_slot;
     const FaceFrames& frames = tracer.frames();
 
