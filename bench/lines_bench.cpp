@@ -4,6 +4,10 @@
 // chaining is 30 ms on 2 cores; the extraction here should be well under it.
 //   inkshade_bench --benchmark_filter=Lines --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true
+// Also, on the 100 k teapot, hatching's once-per-mesh setup and the SVG writing of all
+// thirteen object-space types (docs/benchmarks.md):
+//   inkshade_bench --benchmark_filter='Hatching|Svg' --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
