@@ -4,6 +4,10 @@
 // chaining is 30 ms on 2 cores; the extraction here should be well under it.
 //   inkshade_bench --benchmark_filter=Lines --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true
+// Also, on the 100 k teapot, hatching's once-per-mesh setup and the SVG writing of all
+// thirteen object-space types (docs/benchmarks.md):
+//   inkshade_bench --benchmark_filter='Hatching|Svg' --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -12,7 +16,9 @@
 #include "geometry/contours.hpp"
 #include "geometry/creases.hpp"
 #include "geometry/curvature.hpp"
+#include "geometry/hatching.hpp"
 #include "geometry/suggestive_contours.hpp"
+#include "inkshade/line_drawing.hpp"
 
 namespace {
 
@@ -100,8 +106,93 @@ void BM_LinesCreases(benchmark::State& state) {
     set_counters(state, n);
 }
 
+// The 100 k teapot (builtin:teapot:subdivisions=40, 102,080 triangles) with its curvature and
+// adjacency, for the once-per-mesh hatching setup.
+struct Teapot {
+    Mesh mesh;
+    geometry::Curvature curvature;
+    geometry::EdgeAdjacency adjacency;
+};
+
+const Teapot& teapot() {
+    static const Teapot t = [] {
+        Teapot tp;
+        tp.mesh = builtin::teapot(40);
+        tp.curvature = geometry::compute_curvature(tp.mesh, tp.mesh.normals);
+        tp.adjacency = geometry::build_edge_adjacency(tp.mesh);
+        return tp;
+    }();
+    return t;
+}
+
+// The `hatch` line type's defaults: 30 smoothing rounds, two levels, both families.
+geometry::HatchOptions hatch_defaults() {
+    geometry::HatchOptions o;
+    o.smoothing = 30;
+    return o;
+}
+
+// Hatching's whole per-mesh setup: cross field and streamlines (Hertzmann & Zorin 2000,
+// Jobard & Lefer 1997).
+void BM_HatchingSetup(benchmark::State& state) {
+    const Teapot& t = teapot();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    size_t n = 0;
+    for (auto _ : state) {
+        const geometry::Hatching h =
+            geometry::trace_hatching(t.mesh, t.mesh.normals, t.curvature, t.adjacency, hatch_defaults());
+        n = h.strokes.size();
+        benchmark::DoNotOptimize(h.strokes.data());
+    }
+    state.counters["triangles"] = double(t.mesh.triangle_count());
+    state.counters["threads"] = double(state.range(0));
+    state.counters["strokes"] = double(n);
+}
+
+// The cross field alone (30 rounds of averaging).
+void BM_HatchingField(benchmark::State& state) {
+    const Teapot& t = teapot();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    for (auto _ : state) {
+        const auto field = geometry::hatch_direction_field(t.mesh, t.mesh.normals, t.curvature, 30);
+        benchmark::DoNotOptimize(field.data());
+    }
+    state.counters["threads"] = double(state.range(0));
+}
+
+// SVG writing of the teapot's thirteen object-space types (what `inkshade lines` writes; the
+// Bézier fit of Schneider 1990 is most of it): the drawing is made once, format_svg timed.
+void BM_SvgBezierFit(benchmark::State& state) {
+    static const LineDrawing drawing = [] {
+        Mesh mesh = builtin::teapot(40);
+        const BoundingBox box = mesh.bounds();
+        const Camera camera = frame_camera(box, CameraOptions{}, 1.0f);
+        LineExtractor extractor(std::move(mesh));
+        std::vector<LineSettings> lines;
+        for (const char* type :
+             {"contour", "suggestive", "crease", "border", "ridge", "valley", "intersection", "isophote", "topo",
+              "suggestive-highlight", "principal-highlight", "apparent-ridge", "hatch"})
+            lines.push_back({type, {}});
+        return extractor.draw(camera, 1024, 1024, lines);
+    }();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    size_t bytes = 0, paths = 0;
+    for (const LineLayer& layer : drawing.layers) paths += layer.visible.size() + layer.hidden.size();
+    for (auto _ : state) {
+        const std::string svg = format_svg(drawing, glm::vec4(1.0f));
+        bytes = svg.size();
+        benchmark::DoNotOptimize(svg.data());
+    }
+    state.counters["threads"] = double(state.range(0));
+    state.counters["paths"] = double(paths);
+    state.counters["bytes"] = double(bytes);
+}
+
 }  // namespace
 
+BENCHMARK(BM_HatchingSetup)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HatchingField)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SvgBezierFit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LinesContours)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LinesSuggestive)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LinesPerView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);

@@ -1,15 +1,21 @@
 // Hatching strokes: a smoothed cross field, streamlines traced face to face, spacing kept with
-// a hash grid of the accepted strokes' points (one grid per family and level).
+// a hash grid of the accepted strokes' points (one grid per family and level; point_grid.hpp).
+// The two families are traced as two tasks; the result does not depend on the thread count.
 #include "geometry/hatching.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <iterator>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
+
+#include "geometry/point_grid.hpp"
 
 namespace inkshade::geometry {
 namespace {
@@ -69,81 +75,6 @@ struct FaceFrames {
     bool usable(uint32_t f) const { return f < normal.size() && normal[f] != glm::dvec3(0.0); }
 };
 
-// 3-D spatial hash of points: an open-addressing table from a cell to the head of its list of
-// points (the lists threaded through one array), so adding a point allocates nothing but the
-// two arrays' growth.
-class PointGrid {
-public:
-    explicit PointGrid(double cell) : cell_(cell) { rehash(1024); }
-    void add(const glm::dvec3& p) {
-        if (2 * (used_ + 1) > slots_.size()) rehash(2 * slots_.size());
-        Slot& slot = find(key(cell_of(p)));
-        if (slot.head == kNone) ++used_;
-        points_.push_back(glm::vec3(p));
-        next_.push_back(slot.head);
-        slot.head = uint32_t(points_.size() - 1);
-    }
-    // Whether some point lies within r (≤ the cell size) of p: the cells that the box of
-    // radius r around p touches (two or three a side).
-    bool any_within(const glm::dvec3& p, double r) const {
-        const glm::i64vec3 lo = cell_of(p - glm::dvec3(r)), hi = cell_of(p + glm::dvec3(r));
-        const float r2 = float(r * r);
-        const glm::vec3 pf(p);
-        for (int64_t z = lo.z; z <= hi.z; ++z)
-            for (int64_t y = lo.y; y <= hi.y; ++y)
-                for (int64_t x = lo.x; x <= hi.x; ++x)
-                    for (uint32_t i = lookup(key({x, y, z})); i != kNone; i = next_[i]) {
-                        const glm::vec3 d = points_[i] - pf;
-                        if (glm::dot(d, d) < r2) return true;
-                    }
-        return false;
-    }
-    // Adds the points along a segment, at most spacing apart.
-    void add_segment(const glm::dvec3& a, const glm::dvec3& b, double spacing) {
-        const int n = std::max(1, int(std::ceil(glm::length(b - a) / spacing)));
-        for (int i = 0; i <= n; ++i) add(a + (b - a) * (double(i) / n));
-    }
-
-private:
-    struct Slot {
-        uint64_t key = kEmpty;
-        uint32_t head = kNone;
-    };
-    static constexpr uint64_t kEmpty = ~uint64_t(0);
-
-    glm::i64vec3 cell_of(const glm::dvec3& p) const { return glm::i64vec3(glm::floor(p / cell_)); }
-    // 21 bits a coordinate (cells wrap beyond ±2^20: only more points per list, never a miss).
-    static uint64_t key(const glm::i64vec3& c) {
-        return (uint64_t(c.x & 0x1fffff) << 42) | (uint64_t(c.y & 0x1fffff) << 21) | uint64_t(c.z & 0x1fffff);
-    }
-    size_t slot_of(uint64_t k) const { return size_t((k * 0x9e3779b97f4a7c15ull) >> 20) & (slots_.size() - 1); }
-    Slot& find(uint64_t k) {
-        for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1))
-            if (slots_[h].key == k || slots_[h].key == kEmpty) {
-                slots_[h].key = k;
-                return slots_[h];
-            }
-    }
-    uint32_t lookup(uint64_t k) const {
-        for (size_t h = slot_of(k);; h = (h + 1) & (slots_.size() - 1)) {
-            if (slots_[h].key == k) return slots_[h].head;
-            if (slots_[h].key == kEmpty) return kNone;
-        }
-    }
-    void rehash(size_t capacity) {
-        std::vector<Slot> old = std::move(slots_);
-        slots_.assign(capacity, Slot{});
-        for (const Slot& s : old)
-            if (s.key != kEmpty) find(s.key).head = s.head;
-    }
-
-    double cell_;
-    std::vector<Slot> slots_;
-    size_t used_ = 0;
-    std::vector<glm::vec3> points_;
-    std::vector<uint32_t> next_;
-};
-
 // A point on the surface: inside or on the boundary of `face`.
 struct SurfacePoint {
     uint32_t face = kNone;
@@ -153,11 +84,7 @@ struct SurfacePoint {
 class Tracer {
 public:
     Tracer(const Mesh& mesh, const std::vector<glm::vec3>& field, const EdgeAdjacency& adj)
-        : mesh_(mesh),
-          field_(field),
-          frames_(mesh),
-          nbr_(face_neighbours(mesh, adj)),
-          visit_(mesh.triangles.size(), kNone) {}
+        : mesh_(mesh), field_(field), frames_(mesh), nbr_(face_neighbours(mesh, adj)) {}
 
     const FaceFrames& frames() const { return frames_; }
 
@@ -262,9 +189,10 @@ public:
     // Traces from `seed` (direction `d`, in the field) until a border, an unusable face, a
     // sharp turn of the field, a face this stroke crossed already, or a point nearer than
     // `stop` to `grid`'s points. Returns the nodes (edge points) in order; `looped` when the
-    // trace came back into the seed's face.
+    // trace came back into the seed's face. `visit` holds per face the stamp of the last trace
+    // that crossed it (the caller's own, so that traces may run on several threads).
     std::vector<Node> trace(const SurfacePoint& seed, glm::dvec3 d, const PointGrid& grid, double stop, uint32_t stamp,
-                            uint32_t seed_stamp, bool& looped) {
+                            uint32_t seed_stamp, std::vector<uint32_t>& visit_, bool& looped) const {
         std::vector<Node> nodes;
         looped = false;
         SurfacePoint at = seed;
@@ -297,15 +225,24 @@ public:
         return nodes;
     }
 
-    std::vector<uint32_t>& visits() { return visit_; }
-
 private:
     const Mesh& mesh_;
     const std::vector<glm::vec3>& field_;
     FaceFrames frames_;
     std::vector<glm::uvec3> nbr_;
-    std::vector<uint32_t> visit_;  // per face: the stamp of the last trace that crossed it
 };
+
+// f(v) for every vertex, in parallel (each v writes only its own entries).
+template <class F>
+void parallel_vertices(size_t n, const F& f) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t v = r.begin(); v != r.end(); ++v) f(v);
+    });
+}
+
+// |(x, y)| as glibc's hypotf computes it for finite values (squares summed in double, one
+// square root), inline: the library call was a tenth of the hatching setup.
+float hypot_float(float x, float y) { return float(std::sqrt(double(x) * double(x) + double(y) * double(y))); }
 
 double bounding_diagonal(const Mesh& mesh) {
     if (mesh.positions.empty()) return 0.0;
@@ -328,7 +265,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
     // crosses average as complex numbers; each starts at z = 1, its own principal direction.
     std::vector<glm::vec3> e1(n, glm::vec3(0.0f)), e2(n, glm::vec3(0.0f));
     std::vector<float> weight(n, 0.0f);
-    for (size_t v = 0; v < n; ++v) {
+    parallel_vertices(n, [&](size_t v) {
         const glm::dvec3 nv = unit_or_zero(glm::dvec3(normals[v]));
         const double k1 = c.k1[v], k2 = c.k2[v];
         const glm::dvec3 d = std::abs(k1) >= std::abs(k2) ? glm::dvec3(c.pdir1[v]) : glm::dvec3(c.pdir2[v]);
@@ -339,7 +276,7 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
         // Anisotropy: strongly curved, non-umbilic vertices keep their direction; a floor lets
         // umbilic regions (all weights near 0) still average.
         weight[v] = float((std::isfinite(sum) && sum > 0.0 ? std::abs(k1 - k2) / sum : 0.0) + 1e-3);
-    }
+    });
     // Each vertex's distinct neighbours through its faces, with the turn of a neighbour's frame
     // into the vertex's (its e1 laid into the vertex's tangent plane), as e^{4iφ}.
     const auto& tris = mesh.triangles;
@@ -370,10 +307,12 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 const uint32_t u = around[a];
                 if (e1[u] == glm::vec3(0.0f)) continue;
                 const float x = glm::dot(e1[u], e1[v]), y = glm::dot(e1[u], e2[v]);
-                const float len = std::hypot(x, y);
+                const float len = hypot_float(x, y);
                 if (!(len > 1e-6f)) continue;
                 const std::complex<float> once(x / len, y / len);
-                turn[a] = (once * once) * (once * once);
+                // Weighted here once (the product is the same float either way: the weight
+                // multiplied the turn first in the rounds as well).
+                turn[a] = weight[u] * ((once * once) * (once * once));
             }
         }
     });
@@ -388,20 +327,19 @@ std::vector<glm::vec3> hatch_direction_field(const Mesh& mesh, const std::vector
                 next[v] = z[v];
                 if (z[v] == 0.0f) continue;
                 std::complex<float> sum = weight[v] * z[v];
-                for (uint32_t a = first[v]; a < first[v] + count[v]; ++a)
-                    sum += weight[around[a]] * turn[a] * z[around[a]];
-                const float len = std::abs(sum);
+                for (uint32_t a = first[v]; a < first[v] + count[v]; ++a) sum += turn[a] * z[around[a]];
+                const float len = hypot_float(sum.real(), sum.imag());
                 if (len > 1e-12f && std::isfinite(len)) next[v] = sum / len;
             }
         });
         std::swap(z, next);
     }
     std::vector<glm::vec3> out(n, glm::vec3(0.0f));
-    for (size_t v = 0; v < n; ++v) {
-        if (z[v] == 0.0f) continue;
+    parallel_vertices(n, [&](size_t v) {
+        if (z[v] == 0.0f) return;
         const float theta = 0.25f * std::arg(z[v]);
         out[v] = std::cos(theta) * e1[v] + std::sin(theta) * e2[v];
-    }
+    });
     return out;
 }
 
@@ -417,16 +355,19 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
     out.spacing = float(spacing);
     if (!(spacing > 0.0) || mesh.triangles.empty()) return out;
     const int levels = std::clamp(options.levels, 1, 4);
-    const std::vector<glm::vec3> field = hatch_direction_field(mesh, normals, curvature, options.smoothing);
-    Tracer tracer(mesh, field, adjacency);
-    const FaceFrames& frames = tracer.frames();
     const auto& tris = mesh.triangles;
-
-    // Free seeds: random points of the faces, about one per (finest spacing)² of area, in an
-    // order fixed by the seed.
-    std::mt19937_64 rng(options.seed);
+    // The cross field beside the faces' frames and the free seeds, which do not read it: the
+    // seeds' serial random draws run while the field's rounds take the other threads.
+    std::vector<glm::vec3> field;
+    std::optional<Tracer> tracer_slot;
     std::vector<SurfacePoint> free_seeds;
-    {
+    auto make_field = [&] { field = hatch_direction_field(mesh, normals, curvature, options.smoothing); };
+    auto make_seeds = [&] {
+        tracer_slot.emplace(mesh, field, adjacency);  // keeps a reference to `field`, read later
+        const FaceFrames& frames = tracer_slot->frames();
+        // Free seeds: random points of the faces, about one per (finest spacing)² of area, in
+        // an order fixed by the seed.
+        std::mt19937_64 rng(options.seed);
         const double finest = spacing / double(1 << (levels - 1));
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         for (uint32_t f = 0; f < tris.size(); ++f) {
@@ -443,12 +384,18 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
             }
         }
         std::shuffle(free_seeds.begin(), free_seeds.end(), rng);
-    }
+    };
+    tbb::parallel_invoke(make_field, make_seeds);
+    const Tracer& tracer = *tracer_slot;
+    const FaceFrames& frames = tracer.frames();
 
-    uint32_t stamp = 0;
-    const int families = options.cross ? 2 : 1;
-    for (int family = 0; family < families; ++family) {
-        const size_t family_begin = out.strokes.size();
+    // The two families never meet (each keeps its spacing only against its own strokes), so
+    // each is traced on its own thread with its own visit stamps, and family 0's strokes come
+    // first whatever the thread count.
+    auto trace_family = [&](const int family) {
+        std::vector<HatchStroke> strokes;
+        std::vector<uint32_t> visit(tris.size(), kNone);  // per face: the last trace that crossed it
+        uint32_t stamp = 0;
         for (int level = 0; level < levels; ++level) {
             const double d_sep = spacing / double(1 << level);
             const double d_test = 0.5 * d_sep;
@@ -457,9 +404,9 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
             auto add_stroke = [&](const HatchStroke& s) {
                 const size_t m = s.points.size();
                 for (size_t i = 0; i + 1 < m + (s.closed ? 1 : 0); ++i)
-                    grid.add_segment(glm::dvec3(s.points[i]), glm::dvec3(s.points[(i + 1) % m]), d_test * 0.5);
+                    grid.add_segment(glm::dvec3(s.points[i]), glm::dvec3(s.points[(i + 1) % m]), d_test * 0.5, i == 0);
             };
-            for (size_t i = family_begin; i < out.strokes.size(); ++i) add_stroke(out.strokes[i]);
+            for (const HatchStroke& s : strokes) add_stroke(s);
 
             auto try_seed = [&](const SurfacePoint& seed) -> bool {
                 if (!frames.usable(seed.face) || grid.any_within(seed.p, d_sep * 0.9)) return false;
@@ -473,14 +420,14 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                 const glm::dvec3 d = tracer.field_in(seed.face, ref);
                 if (d == glm::dvec3(0.0)) return false;
                 const uint32_t seed_stamp = ++stamp;
-                tracer.visits()[seed.face] = seed_stamp;
+                visit[seed.face] = seed_stamp;
                 bool looped = false, back_looped = false;
                 const uint32_t trace_stamp = ++stamp;  // both halves: neither re-enters a face of the other
                 const std::vector<Tracer::Node> fwd =
-                    tracer.trace(seed, d, grid, d_test, trace_stamp, seed_stamp, looped);
+                    tracer.trace(seed, d, grid, d_test, trace_stamp, seed_stamp, visit, looped);
                 const std::vector<Tracer::Node> back =
                     looped ? std::vector<Tracer::Node>{}
-                           : tracer.trace(seed, -d, grid, d_test, trace_stamp, seed_stamp, back_looped);
+                           : tracer.trace(seed, -d, grid, d_test, trace_stamp, seed_stamp, visit, back_looped);
                 HatchStroke s;
                 s.family = uint8_t(family);
                 s.level = uint8_t(level);
@@ -506,17 +453,17 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                     length += glm::length(glm::dvec3(s.points[i + 1]) - glm::dvec3(s.points[i]));
                 if (length < d_sep) return false;  // a stub between two strokes
                 add_stroke(s);
-                out.strokes.push_back(std::move(s));
+                strokes.push_back(std::move(s));
                 return true;
             };
 
             // Seeds beside every stroke of the family, d_sep to either side (Jobard & Lefer),
             // the new ones included as they come; free seeds where none reached.
-            size_t next_stroke = family_begin;
+            size_t next_stroke = 0;
             size_t next_free = 0;
             for (;;) {
-                if (next_stroke < out.strokes.size()) {
-                    const HatchStroke s = out.strokes[next_stroke++];  // a copy: try_seed appends
+                if (next_stroke < strokes.size()) {
+                    const HatchStroke s = strokes[next_stroke++];  // a copy: try_seed appends
                     const size_t pieces = s.faces.size();
                     double start = 0.0, next_at = 0.5 * d_sep;
                     for (size_t i = 0; i < pieces; ++i) {
@@ -541,6 +488,15 @@ Hatching trace_hatching(const Mesh& mesh, const std::vector<glm::vec3>& normals,
                 if (!found) break;
             }
         }
+        return strokes;
+    };
+    if (options.cross) {
+        std::vector<HatchStroke> across;
+        tbb::parallel_invoke([&] { out.strokes = trace_family(0); }, [&] { across = trace_family(1); });
+        out.strokes.insert(out.strokes.end(), std::make_move_iterator(across.begin()),
+                           std::make_move_iterator(across.end()));
+    } else {
+        out.strokes = trace_family(0);
     }
     return out;
 }

@@ -167,6 +167,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         needs.adjacency |= n.adjacency;
         needs.curvature |= n.curvature;
         if (settings->type == "crease") needs.crease_angle = line_number(*settings, "angle");
+        needs.intersections |= settings->type == "intersection";
     }
     // The ray scene (first view only) is built beside the curvature threads, after the
     // adjacency's serial sort and the crease classification (which drops a large adjacency):

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include <tbb/global_control.h>
+
 #include "geometry/adjacency.hpp"
 #include "geometry/analytic_meshes.hpp"
 #include "geometry/builtin_models.hpp"
@@ -301,6 +303,57 @@ TEST(Hatching, DirectionFieldAveragesCrossesNotVectors) {
         EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);
         EXPECT_LT(std::min(std::abs(d.x), std::abs(d.y)), 0.02f) << d.x << ", " << d.y;
     }
+}
+
+void expect_same_strokes(const Hatching& a, const Hatching& b) {
+    ASSERT_EQ(a.strokes.size(), b.strokes.size());
+    for (size_t i = 0; i < a.strokes.size(); ++i) {
+        const HatchStroke &s = a.strokes[i], &t = b.strokes[i];
+        EXPECT_EQ(s.points, t.points) << "stroke " << i;
+        EXPECT_EQ(s.faces, t.faces) << "stroke " << i;
+        EXPECT_EQ(s.edges, t.edges) << "stroke " << i;
+        EXPECT_EQ(s.t, t.t) << "stroke " << i;
+        EXPECT_EQ(s.family, t.family);
+        EXPECT_EQ(s.level, t.level);
+        EXPECT_EQ(s.closed, t.closed);
+    }
+}
+
+Hatching hatch_on_threads(const Prepared& p, const HatchOptions& o, size_t threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return hatch(p, o);
+}
+
+// The families are traced on threads of their own and the field's rounds split between
+// threads: the strokes must not depend on how many there are.
+TEST(Hatching, SameStrokesOnOneTwoAndFourThreads) {
+    // Over 2 × 4096 vertices, so the field's rounds are split into several ranges.
+    const Prepared p = prepare(builtin::teapot(16));
+    ASSERT_GT(p.mesh.positions.size(), 8192u);
+    HatchOptions o;
+    o.smoothing = 30;
+    o.density = 0.5f;
+    const Hatching one = hatch_on_threads(p, o, 1);
+    ASSERT_GT(one.strokes.size(), 100u);
+    expect_same_strokes(one, hatch_on_threads(p, o, 2));
+    expect_same_strokes(one, hatch_on_threads(p, o, 4));
+}
+
+// The families never meet: with cross-hatching, the first family's strokes are exactly those
+// traced without it, and come first; the second family follows.
+TEST(Hatching, FirstFamilyIsTheSameWithAndWithoutCrossHatching) {
+    const Prepared p = prepare(builtin::torus(1.0f, 0.4f, 96, 48));
+    HatchOptions o;
+    o.spacing = 0.12f;
+    o.cross = false;
+    const Hatching alone = hatch(p, o);
+    o.cross = true;
+    Hatching both = hatch(p, o);
+    ASSERT_GT(both.strokes.size(), alone.strokes.size());
+    for (size_t i = 0; i < both.strokes.size(); ++i)
+        EXPECT_EQ(both.strokes[i].family, i < alone.strokes.size() ? 0 : 1) << "stroke " << i;
+    both.strokes.resize(alone.strokes.size());
+    expect_same_strokes(alone, both);
 }
 
 TEST(Hatching, DegenerateInputDoesNotCrash) {

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
 
+#include "geometry/builtin_models.hpp"
 #include "geometry/stroke_paths.hpp"
 #include "geometry/stroke_style.hpp"
 #include "inkshade/error.hpp"
@@ -377,6 +379,84 @@ TEST(SvgWriter, ColourAlongTheStrokeWritesRunsFromColourToEnd) {
         const auto b = test::parse_path_data(paths[k].attributes.at("d"));
         EXPECT_EQ(a.back().pieces.back().p3, b.front().pieces.front().p0);
     }
+}
+
+// Numbers have two decimals, rounded from the exact binary value with ties to even (printf's
+// "%.2f"), trailing zeros and a lone "-0" dropped.
+TEST(SvgWriter, NumbersRoundToTwoDecimalsAsPrintfDoes) {
+    LineDrawing d;
+    d.width = d.height = 2000;
+    LineLayer layer;
+    layer.settings = {"contour", {{"width", {2.5f}}}};
+    // 0.125 and 0.625 are ties (to even: .12, .62); 2.675f and 1.005f lie just below .675 and
+    // .005; -0.004 rounds to zero, -0.006 does not.
+    layer.visible.push_back(
+        path({{0.125f, 0.375f}, {2.675f, 1.005f}, {-0.004f, -0.006f}, {0.625f, 0.875f}, {1234.5678f, 10.0f}}, false));
+    d.layers.push_back(layer);
+    const std::vector<Element> paths =
+        layer_paths(parse_xml(format_svg(d, glm::vec4(0.0f), {.polylines = true})), "contour");
+    ASSERT_EQ(paths.size(), 1u);
+    EXPECT_EQ(paths[0].attributes.at("d"), "M0.12 0.38 L2.67 1 0 -0.01 0.62 0.88 1234.57 10");
+}
+
+// Paths are formatted in parallel: the bytes must not depend on the thread count, and the
+// paths keep the drawing's order.
+TEST(SvgWriter, SameBytesOnOneAndTwoThreadsWithPathsInOrder) {
+    LineDrawing d;
+    d.width = d.height = 1000;
+    LineLayer layer;
+    layer.settings = {"contour", {}};
+    for (int k = 0; k < 300; ++k) {
+        std::vector<glm::vec2> points;
+        for (int i = 0; i < 40; ++i)
+            points.push_back(
+                {float(10 + 3 * k % 900) + 5.0f * float(i), 20.0f + float(k) + 8.0f * std::sin(0.3f * float(i + k))});
+        std::vector<float> strength(points.size(), k % 3 == 0 ? 0.5f : 1.0f);
+        layer.visible.push_back(path(points, k % 7 == 0, strength));
+    }
+    d.layers.push_back(layer);
+    auto on = [&](size_t threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        return format_svg(d, glm::vec4(1.0f));
+    };
+    const std::string one = on(1);
+    EXPECT_EQ(one, on(2));
+    EXPECT_EQ(one, on(4));
+    const std::vector<Element> paths = layer_paths(parse_xml(one), "contour");
+    ASSERT_EQ(paths.size(), 300u);
+    for (size_t k = 0; k < paths.size(); ++k) {
+        const std::vector<test::SvgSubpath> sub = test::parse_path_data(paths[k].attributes.at("d"));
+        ASSERT_FALSE(sub.empty());
+        ASSERT_FALSE(sub[0].pieces.empty());
+        EXPECT_NEAR(sub[0].pieces[0].p0.x, layer.visible[k].points[0].x, 0.01) << "path " << k;
+        EXPECT_NEAR(sub[0].pieces[0].p0.y, layer.visible[k].points[0].y, 0.01) << "path " << k;
+    }
+}
+
+// The whole `lines` pipeline of the thirteen object-space types on a teapot (the hatching's
+// families on threads of their own, intersections beside curvature, paths formatted in
+// parallel) writes the same SVG on one thread and on two.
+TEST(SvgWriter, AllObjectSpaceTypesSameBytesOnOneAndTwoThreads) {
+    const Mesh teapot = builtin::teapot(16);
+    CameraOptions view;
+    view.azimuth_degrees = 30.0f;
+    view.elevation_degrees = 20.0f;
+    const Camera camera = frame_camera(teapot.bounds(), view, 800.0f / 600.0f);
+    std::vector<LineSettings> lines;
+    for (const char* type : {"contour", "suggestive", "crease", "border", "ridge", "valley", "intersection", "isophote",
+                             "topo", "suggestive-highlight", "principal-highlight", "apparent-ridge", "hatch"})
+        lines.push_back({type, {}});
+    auto on = [&](size_t threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        LineExtractor extractor(teapot);
+        return format_svg(extractor.draw(camera, 800, 600, lines), glm::vec4(1.0f));
+    };
+    const std::string one = on(1);
+    const std::vector<Element> elements = parse_xml(one);
+    EXPECT_GT(layer_paths(elements, "hatch").size(), 20u);
+    EXPECT_FALSE(layer_paths(elements, "intersection").empty());
+    EXPECT_FALSE(layer_paths(elements, "contour").empty());
+    EXPECT_EQ(one, on(2));
 }
 
 TEST(LinesJson, RoundTripsLayersAndPaths) {

@@ -79,17 +79,22 @@ void MeshLineData::release_derived() {
 
 void MeshLineData::prepare(MeshLineNeeds needs, const std::function<void()>& then) {
     // Each task logs into its own list; the two are merged afterwards in a fixed order.
-    TimingLog adjacency_log, curvature_log;
+    TimingLog adjacency_log, curvature_log, intersection_log;
     auto adjacency_side = [&] {
         if (needs.adjacency) creases(needs.crease_angle, adjacency_log);
         if (then) then();
     };
-    if (needs.curvature && !curvature_) {
-        tbb::parallel_invoke(adjacency_side, [&] { curvature(curvature_log); });
+    auto curvature_side = [&] {
+        if (needs.curvature && !curvature_) curvature(curvature_log);
+    };
+    if (needs.intersections && !intersections_ && mesh_->triangles.size() <= kOverlapTriangles) {
+        tbb::parallel_invoke(adjacency_side, curvature_side, [&] { intersections(intersection_log); });
+    } else if (needs.curvature && !curvature_) {
+        tbb::parallel_invoke(adjacency_side, curvature_side);
     } else {
         adjacency_side();
     }
-    for (auto* log : {&curvature_log, &adjacency_log})
+    for (auto* log : {&curvature_log, &adjacency_log, &intersection_log})
         setup_timings_.insert(setup_timings_.end(), log->begin(), log->end());
 }
 
@@ -142,9 +147,10 @@ const RidgeLines& MeshLineData::ridges(const RidgeOptions& options) {
     return *ridges_;
 }
 
-const std::vector<LineSegment>& MeshLineData::intersections() {
-    if (!intersections_)
-        intersections_ = timed(setup_timings_, "intersections", [&] { return extract_intersections(*mesh_); });
+const std::vector<LineSegment>& MeshLineData::intersections() { return intersections(setup_timings_); }
+
+const std::vector<LineSegment>& MeshLineData::intersections(TimingLog& log) {
+    if (!intersections_) intersections_ = timed(log, "intersections", [&] { return extract_intersections(*mesh_); });
     return *intersections_;
 }
 

@@ -25,6 +25,7 @@ struct MeshLineNeeds {
     bool adjacency = false;                              // creases, borders
     bool curvature = false;                              // suggestive contours, ridges, valleys
     float crease_angle = CreaseOptions{}.angle_degrees;  // classified by prepare() with adjacency
+    bool intersections = false;                          // intersection lines
 };
 
 class MeshLineData {
@@ -54,7 +55,11 @@ public:
     // adjacency, creases are classified at needs.crease_angle. `then` runs on the adjacency's
     // side after it (dropped when large): LineExtractor builds its ray scene there, beside the
     // curvature but never beside a 10 M-triangle adjacency (issue 9's memory budget).
+    // Intersection lines, which read nothing else, are a third task up to
+    // kOverlapTriangles; above it they wait for their extractor, so their BVH is never held
+    // beside the adjacency.
     void prepare(MeshLineNeeds needs, const std::function<void()>& then = {});
+    static constexpr size_t kOverlapTriangles = size_t(1) << 20;
 
     const EdgeAdjacency& adjacency();
     const Curvature& curvature();  // Rusinkiewicz 2004, from normals()
@@ -82,6 +87,7 @@ private:
     const EdgeAdjacency& adjacency(TimingLog& log);
     const Curvature& curvature(TimingLog& log);
     const CreaseLines& creases(float angle_degrees, TimingLog& log);
+    const std::vector<LineSegment>& intersections(TimingLog& log);
 
     std::shared_ptr<const Mesh> mesh_;
     std::optional<EdgeAdjacency> adjacency_;
