@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 
 #include "geometry/path_arc_length.hpp"
@@ -40,7 +41,9 @@ Resampled resample(const std::vector<glm::vec2>& pts, const std::vector<float>* 
     return r;
 }
 
-// The previous frame's samples in a uniform grid of cells `cell` px wide.
+// The previous frame's samples in a uniform grid over their bounding box, cells at least
+// `radius` wide (so the 3 x 3 cells around a point hold every sample within `radius`), stored
+// flat: each cell's samples contiguous (a counting sort), no allocation per cell.
 class SampleGrid {
 public:
     struct Sample {
@@ -49,25 +52,45 @@ public:
         uint32_t path, index;  // the previous path and the sample's place along it
     };
 
-    explicit SampleGrid(float cell) : cell_(std::max(cell, 1e-3f)) {}
+    void add(const Sample& s) { samples_.push_back(s); }
 
-    void add(const Sample& s) {
-        cells_[key(cell_of(s.p.x), cell_of(s.p.y))].push_back(uint32_t(samples_.size()));
-        samples_.push_back(s);
+    // Sorts the samples into their cells; call once, after the last add.
+    void build(float radius) {
+        if (samples_.empty()) return;
+        glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const Sample& s : samples_) {
+            lo = glm::min(lo, s.p);
+            hi = glm::max(hi, s.p);
+        }
+        origin_ = lo;
+        // At most about 4096 cells a side, however far off the image a projected point fell.
+        const float extent = std::max(hi.x - lo.x, hi.y - lo.y);
+        cell_ = std::max({radius, extent / 4096.0f, 1e-3f});
+        nx_ = int64_t((hi.x - lo.x) / cell_) + 1;
+        ny_ = int64_t((hi.y - lo.y) / cell_) + 1;
+        std::vector<uint32_t> count(size_t(nx_ * ny_) + 1, 0);
+        for (const Sample& s : samples_) ++count[cell_index(s.p) + 1];
+        for (size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+        start_ = count;
+        order_.resize(samples_.size());
+        for (size_t i = 0; i < samples_.size(); ++i) order_[count[cell_index(samples_[i].p)]++] = uint32_t(i);
     }
+
     const Sample& operator[](size_t i) const { return samples_[i]; }
     size_t size() const { return samples_.size(); }
 
     // The nearest sample within `radius` whose direction is along `dir` (|cos| >= min_cos), or -1.
     int64_t nearest(glm::vec2 p, glm::vec2 dir, float radius, float min_cos) const {
-        const int64_t cx = cell_of(p.x), cy = cell_of(p.y);
+        if (samples_.empty()) return -1;
+        const auto cx = int64_t(std::floor((p.x - origin_.x) / cell_)),
+                   cy = int64_t(std::floor((p.y - origin_.y) / cell_));
         int64_t best = -1;
         float best_d2 = radius * radius;
-        for (int64_t y = cy - 1; y <= cy + 1; ++y)
-            for (int64_t x = cx - 1; x <= cx + 1; ++x) {
-                const auto it = cells_.find(key(x, y));
-                if (it == cells_.end()) continue;
-                for (uint32_t i : it->second) {
+        for (int64_t y = std::max<int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny_ - 1); ++y)
+            for (int64_t x = std::max<int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1); ++x) {
+                const size_t c = size_t(y * nx_ + x);
+                for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+                    const uint32_t i = order_[k];
                     const Sample& s = samples_[i];
                     const glm::vec2 d = s.p - p;
                     const float d2 = glm::dot(d, d);
@@ -81,12 +104,17 @@ public:
     }
 
 private:
-    int64_t cell_of(float v) const { return int64_t(std::floor(double(v) / double(cell_))); }
-    static uint64_t key(int64_t x, int64_t y) { return (uint64_t(x) << 32) ^ (uint64_t(y) & 0xffffffffull); }
+    size_t cell_index(glm::vec2 p) const {
+        const int64_t x = std::clamp(int64_t((p.x - origin_.x) / cell_), int64_t(0), nx_ - 1);
+        const int64_t y = std::clamp(int64_t((p.y - origin_.y) / cell_), int64_t(0), ny_ - 1);
+        return size_t(y * nx_ + x);
+    }
 
-    float cell_;
     std::vector<Sample> samples_;
-    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+    glm::vec2 origin_{0.0f};
+    float cell_ = 1.0f;
+    int64_t nx_ = 0, ny_ = 0;
+    std::vector<uint32_t> start_, order_;  // cell c's samples: order_[start_[c] .. start_[c + 1])
 };
 
 // The u at p on the previous path near sample i: p projected onto the sample's segment to the
@@ -181,7 +209,7 @@ LinePath rotated_at(const LinePath& path, double at) {
 void parameterise_paths(std::vector<LinePath>& paths, const std::vector<LinePath>& previous,
                         const ProjectPoint& project, const CoherenceOptions& o) {
     const double spacing = std::max(double(o.spacing_px), 0.05);
-    SampleGrid grid(o.radius_px);
+    SampleGrid grid;
     for (size_t k = 0; k < previous.size(); ++k) {
         const LinePath open = opened(previous[k]);
         if (open.points.size() < 2 || open.u.size() != open.points.size()) continue;
@@ -192,6 +220,7 @@ void parameterise_paths(std::vector<LinePath>& paths, const std::vector<LinePath
         const Resampled r = resample(at, &open.u, spacing);
         for (size_t j = 0; j < r.p.size(); ++j) grid.add({r.p[j], r.dir[j], r.u[j], uint32_t(k), uint32_t(j)});
     }
+    grid.build(o.radius_px);
 
     for (LinePath& path : paths) {
         path.u.clear();

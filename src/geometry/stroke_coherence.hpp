@@ -18,7 +18,7 @@ namespace inkshade::geometry {
 struct CoherenceOptions {
     float radius_px = 8.0f;          // a vote comes from a previous sample at most this far away
     float min_direction_cos = 0.7f;  // |cos| of the angle between the two samples' image directions
-    float spacing_px = 1.0f;         // samples along the paths, old and new
+    float spacing_px = 2.0f;         // samples along the paths, old and new
     float window_px = 8.0f;          // votes within ±window of one another agree
     float min_fraction = 0.2f;       // a path follows a previous one when this share of its samples agree
 };
