@@ -8,6 +8,7 @@
 #include "geometry/dash_pattern.hpp"
 #include "geometry/path_arc_length.hpp"
 #include "geometry/stroke_drift.hpp"
+#include "geometry/stroke_style.hpp"
 #include "stroke_paths.hpp"
 
 namespace inkshade::geometry {
@@ -129,6 +130,45 @@ TEST(StrokeCoherence, DashesFollowTheParameter) {
     const std::vector<LinePath> plain = dash_paths({p}, {10.0f, 10.0f});
     ASSERT_EQ(plain.size(), 5u);
     EXPECT_NEAR(plain[1].points.front().x, 20.0, 1e-4);
+}
+
+TEST(StrokeCoherence, JitterAndNoiseFollowTheParameter) {
+    // Two strokes along one line, the second starting 30 px further on and second in the list:
+    // with u set, a point at the same u moves by the same jitter and gets the same width noise
+    // (the noise is read at u and is the layer's, not the path index's); without u they differ.
+    LinePath a = straight_path({0.0f, 50.0f}, {200.0f, 50.0f}, 1.0f);
+    LinePath b = straight_path({30.0f, 50.0f}, {200.0f, 50.0f}, 1.0f);
+    set_u(a, 0.0f);
+    set_u(b, 30.0f);
+    StrokeModifiers m;
+    m.sketch.jitter_px = 3.0f;
+    m.sketch.period_px = 20.0f;
+    m.thickness.width = 4.0f;
+    m.thickness.noise = 0.5f;
+    m.thickness.noise_period_px = 20.0f;
+    auto styled = [&](bool with_u) {
+        std::vector<LinePath> in = {a, b};
+        if (!with_u)
+            for (LinePath& p : in) p.u.clear();
+        return style_strokes(in, m, ViewDepthRange{}, 7);
+    };
+    for (const bool with_u : {true, false}) {
+        const std::vector<LinePath> out = styled(with_u);
+        ASSERT_EQ(out.size(), 2u);
+        double worst_offset = 0.0, worst_width = 0.0;
+        for (size_t i = 0; i < out[1].points.size(); ++i) {  // b's point i is a's point i + 30
+            const glm::vec2 da = out[0].points[i + 30] - a.points[i + 30], db = out[1].points[i] - b.points[i];
+            worst_offset = std::max(worst_offset, double(glm::length(da - db)));
+            worst_width = std::max(worst_width, double(std::abs(out[0].width[i + 30] - out[1].width[i])));
+        }
+        if (with_u) {
+            EXPECT_LT(worst_offset, 1e-4);
+            EXPECT_LT(worst_width, 1e-4);
+        } else {
+            EXPECT_GT(worst_offset, 0.5);
+            EXPECT_GT(worst_width, 0.2);
+        }
+    }
 }
 
 // --- Sequences through the line extractor ---------------------------------------------------
