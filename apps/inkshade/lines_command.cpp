@@ -47,10 +47,18 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
     std::map<std::string, std::vector<double>> per_stage;
     std::vector<std::string> order;
     std::vector<double> totals;
+    // With a `coherence` layer the views are one sequence, so the `coherence` stage (matching
+    // each view's strokes to the previous view's) is timed too.
+    bool coherent = false;
+    for (const LineSettings& l : scene.vector_lines) {
+        const auto it = l.params.find("coherence");
+        coherent |= it != l.params.end() && !it->second.empty() && it->second[0] != 0.0f;
+    }
+    StrokeSequence sequence;
     for (int i = 0; i < args.timing; ++i) {
         std::vector<LineTiming> timings;
         const auto start = std::chrono::steady_clock::now();
-        draw_scene_lines(extractor, scene, camera, &timings);
+        draw_scene_lines(extractor, scene, camera, &timings, coherent ? &sequence : nullptr);
         totals.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         for (const auto& t : timings) {
             if (!per_stage.count(t.stage)) order.push_back(t.stage);

@@ -73,6 +73,9 @@ private:
     std::string model_path_, model_field_;
     std::string mesh_facts_;
     Scene scene_;  // the style, light and image options; the light follows the camera until moved
+    // The frames drawn so far as one sequence: layers with `coherence` keep their dashes and
+    // brush marks on the surface while the camera orbits (docs/lines.md, "Temporal coherence").
+    StrokeSequence strokes_;
     Camera camera_;
     Light light_;  // the light of the last frame
     bool gui_ = true;
@@ -199,6 +202,7 @@ bool Viewer::open_model(const std::string& path) {
         Scene placed = scene_;
         const std::vector<std::string> warnings = placed.apply_file_scene(mesh);
         renderer_->set_mesh(mesh);
+        strokes_.reset();  // a new model starts a new sequence
         scene_ = std::move(placed);
         for (const std::string& w : warnings) report(w, false);
         mesh_ = std::move(mesh);
@@ -318,6 +322,7 @@ void Viewer::render_if_needed() {
     timings_.clear();
     try {
         light_ = scene_.light(box_, camera_);
+        scene_.options.stroke_sequence = &strokes_;
         image_ = render_scene(*renderer_, scene_, camera_, light_, &timings_);
     } catch (const std::exception& e) {
         report(e.what(), true);

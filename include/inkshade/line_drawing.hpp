@@ -25,6 +25,13 @@ struct LinePath {
     // the layer tapers) and the stroke colour (linear 0..1, as the layer's `color`).
     std::vector<float> width;
     std::vector<glm::vec3> color;
+    // Per point, the stroke parameter in pixels that dashes, the brush texture, width noise and
+    // sketch jitter read, set on the layers of a sequence drawn with `coherence` (docs/lines.md,
+    // "Temporal coherence"): u = offset + arc length. Empty: the arc length from the path's start.
+    std::vector<float> u;
+    // Per point, the surface point it was projected from (world space): kept in a
+    // StrokeSequence's paths, for the next frame to project; empty in a drawing's.
+    std::vector<glm::vec3> world;
     bool closed = false;
     // Occlusion level (quantitative invisibility, Appel 1967): how many surfaces lie between
     // the viewer and this path; 0 = visible.
@@ -40,6 +47,25 @@ struct LineLayer {
 struct LineDrawing {
     int width = 0, height = 0;      // image size in pixels (the SVG viewBox)
     std::vector<LineLayer> layers;  // one per object-space line type, in the style's order
+};
+
+// One layer's strokes of a frame as the next frame of a sequence matches them: the chains (before
+// splitting, passes and dashes) with their surface points and stroke parameter u.
+struct ParameterisedLayer {
+    std::string type;             // the line type
+    std::vector<LinePath> paths;  // points, world, u, closed, level
+};
+
+// The state a caller keeps over the frames of one sequence (a turntable, an orbit, an animation)
+// and passes to every draw in order. Each draw gives the strokes of its `coherence` layers a
+// parameter u voted by the previous frame's (Kalnins et al. 2003, "Coherent Stylized
+// Silhouettes"), so dashes, brushes and noise stay on the surface instead of restarting at each
+// chain's start, then leaves its own strokes here. Default: empty (the first frame).
+struct StrokeSequence {
+    std::vector<ParameterisedLayer> layers;
+    Camera camera;  // the frame's camera and image size, for measuring the drift of marks
+    int width = 0, height = 0;
+    void reset() { *this = StrokeSequence(); }
 };
 
 struct LineTiming {
@@ -72,8 +98,10 @@ public:
     // Throws InputError for a bad size or an unknown type. `timings` receives milliseconds
     // per stage summed over the types: per view "extract", "visibility", "chain", "finish";
     // on the draw that computes them, the once-per-mesh "ray scene", "curvature", ...
+    // With `sequence`, the drawing is the next frame of that sequence: layers with `coherence`
+    // take their stroke parameter from its previous frame, and the frame's strokes replace it.
     LineDrawing draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
-                     std::vector<LineTiming>* timings = nullptr);
+                     std::vector<LineTiming>* timings = nullptr, StrokeSequence* sequence = nullptr);
 
     // Radial curvature κr per mesh vertex for this view (1/world length; DeCarlo et al. 2003:
     // the normal curvature along the view vector projected onto the tangent plane), as the

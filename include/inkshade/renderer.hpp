@@ -15,6 +15,7 @@
 namespace inkshade {
 
 struct LineDrawing;
+struct StrokeSequence;
 
 struct RenderOptions {
     int width = 1024;
@@ -33,6 +34,10 @@ struct RenderOptions {
     AovSet aovs;
     // The moment drawn, in seconds: mtoon's UV animation is at speed x time (Scene::time).
     float time = 0.0f;
+    // The sequence this frame belongs to (a turntable, an animation), owned by the caller: the
+    // object-space lines' `coherence` layers follow its previous frame and leave this one there
+    // (LineExtractor::draw). Null: a frame on its own.
+    StrokeSequence* stroke_sequence = nullptr;
 };
 
 struct PassTiming {

@@ -183,9 +183,10 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
 // What the camera file of a scene's image records (write_aov_files).
 CameraRecord camera_record(const Scene& scene, const Camera& camera, const BoundingBox& bounds);
 
-// The scene's line drawing of the extractor's mesh.
+// The scene's line drawing of the extractor's mesh; with `sequence`, the next frame of that
+// sequence (LineExtractor::draw: the `coherence` layers follow its previous frame).
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
-                             std::vector<LineTiming>* timings = nullptr);
+                             std::vector<LineTiming>* timings = nullptr, StrokeSequence* sequence = nullptr);
 
 // The values of command-line options and manifest columns as text; each throws InputError
 // naming `option`. Python and the library pass typed values instead.

@@ -226,6 +226,10 @@ private:
 
     void render_model(const ModelGroup& group, LoadedModel& model) {
         if (!model.mesh) return fail_model(group, model.error);
+        if (group.model != sequences_model_) {  // jobs are model-major: a model's sequences end here
+            sequences_.clear();
+            sequences_model_ = group.model;
+        }
         if (group.png) {
             try {
                 if (!renderer_) renderer_ = std::make_unique<Renderer>();  // throws without OpenGL
@@ -318,6 +322,11 @@ private:
         for (const LineSettings& l : scene.vector_lines) record.svg_lines.push_back(l.type);
         record.timings_ms.emplace_back("load", model.milliseconds);
         files.background = scene.style.background;
+        // The job's frame of its sequence: the views and animation times of one model, style and
+        // size, in batch order (docs/lines.md, "Temporal coherence"; only `coherence` layers read it).
+        Sequences& sequence =
+            sequences_[job.style + "\n" + std::to_string(job.width) + "x" + std::to_string(job.height)];
+        scene.options.stroke_sequence = &sequence.image;
         if (job.outputs.png || !job.aovs.empty()) {
             const auto start = Clock::now();
             const Light light = scene.light(bounds, camera);
@@ -332,7 +341,7 @@ private:
         }
         if (job.outputs.svg) {
             const auto start = Clock::now();
-            files.drawing = draw_scene_lines(*model.extractor, scene, camera);
+            files.drawing = draw_scene_lines(*model.extractor, scene, camera, nullptr, &sequence.svg);
             record.timings_ms.emplace_back("svg", ms_since(start));
         }
         return files;
@@ -365,6 +374,13 @@ private:
     size_t to_render_ = 0, settled_ = 0;
     std::unique_ptr<Renderer> renderer_;
     std::string gl_renderer_;
+    // The previous frame's strokes per sequence of the current model, for the image and the SVG
+    // (drawn by two extractors, each its own sequence).
+    struct Sequences {
+        StrokeSequence image, svg;
+    };
+    std::map<std::string, Sequences> sequences_;
+    std::string sequences_model_;
     BatchSummary summary_;
 };
 

@@ -101,6 +101,8 @@ LinePath vertex_range(const LinePath& p, size_t a, size_t b) {
     take(out.strength, p.strength);
     take(out.width, p.width);
     take(out.color, p.color);
+    take(out.u, p.u);
+    take(out.world, p.world);
     return out;
 }
 

@@ -22,13 +22,24 @@ std::vector<LinePath> dash_paths(const std::vector<LinePath>& paths, const std::
     for (const LinePath& path : paths) {
         if (path.points.size() < 2 || !attributes_consistent(path)) continue;
         const LinePath open = opened(path);
-        const std::vector<double> s = arc_lengths(open);
+        // A coherent stroke's pattern is anchored to its parameter u (offset + arc length), so
+        // the dashes stay where the previous frame had them; else it starts at the path's start.
+        std::vector<double> s;
+        if (open.u.size() == open.points.size()) s.assign(open.u.begin(), open.u.end());
+        if (s.empty() || !std::is_sorted(s.begin(), s.end())) s = arc_lengths(open);
+        double at = s.front();
         const double total = s.back();
-        double at = 0.0;
-        for (size_t k = 0; at < total; k = (k + 1) % cycle.size()) {
-            const double end = std::min(at + cycle[k], total);
+        // Where `at` falls in the pattern: entry k with `left` pixels of it still to go.
+        double phase = at - period * std::floor(at / period);
+        size_t k = 0;
+        while (k + 1 < cycle.size() && phase >= cycle[k]) phase -= cycle[k++];
+        double left = std::max(cycle[k] - phase, 0.0);
+        while (at < total) {
+            const double end = std::min(at + left, total);
             if (k % 2 == 0 && end > at) out.push_back(sub_path(open, s, at, end));
             at = end;
+            k = (k + 1) % cycle.size();
+            left = cycle[k];
         }
     }
     return out;

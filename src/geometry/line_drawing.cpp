@@ -10,6 +10,8 @@
 #include "geometry/chaining.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
+#include "geometry/path_arc_length.hpp"
+#include "geometry/stroke_coherence.hpp"
 #include "geometry/stroke_style.hpp"
 #include "geometry/suggestive_contours.hpp"
 #include "geometry/visibility.hpp"
@@ -73,11 +75,13 @@ private:
     std::vector<LineTiming>* out_;
 };
 
-// World polylines → image paths; drops those shorter than min_length px, then smooths.
+// World polylines → image paths; drops those shorter than min_length px, then smooths. With
+// `keep_world` each path keeps the world points it was projected from (LinePath::world).
 std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImageProjection& view, float min_length_px,
-                               int smooth_iterations) {
+                               int smooth_iterations, bool keep_world) {
     std::vector<Polyline> image;  // (x, y, 0) in pixels, for drop_short and smoothing
     std::vector<std::vector<float>> depths;
+    std::vector<const Polyline*> sources;
     image.reserve(lines.size());
     for (const Polyline& line : lines) {
         Polyline p;
@@ -95,6 +99,7 @@ std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImagePr
         if (p.points.size() < 2 || polyline_length(p) < min_length_px) continue;
         image.push_back(std::move(p));
         depths.push_back(std::move(depth));
+        sources.push_back(&line);
     }
     if (smooth_iterations > 0) smooth_polylines(image, smooth_iterations);
     std::vector<LinePath> paths(image.size());
@@ -105,6 +110,7 @@ std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImagePr
         for (const glm::vec3& q : image[i].points) path.points.emplace_back(q.x, q.y);
         path.depth = std::move(depths[i]);
         path.strength = std::move(image[i].strength);
+        if (keep_world) path.world = sources[i]->points;
     }
     return paths;
 }
@@ -126,7 +132,7 @@ LevelRange drawn_levels(const LineSettings& settings) {
 }  // namespace
 
 LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
-                                std::vector<LineTiming>* timings) {
+                                std::vector<LineTiming>* timings, StrokeSequence* sequence) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         throw InputError("line drawing size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
                          std::to_string(height));
@@ -145,7 +151,10 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
             throw InputError("line type '" + type.name + "' has no object-space extractor");
         object_lines.push_back(&settings);
     }
-    if (object_lines.empty()) return drawing;
+    if (object_lines.empty()) {
+        if (sequence) *sequence = StrokeSequence{{}, camera, width, height};
+        return drawing;
+    }
     // InputError when the levels are inverted or a stroke parameter is out of bounds.
     std::vector<StrokeModifiers> modifiers;
     for (const LineSettings* settings : object_lines) {
@@ -205,6 +214,11 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
             if (object_lines[i]->type == "contour") contours.push_back(&segments_per_type[i]);
         return contours.empty() ? EdgeNeighbours() : contour_surroundings(m.data.mesh(), contours);
     });
+    StrokeSequence next{{}, camera, width, height};
+    const ProjectPoint project = [&view](const glm::vec3& p) {
+        const glm::dvec3 q = view.project(p);
+        return glm::vec2(float(q.x), float(q.y));
+    };
     for (size_t i = 0; i < object_lines.size(); ++i) {
         const LineSettings* settings = object_lines[i];
         const std::vector<LineSegment>& segments = segments_per_type[i];
@@ -230,20 +244,66 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         });
         LineLayer layer;
         layer.settings = *settings;
+        // A sequence's frame: the layer's strokes as the previous frame left them (the i-th
+        // layer when it is of this type, else the first of this type).
+        const std::vector<LinePath>* previous = nullptr;
+        if (sequence) {
+            const auto& layers = sequence->layers;
+            if (i < layers.size() && layers[i].type == settings->type) previous = &layers[i].paths;
+            for (size_t k = 0; k < layers.size() && !previous; ++k)
+                if (layers[k].type == settings->type) previous = &layers[k].paths;
+        }
+        const bool coherent = sequence && line_number(*settings, "coherence") != 0.0f;
+        // Kalnins' propagation by the surface (the previous frame's points projected with this
+        // camera), or the previous frame's image points as they are.
+        const bool by_surface = line_number(*settings, "coherence-by") == 0.0f;
+        ParameterisedLayer record{settings->type, {}};
+        double coherence_ms = 0.0;
         timer("finish", [&] {
             const float min_length = line_number(*settings, "min-length");
             const int smooth = int(line_number(*settings, "smooth"));
             for (const auto& [level, polylines] : chained) {
-                std::vector<LinePath> paths = to_image(polylines, view, min_length, smooth);
-                for (LinePath& p : paths) p.level = level;
-                paths = style_strokes(std::move(paths), modifiers[i], depth_range, uint32_t(i * 256 + size_t(level)));
+                std::vector<LinePath> chains = to_image(polylines, view, min_length, smooth, sequence != nullptr);
+                for (LinePath& p : chains) p.level = level;
+                if (sequence) {
+                    const auto start = Clock::now();
+                    if (coherent)
+                        parameterise_paths(chains, previous ? *previous : std::vector<LinePath>{},
+                                           by_surface ? project : ProjectPoint());
+                    // What the next frame matches: the chains with u (their arc length when the
+                    // layer is not coherent, so the drift of its marks can be measured too).
+                    for (const LinePath& p : chains) {
+                        LinePath kept;
+                        kept.points = p.points;
+                        kept.world = p.world;
+                        kept.closed = p.closed;
+                        kept.level = p.level;
+                        if (coherent) {
+                            kept.u = p.u;
+                        } else {
+                            const std::vector<double> s = arc_lengths(p);
+                            kept.u.assign(s.begin(), s.begin() + long(p.points.size()));
+                        }
+                        record.paths.push_back(std::move(kept));
+                    }
+                    coherence_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                }
+                for (LinePath& p : chains) p.world.clear();
+                std::vector<LinePath> paths =
+                    style_strokes(std::move(chains), modifiers[i], depth_range, uint32_t(i * 256 + size_t(level)));
                 auto& into = level == 0 ? layer.visible : layer.hidden;
                 into.insert(into.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
             }
             return 0;
         });
+        if (sequence) {  // reported on its own stage, not as finishing
+            timer.add("finish", -coherence_ms);
+            timer.add("coherence", coherence_ms);
+        }
         drawing.layers.push_back(std::move(layer));
+        if (sequence) next.layers.push_back(std::move(record));
     }
+    if (sequence) *sequence = std::move(next);
     return drawing;
 }
 

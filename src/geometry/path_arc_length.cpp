@@ -16,7 +16,13 @@ void append_point(LinePath& out, const LinePath& p, size_t i, float f) {
     if (!p.strength.empty()) out.strength.push_back(mix(p.strength));
     if (!p.width.empty()) out.width.push_back(mix(p.width));
     if (!p.color.empty()) out.color.push_back(mix(p.color));
+    if (!p.u.empty()) out.u.push_back(mix(p.u));
+    if (!p.world.empty()) out.world.push_back(mix(p.world));
 }
+
+// The stroke parameter past a closed path's last point, at its first point again: u runs on
+// over the closing segment (u = offset + arc length).
+float u_after_loop(const LinePath& p) { return p.u.back() + glm::length(p.points.front() - p.points.back()); }
 
 // The segment index i and fraction f where arc length t falls (s ascending, t clamped).
 std::pair<size_t, float> locate(const std::vector<double>& s, double t) {
@@ -43,6 +49,7 @@ LinePath opened(const LinePath& path) {
     LinePath out = path;
     out.closed = false;
     append_point(out, path, 0, 0.0f);
+    if (!path.u.empty()) out.u.back() = u_after_loop(path);
     return out;
 }
 
@@ -56,6 +63,13 @@ LinePath rotated(const LinePath& path, size_t k) {
     turn(out.strength);
     turn(out.width);
     turn(out.color);
+    turn(out.world);
+    if (!path.u.empty() && !path.points.empty()) {
+        // u stays increasing: the points that wrapped around come after the loop's last one.
+        const size_t n = path.u.size(), first = k % n;
+        const float lap = u_after_loop(path) - path.u.front();
+        for (size_t i = 0; i < n; ++i) out.u[i] = path.u[(first + i) % n] + (first + i >= n ? lap : 0.0f);
+    }
     return out;
 }
 
@@ -75,7 +89,8 @@ LinePath sub_path(const LinePath& open, const std::vector<double>& s, double s0,
 bool attributes_consistent(const LinePath& path) {
     const size_t n = path.points.size();
     auto ok = [n](size_t m) { return m == 0 || m == n; };
-    return ok(path.depth.size()) && ok(path.strength.size()) && ok(path.width.size()) && ok(path.color.size());
+    return ok(path.depth.size()) && ok(path.strength.size()) && ok(path.width.size()) && ok(path.color.size()) &&
+           ok(path.u.size()) && ok(path.world.size());
 }
 
 }  // namespace inkshade::geometry

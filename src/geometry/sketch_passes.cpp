@@ -16,12 +16,17 @@ std::vector<LinePath> sketch_passes(const std::vector<LinePath>& paths, const Sk
     const double period = std::max(double(o.period_px), 1e-3);
     for (size_t k = 0; k < paths.size(); ++k) {
         const LinePath& path = paths[k];
-        const std::vector<double> s = arc_lengths(path);
+        // A coherent stroke's jitter follows its parameter u and not its index in this frame,
+        // so it stays on the surface from frame to frame.
+        const bool coherent = path.u.size() == path.points.size();
+        std::vector<double> s = arc_lengths(path);
+        if (coherent) s.assign(path.u.begin(), path.u.end());
+        const auto stroke = uint32_t(coherent ? 0 : k);
         for (int pass = 0; pass < passes; ++pass) {
             LinePath copy = path;
             // A different phase per pass, so copies of one stroke do not wobble in step.
-            const uint32_t sx = noise_stream(uint32_t(k), uint32_t(pass), 1);
-            const uint32_t sy = noise_stream(uint32_t(k), uint32_t(pass), 2);
+            const uint32_t sx = noise_stream(stroke, uint32_t(pass), 1);
+            const uint32_t sy = noise_stream(stroke, uint32_t(pass), 2);
             for (size_t i = 0; i < copy.points.size(); ++i) {
                 glm::dvec2 d(value_noise(o.seed, sx, s[i] / period), value_noise(o.seed, sy, s[i] / period));
                 // Each component is in [-1, 1]; the disc keeps the displacement within jitter.

@@ -82,7 +82,9 @@ std::vector<LinePath> style_strokes(std::vector<LinePath> strokes, const StrokeM
     if (widths || m.color_along != ColorAlong::None)
         for (size_t k = 0; k < strokes.size(); ++k) {
             LinePath& p = strokes[k];
-            if (widths) p.width = stroke_widths(p, m.thickness, depth, noise_stream(stream, uint32_t(k)));
+            // A coherent stroke's noise is one per layer, read at its u (not its index here).
+            const auto index = uint32_t(p.u.empty() ? k : 0);
+            if (widths) p.width = stroke_widths(p, m.thickness, depth, noise_stream(stream, index));
             p.color = stroke_colors(p, m.color_along, m.color, m.color_end, depth);
         }
     if (m.sketch.passes > 1 || m.sketch.jitter_px > 0.0f) {

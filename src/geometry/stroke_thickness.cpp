@@ -101,7 +101,9 @@ std::vector<float> stroke_widths(const LinePath& path, const StrokeThickness& t,
         }
         if (t.noise > 0.0f) {
             const double period = std::max(double(t.noise_period_px), 1e-3);
-            f *= 1.0 + double(t.noise) * double(value_noise(t.seed, stream, s[i] / period));
+            // A coherent stroke's noise follows its parameter u, so it stays on the surface.
+            const double at = path.u.size() == n ? double(path.u[i]) : s[i];
+            f *= 1.0 + double(t.noise) * double(value_noise(t.seed, stream, at / period));
         }
         w[i] = float(std::max(0.0, double(t.width) * f));
     }

@@ -115,8 +115,12 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
         }
         // Cumulative image-space length from the path's start, so the brush does not restart
         // at every segment.
+        // A coherent stroke's brush is read at its parameter u, so it stays on the surface.
         std::vector<float> arc(n, 0.0f);
-        for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + glm::length(points[i] - points[i - 1]);
+        if (path.u.size() == n)
+            arc = path.u;
+        else
+            for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + glm::length(points[i] - points[i - 1]);
         auto add = [&](size_t a, size_t b, bool flat_a, bool flat_b) {
             const glm::vec3 ca = color(a), cb = color(b);
             segments.push_back(

@@ -9,8 +9,8 @@ namespace {
 class VectorLinesPass final : public Pass {
 public:
     void run(Frame& frame) override {
-        frame.drawing =
-            frame.line_extractor.draw(frame.camera, frame.options.width, frame.options.height, frame.object_lines);
+        frame.drawing = frame.line_extractor.draw(frame.camera, frame.options.width, frame.options.height,
+                                                  frame.object_lines, nullptr, frame.options.stroke_sequence);
     }
 };
 

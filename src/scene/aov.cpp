@@ -1,5 +1,7 @@
 // The scene's AOVs (inkshade/aov.hpp): the renderer's buffers from the image's frame, and one
 // mask per line type drawn by a frame of its own.
+#include <optional>
+
 #include "inkshade/scene.hpp"
 
 namespace inkshade {
@@ -8,13 +10,15 @@ namespace {
 
 // Line type `line` alone, white, over a black surface and background: the red channel is the
 // line's coverage, antialiased by the image's MSAA, with the line's own opacity.
+// `before`: the scene's stroke sequence as the image's frame found it, so a coherent line's mask
+// has the image's dashes (a copy each: the mask frames do not advance the sequence).
 std::vector<uint8_t> line_mask(Renderer& renderer, const Scene& scene, const Camera& camera, const Light& light,
-                               const LineSettings& line) {
+                               const LineSettings& line, const StrokeSequence* before) {
     LineSettings white = line;
     white.params["color"] = {1.0f, 1.0f, 1.0f};
     // Black whatever the mesh's colours, textures or unlit materials: they multiply the base colour.
-    ShadingSelection black{.model = "lambert", .params = {}, .base_color = glm::vec3(0.0f),
-                           .base_color_use = BaseColorUse::Multiply};
+    ShadingSelection black{
+        .model = "lambert", .params = {}, .base_color = glm::vec3(0.0f), .base_color_use = BaseColorUse::Multiply};
     Light dark = light;
     dark.color = glm::vec3(0.0f);
     dark.ambient = glm::vec3(0.0f);
@@ -23,6 +27,8 @@ std::vector<uint8_t> line_mask(Renderer& renderer, const Scene& scene, const Cam
     options.srgb_output = false;  // coverage, not a colour to encode
     options.bit_depth = 8;
     options.aovs = {};
+    StrokeSequence sequence = before ? *before : StrokeSequence{};
+    options.stroke_sequence = before ? &sequence : nullptr;
     const Image image = renderer.render(camera, dark, black, {white}, options);
     std::vector<uint8_t> mask(size_t(image.width) * size_t(image.height));
     for (size_t i = 0; i < mask.size(); ++i) mask[i] = image.rgba[4 * i];
@@ -36,12 +42,16 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
     aovs = {};
     RenderOptions options = scene.options;
     options.time = scene.time;  // mtoon's UV animation
+    const bool masks = scene.aovs.contains(Aov::Lines);
+    std::optional<StrokeSequence> before;
+    if (masks && options.stroke_sequence) before = *options.stroke_sequence;
     Image image = renderer.render(camera, light, scene.shading(), scene.style.lines, options, aovs, timings);
     aovs.width = image.width;
     aovs.height = image.height;
-    if (scene.aovs.contains(Aov::Lines))
+    if (masks)
         for (const LineSettings& line : scene.style.lines)
-            aovs.lines.push_back({line.type, line_mask(renderer, scene, camera, light, line)});
+            aovs.lines.push_back(
+                {line.type, line_mask(renderer, scene, camera, light, line, before ? &*before : nullptr)});
     return image;
 }
 

@@ -398,8 +398,8 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
 }
 
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
-                             std::vector<LineTiming>* timings) {
-    return extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines, timings);
+                             std::vector<LineTiming>* timings, StrokeSequence* sequence) {
+    return extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines, timings, sequence);
 }
 
 }  // namespace inkshade

@@ -94,6 +94,34 @@ TEST(StrokeBrush, CoverageAlongTheCentreRepeatsWithTheBrushLength) {
     }
 }
 
+// A coherent stroke (LinePath::u, docs/lines.md "Temporal coherence") reads the brush at its u,
+// not at its own arc length: with u = 7 + s the profile is the cosine of s + 7, and it no longer
+// matches the cosine of s.
+TEST(StrokeBrush, CoherentStrokeReadsTheBrushAtItsParameter) {
+    const render::BrushImage brush = cosine_brush();
+    render::StrokeStyle style;
+    style.width = 8.0f;
+    style.brush = &brush;
+    const float length = 28.0f, offset = 7.0f;
+    style.brush_length = length;
+    LinePath p = path({{8, 16}, {248, 16}});
+    p.u = {offset, offset + 240.0f};
+    const std::vector<float> c = coverage_row(draw({p}, style), 16, 16, 240);
+    auto correlation = [&](float shift) {
+        double dot = 0.0, cc = 0.0, kk = 0.0, mean = 0.0;
+        for (float v : c) mean += v;
+        mean /= double(c.size());
+        for (size_t i = 0; i < c.size(); ++i) {
+            const float s = 16 + float(i) + 0.5f - 8;
+            const double k = std::cos(2 * kPi * (s + shift) / length);
+            dot += (c[i] - mean) * k, cc += (c[i] - mean) * (c[i] - mean), kk += k * k;
+        }
+        return dot / std::sqrt(cc * kk);
+    };
+    EXPECT_GT(correlation(offset), 0.97);
+    EXPECT_LT(correlation(0.0f), 0.5) << "a quarter period out of phase";
+}
+
 // 30 segments of 8 px along the same line: the arc length runs on at every joint, so the
 // coverage is that of the single segment (restarting the texture per segment would make the
 // period 8 px). With MSAA (the default) a sample is covered once per draw; single-sampled, the

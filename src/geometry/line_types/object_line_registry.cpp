@@ -98,6 +98,14 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
                                   "keeps the outline and names the brush in data-brush); none = solid"));
     params.push_back(float_param("brush-length", 0.0f, 0.0f, 100000.0f,
                                  "pixels of stroke per repeat of the brush texture; 0 = 4 x width"));
+    params.push_back(bool_param("coherence", false,
+                                "in a sequence of frames (batch views, animation, viewer), dashes, brush, noise "
+                                "and jitter follow the previous frame's strokes instead of each chain's start "
+                                "(Kalnins et al. 2003)"));
+    params.push_back(choice_param("coherence-by", {"surface", "image"}, 0,
+                                  "how coherence finds the previous frame's strokes: their surface points seen "
+                                  "from this frame's camera (marks move with the surface), or their image "
+                                  "points (marks stay where they were in the image)"));
     params.push_back(float_param("split-angle", 0.0f, 0.0f, 180.0f,
                                  "a stroke ends where its direction turns by more than this many degrees; 0 = "
                                  "never"));
