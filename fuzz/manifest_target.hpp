@@ -18,7 +18,7 @@ inline void manifest_input(std::string_view data) {
     try {
         const std::vector<BatchJob> jobs = parse_manifest(data.substr(1), source);
         for (const BatchJob& job : jobs)
-            if (job.model.empty() || job.stem.empty() || job.width < 1 || job.height < 1)
+            if (job.model.empty() || job.stem.empty() || job.options.size.x < 1 || job.options.size.y < 1)
                 broken("parse_manifest returned a job without model, stem or size");
     } catch (const InputError& e) {
         const std::string what = e.what();

@@ -12,6 +12,7 @@
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "inkshade/options.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/scene.hpp"
 #include "inkshade/version.hpp"
@@ -20,40 +21,6 @@ namespace py = pybind11;
 using namespace inkshade;
 
 namespace {
-
-// The keywords of render, lines and svg: a SceneRequest's fields, named as the CLI's options
-// with '_' for '-'. Any other keyword is an error (a typo must not pass silently).
-const std::vector<std::string> kSceneKeywords = {"size",
-                                                 "azimuth",
-                                                 "elevation",
-                                                 "distance",
-                                                 "eye",
-                                                 "target",
-                                                 "up",
-                                                 "up_axis",
-                                                 "fov",
-                                                 "ortho",
-                                                 "ortho_height",
-                                                 "near",
-                                                 "far",
-                                                 "light_pos",
-                                                 "light_target",
-                                                 "light_type",
-                                                 "light_color",
-                                                 "ambient",
-                                                 "base_color",
-                                                 "srgb",
-                                                 "bit_depth",
-                                                 "margin",
-                                                 "camera",
-                                                 "lights",
-                                                 "light_intensity",
-                                                 "light_decay",
-                                                 "light_distance",
-                                                 "time",
-                                                 "animation",
-                                                 "morph",
-                                                 "expression"};
 
 // morph= and expression=: {name: weight}, or a list of "NAME=W" strings as the CLI takes them.
 std::vector<NamedWeight> to_named_weights(const std::string& key, const py::handle& value) {
@@ -100,91 +67,80 @@ glm::vec3 to_vec3(const std::string& key, const py::handle& value) {
     return {v[0], v[1], v[2]};
 }
 
+// A keyword's Python value as the option's kind of value: numbers, booleans and strings as they
+// are, sequences for vectors, colours and sizes, {name: weight} or ["NAME=W", ...] for weights, a
+// string where the command line takes text (an index may be an int).
+OptionValue option_value(const OptionSpec& spec, const std::string& key, const py::handle& value) {
+    switch (spec.kind) {
+        case OptionKind::Number: return value.cast<float>();
+        case OptionKind::Integer: return value.cast<int>();
+        case OptionKind::Flag: return value.cast<bool>();
+        case OptionKind::Vector: return to_vec3(key, value);
+        case OptionKind::Color: return to_color(key, value, false);
+        case OptionKind::Size: {
+            const auto [w, h] = value.cast<std::pair<int, int>>();
+            return glm::ivec2(w, h);
+        }
+        case OptionKind::Weights: return to_named_weights(key, value);
+        case OptionKind::Names:
+        case OptionKind::Overrides:
+            if (py::isinstance<py::str>(value)) return parse_option(spec, value.cast<std::string>(), OptionNames::Keywords);
+            return value.cast<std::vector<std::string>>();
+        default:
+            if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value))
+                return parse_option(spec, std::to_string(value.cast<long long>()), OptionNames::Keywords);
+            return parse_option(spec, value.cast<std::string>(), OptionNames::Keywords);
+    }
+}
+
+// The keyword names of the options `front` takes (render/lines/svg: kPython; batch: kBatch).
+std::vector<std::string> keyword_names(unsigned front) {
+    std::vector<std::string> names;
+    for (const OptionSpec& s : scene_options())
+        if (s.takes(front)) names.push_back(option_label(s, OptionNames::Keywords));
+    return names;
+}
+
+// The keywords into the request, each checked as the option table says; None leaves an option
+// unset. Any other keyword is an error (a typo must not pass silently).
+void apply_keywords(SceneRequest& r, const py::kwargs& kwargs, unsigned front) {
+    for (const auto& item : kwargs) {
+        const std::string key = py::str(item.first);
+        const OptionSpec* spec = find_option(key);
+        if (!spec || !spec->takes(front) || option_label(*spec, OptionNames::Keywords) != key) {
+            std::string names;
+            for (const auto& k : keyword_names(front)) names += (names.empty() ? "" : ", ") + k;
+            throw InputError("unknown keyword '" + key + "' (expected " + names + ")");
+        }
+        if (item.second.is_none()) continue;
+        const OptionValue value = option_value(*spec, key, item.second);
+        check_option_value(*spec, value, OptionNames::Keywords);
+        spec->put(r, std::monostate{});
+        spec->put(r, value);
+    }
+}
+
+// "size=WxH (default 512x512): image size; ..." for a docstring.
+std::string keyword_doc(unsigned front) {
+    std::string doc;
+    for (const OptionSpec& s : scene_options()) {
+        if (!s.takes(front)) continue;
+        const std::string d = option_default(s, front);
+        doc += "\n  " + option_label(s, OptionNames::Keywords) + (d.empty() ? "" : " (default " + d + ")") + ": " +
+               s.help;
+    }
+    return doc;
+}
+
 // The request of one call: the look (style, overrides) and the keywords; make_scene checks it.
 SceneRequest request_of(const std::string& style, const std::vector<std::string>& set, const py::kwargs& kwargs,
                         SceneOutputs outputs) {
-    SceneRequest r;
+    SceneRequest r = default_request(kPython);
     r.names = OptionNames::Keywords;
     r.outputs = outputs;
     r.style = style;
     r.sets = set;
-    r.size = {512, 512};
-    for (const auto& item : kwargs) {
-        const std::string key = py::str(item.first);
-        if (std::find(kSceneKeywords.begin(), kSceneKeywords.end(), key) == kSceneKeywords.end()) {
-            std::string names;
-            for (const auto& k : kSceneKeywords) names += (names.empty() ? "" : ", ") + k;
-            throw InputError("unknown keyword '" + key + "' (expected " + names + ")");
-        }
-        const py::handle value = item.second;
-        if (value.is_none()) continue;
-        CameraOptions& c = r.camera;
-        if (key == "size") {
-            const auto [w, h] = value.cast<std::pair<int, int>>();
-            r.size = {w, h};
-        } else if (key == "azimuth")
-            c.azimuth_degrees = value.cast<float>();
-        else if (key == "elevation")
-            c.elevation_degrees = value.cast<float>();
-        else if (key == "distance")
-            c.distance = value.cast<float>();
-        else if (key == "eye")
-            c.eye = to_vec3(key, value);
-        else if (key == "target")
-            c.target = to_vec3(key, value);
-        else if (key == "up")
-            c.up = to_vec3(key, value);
-        else if (key == "fov")
-            c.fov_degrees = value.cast<float>();
-        else if (key == "ortho")
-            c.orthographic = value.cast<bool>();
-        else if (key == "ortho_height")
-            c.ortho_height = value.cast<float>();
-        else if (key == "margin")
-            c.margin = value.cast<float>();
-        else if (key == "near")
-            c.near_plane = value.cast<float>();
-        else if (key == "far")
-            c.far_plane = value.cast<float>();
-        else if (key == "up_axis")
-            c.up_axis = parse_up_axis(key, value.cast<std::string>());
-        else if (key == "light_pos")
-            r.light_position = to_vec3(key, value);
-        else if (key == "light_target")
-            r.light_target = to_vec3(key, value);
-        else if (key == "light_type")
-            r.light_type = parse_light_type(key, value.cast<std::string>());
-        else if (key == "light_color")
-            r.light_color = glm::vec3(to_color(key, value, false));
-        else if (key == "ambient")
-            r.ambient = glm::vec3(to_color(key, value, false));
-        else if (key == "light_intensity")
-            r.light_intensity = value.cast<float>();
-        else if (key == "light_decay")
-            r.light_decay = value.cast<float>();
-        else if (key == "light_distance")
-            r.light_distance = value.cast<float>();
-        else if (key == "base_color")
-            r.base_color = glm::vec3(to_color(key, value, false));
-        else if (key == "srgb")
-            r.srgb = value.cast<bool>();
-        else if (key == "camera")
-            r.file_camera =
-                py::isinstance<py::int_>(value) ? std::to_string(value.cast<long long>()) : value.cast<std::string>();
-        else if (key == "lights")
-            r.lights = parse_light_source(key, value.cast<std::string>());
-        else if (key == "bit_depth")
-            r.bit_depth = value.cast<int>();
-        else if (key == "time")
-            r.time = value.cast<float>();
-        else if (key == "animation")
-            r.animation =
-                py::isinstance<py::int_>(value) ? std::to_string(value.cast<long long>()) : value.cast<std::string>();
-        else if (key == "morph")
-            r.morphs = to_named_weights(key, value);
-        else if (key == "expression")
-            r.expressions = to_named_weights(key, value);
-    }
+    apply_keywords(r, kwargs, kPython);
     // Without a size, the image takes a file camera's aspect (as the CLI without --size).
     r.size_from_camera = !kwargs.contains("size") || kwargs["size"].is_none();
     return r;
@@ -417,31 +373,16 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
     m.def(
         "batch",
         [](const std::string& output_dir, std::optional<std::string> manifest, std::optional<std::string> models,
-           const std::string& views, const std::vector<std::string>& styles, std::pair<int, int> size,
-           const std::vector<std::string>& formats, bool force, std::optional<std::pair<int, int>> shard_of,
-           int samples, const std::string& lights, float margin, const std::vector<std::string>& aov,
-           std::optional<float> light_intensity, std::optional<std::string> occlusion_levels, std::optional<float> time,
-           std::optional<std::string> animation, std::optional<py::function> progress) {
+           const std::string& views, const std::vector<std::string>& styles, const std::vector<std::string>& formats,
+           bool force, std::optional<std::pair<int, int>> shard_of, std::optional<py::function> progress,
+           const py::kwargs& kwargs) {
         BatchDefaults defaults;
         defaults.views = views;
-        defaults.lights = parse_light_source("lights", lights);
         defaults.styles.clear();
         for (const auto& s : styles) defaults.styles += (defaults.styles.empty() ? "" : ",") + s;
-        std::tie(defaults.width, defaults.height) = size;
-        SceneRequest shared;  // the options every job shares, checked as render's keywords are
-        shared.names = OptionNames::Keywords;
-        shared.size = {defaults.width, defaults.height};
-        shared.samples = samples;
-        shared.camera.margin = margin;
-        shared.light_intensity = light_intensity;
-        shared.time = time;
-        make_scene(shared);
-        defaults.time = time;
-        if (animation) defaults.animation = *animation;
-        defaults.margin = margin;
-        defaults.light_intensity = light_intensity;
-        if (occlusion_levels) defaults.occlusion_levels = parse_occlusion_levels(*occlusion_levels);
-        defaults.aovs = aov_set("aov", aov);
+        defaults.options.names = OptionNames::Keywords;  // the options every job shares, checked as render's
+        apply_keywords(defaults.options, kwargs, kBatch);
+        check_request(defaults.options);
         defaults.outputs = {};
         defaults.outputs.png = false;
         for (const auto& f : formats) {
@@ -457,7 +398,7 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         std::vector<BatchJob> jobs =
             manifest ? load_manifest(*manifest, defaults) : expand_jobs(find_models(*models), defaults);
         if (shard_of) jobs = shard(jobs, shard_of->first, shard_of->second);
-        BatchOptions options{.output_dir = output_dir, .force = force, .samples = samples};
+        BatchOptions options{.output_dir = output_dir, .force = force};
         BatchProgress report;
         if (progress)
             report = [&](const BatchEvent& e) {
@@ -483,15 +424,13 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
                         py::arg("seconds") = summary.seconds, py::arg("failures") = failures);
         },
         py::arg("output_dir"), py::kw_only(), py::arg("manifest") = py::none(), py::arg("models") = py::none(),
-        py::arg("views") = "35:20", py::arg("styles") = std::vector<std::string>{"lambert"},
-        py::arg("size") = std::pair<int, int>(512, 512), py::arg("formats") = std::vector<std::string>{"png"},
-        py::arg("force") = false, py::arg("shard") = py::none(), py::arg("samples") = 4, py::arg("lights") = "style",
-        py::arg("margin") = 0.05f, py::arg("aov") = std::vector<std::string>{}, py::arg("light_intensity") = py::none(),
-        py::arg("occlusion_levels") = py::none(), py::arg("time") = py::none(), py::arg("animation") = py::none(),
+        py::arg("views") = BatchDefaults{}.views, py::arg("styles") = std::vector<std::string>{BatchDefaults{}.styles},
+        py::arg("formats") = std::vector<std::string>{"png"}, py::arg("force") = false, py::arg("shard") = py::none(),
         py::arg("progress") = py::none(),
-        "Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}. "
-        "light_intensity=, occlusion_levels='A-B', time= and animation= are the defaults of the columns of those "
-        "names.");
+        ("Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}. "
+         "The option keywords are the defaults of the manifest's columns of those names:" +
+         keyword_doc(kBatch))
+            .c_str());
 
     py::class_<PyRenderer>(m, "Renderer", "A headless OpenGL 4.5 renderer (EGL) holding one mesh.")
         .def(py::init<>())
@@ -512,10 +451,12 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
             py::arg("aov") = std::vector<std::string>{},
-            "RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
-            "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
-            "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, camera) a dict instead: "
-            "'image', one array per AOV ('lines-TYPE' per line type) and 'camera' (docs/aov.md).")
+            ("RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
+             "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
+             "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, camera) a dict instead: "
+             "'image', one array per AOV ('lines-TYPE' per line type) and 'camera' (docs/aov.md). Keywords:" +
+             keyword_doc(kPython))
+                .c_str())
         .def(
             "lines",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
@@ -525,8 +466,10 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
-            "Object-space polylines, as `inkshade lines` draws them: a list of {type, points (n,2) pixels, depth, "
-            "strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels.")
+            ("Object-space polylines, as `inkshade lines` draws them: a list of {type, points (n,2) pixels, depth, "
+             "strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels. Keywords:" +
+             keyword_doc(kPython))
+                .c_str())
         .def(
             "svg",
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
@@ -537,5 +480,5 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
-            "The SVG text `inkshade lines` writes.");
+            ("The SVG text `inkshade lines` writes. Keywords:" + keyword_doc(kPython)).c_str());
 }

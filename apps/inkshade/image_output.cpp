@@ -13,7 +13,10 @@ const char* const kBitDepthOnlyPng = "--bit-depth: applies to .png output only";
 
 void ImageOutputOptions::add_to(CLI::App& cmd) {
     cmd.add_option("--quality", quality, "JPEG quality 1..100 (default 95)")->check(CLI::Range(1, 100));
-    cmd.add_option("--bit-depth", bit_depth, "PNG bits a channel: 8 (default) or 16 (smooth gradients, no banding)");
+}
+
+void ImageOutputOptions::take_bit_depth(const CLI::App& cmd, const SceneRequest& request) {
+    if (cmd.count("--bit-depth")) bit_depth = request.bit_depth;
 }
 
 ImageOutput image_output(const std::string& path, const ImageOutputOptions& options) {

@@ -9,15 +9,18 @@
 #include <glm/glm.hpp>
 
 #include "inkshade/image.hpp"
+#include "inkshade/scene.hpp"
 
 namespace inkshade::cli {
 
 // The options that shape an image file.
 struct ImageOutputOptions {
     std::optional<int> quality;    // --quality 1..100, JPEG only
-    std::optional<int> bit_depth;  // --bit-depth 8|16, PNG only
+    std::optional<int> bit_depth;  // --bit-depth 8|16, PNG only: a scene option (SceneRequest::bit_depth)
 
-    void add_to(CLI::App& cmd);
+    void add_to(CLI::App& cmd);  // --quality
+    // Takes the request's bit depth where `cmd` was given --bit-depth.
+    void take_bit_depth(const CLI::App& cmd, const SceneRequest& request);
 };
 
 struct ImageOutput {

@@ -35,8 +35,7 @@ struct LinesArgs {
     std::string lines;  // --lines a,b,c
     std::string lines_json;
     bool hidden = false;
-    bool svg_polylines = false;    // --svg-polylines: points, not fitted Béziers
-    std::string occlusion_levels;  // --occlusion-levels A-B
+    bool svg_polylines = false;  // --svg-polylines: points, not fitted Béziers
     int timing = 0;
     ImageOutputOptions image;  // --quality, --bit-depth
 };
@@ -98,9 +97,10 @@ void print_timing(const LinesArgs& args, size_t triangles, const LineDrawing& dr
                 peak_rss_mib());
 }
 
-int run_lines(const LinesArgs& args, const CLI::App& cmd) {
-    std::optional<OcclusionLevels> levels;
-    if (!args.occlusion_levels.empty()) levels = parse_occlusion_levels(args.occlusion_levels);
+int run_lines(LinesArgs& args, const CLI::App& cmd) {
+    SceneRequest request = args.scene.to_request(cmd);
+    args.image.take_bit_depth(cmd, request);
+    const std::optional<OcclusionLevels> levels = request.occlusion_levels;
     // Every output checked before any work: a run that fails leaves no file.
     check_output_path("-o", args.output);
     const std::string ext = lower_ascii(std::filesystem::path(args.output).extension().string());
@@ -120,12 +120,9 @@ int run_lines(const LinesArgs& args, const CLI::App& cmd) {
                                           " (write .svg, .png, .jpg or .jpeg)");
     }
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);
-    SceneRequest request = args.scene.to_request(cmd);
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
-    request.occlusion_levels = levels;
-    if (image_file) request.bit_depth = image_file->bit_depth;
     Scene scene = make_scene(request);
     if (image_file) check_background(*image_file, scene.options.background);
     // The GL context before the work, so a machine without one fails at once.
@@ -175,7 +172,7 @@ Command add_lines_command(CLI::App& app) {
     auto args = std::make_shared<LinesArgs>();
     CLI::App* cmd =
         app.add_subcommand("lines", "draw a model's contours, creases, ... as a layered SVG or a PNG/JPEG image");
-    args->scene.add_to(*cmd);
+    args->scene.add_to(*cmd, kLines);
     cmd->add_option("-o,--output", args->output,
                     "output file by its extension: .svg (layers, hidden lines), or .png or .jpg/.jpeg drawn by the "
                     "renderer's strokes (written atomically)")
@@ -186,10 +183,6 @@ Command add_lines_command(CLI::App& app) {
     cmd->add_option("--lines-json", args->lines_json, "also write the polylines as JSON (docs/lines.md)");
     cmd->add_flag("--hidden", args->hidden,
                   "also draw every hidden line, dashed, in layers TYPE-hidden-N by occlusion level N (SVG only)");
-    cmd->add_option(
-        "--occlusion-levels", args->occlusion_levels,
-        "occlusion levels drawn, A-B (how many surfaces lie in front; default 0-0 = visible only; "
-        "1-1: lines behind one surface; 0-: all); levels above 0 are dashed layers TYPE-hidden-N (SVG only)");
     cmd->add_flag("--svg-polylines", args->svg_polylines,
                   "write each path's points as a polyline instead of cubic Beziers fitted within 0.2 px");
     args->image.add_to(*cmd);

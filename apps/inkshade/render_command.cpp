@@ -36,18 +36,16 @@ struct RenderArgs {
     ImageOutputOptions image;  // --quality, --bit-depth
     std::string scene_file;    // --scene
     std::string lines;         // --lines a,b: line types added to the style
-    std::string aov;           // --aov depth,normal,...: files beside the image (docs/aov.md)
 };
 
 int run_render(RenderArgs& args, const CLI::App& cmd) {
     // Every output checked before any work: a run that fails leaves no file.
     check_output_path("-o", args.output);
+    SceneRequest request = args.scene.to_request(cmd, args.scene_file);
+    args.image.take_bit_depth(cmd, request);
     const ImageOutput output = image_output(args.output, args.image);
     if (!args.save_style.empty()) check_output_path("--save-style", args.save_style);
-    SceneRequest request = args.scene.to_request(cmd, args.scene_file);
     request.added_lines = split_names(args.lines).value_or(std::vector<std::string>{});
-    request.bit_depth = output.bit_depth;
-    request.aovs = split_names(args.aov).value_or(std::vector<std::string>{});
     Scene scene = make_scene(request);
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     check_background(output, scene.options.background);
@@ -122,7 +120,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
 Command add_render_command(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "render a model to a PNG or JPEG image");
-    args->scene.add_to(*cmd, /*model_required=*/false);  // --scene may name it
+    args->scene.add_to(*cmd, kRender, /*model=*/true, /*model_required=*/false);  // --scene may name it
     cmd->add_option("-o,--output", args->output,
                     "output image, .png or .jpg/.jpeg by its extension (written atomically)")
         ->required();
@@ -132,9 +130,6 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("--lines", args->lines,
                     "line types added to the style, comma-separated: raster (hull, rim-contour, edges, ...) or "
                     "object-space (contour, suggestive, crease, ...); --set TYPE.param=value then reaches them");
-    cmd->add_option("--aov", args->aov,
-                    "also write AOVs beside the image, comma-separated: depth (OUT.depth.exr), normal, id, material, "
-                    "mask, lines (one mask per line type), camera (OUT.camera.json, written with any); docs/aov.md");
     cmd->add_option("--save-style", args->save_style,
                     "also write the style used (with every --set applied) to a .toml file");
     cmd->add_option("--scene", args->scene_file,

@@ -16,7 +16,7 @@ Command add_view_command(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("view", "open a window to look at a model and tune a style");
-    args->scene.add_to(*cmd, /*model_required=*/false);
+    args->scene.add_to(*cmd, kView, /*model=*/true, /*model_required=*/false);
     cmd->add_option("--script", args->script, "run the commands of FILE, one per frame (docs/viewer.md), then exit");
     cmd->add_option("--screenshot", args->screenshot, "with --frames: save the window to this PNG at the end");
     cmd->add_option("--frames", args->frames, "exit after N frames")->check(CLI::Range(0, 1000000));

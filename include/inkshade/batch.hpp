@@ -12,6 +12,7 @@
 
 #include "inkshade/aov.hpp"
 #include "inkshade/camera.hpp"
+#include "inkshade/options.hpp"
 #include "inkshade/scene.hpp"
 
 namespace inkshade {
@@ -33,42 +34,29 @@ struct BatchJob {
     std::string model;  // mesh file or builtin:NAME, as load_mesh takes it
     std::string style;  // built-in style name or .toml style file
     BatchView view;
-    int width = 512, height = 512;
     BatchOutputs outputs;
-    std::string stem;                         // outputs without extension, relative to the output directory
-    std::string source;                       // where the job comes from, for messages: "jobs.csv:7", "--models"
-    std::optional<float> smooth_angle;        // SceneRequest::smooth_angle; unset: the style's, else 30
-    LightSource lights = LightSource::Style;  // File: the model file's light (SceneRequest::lights)
-    std::optional<float> light_intensity;     // SceneRequest::light_intensity; unset: the style's
-    AovSet aovs;                              // AOV files beside STEM.png (docs/aov.md)
-    // SceneRequest::occlusion_levels of STEM.svg (dashed layers TYPE-hidden-N); unset: visible
-    // lines only. The image draws visible lines whatever this says.
-    std::optional<OcclusionLevels> occlusion_levels;
-    // The model's pose (SceneRequest::time, animation, expressions, morphs): a dataset samples a
-    // glTF animation at a time per job.
-    std::optional<float> time;
-    std::string animation;
-    std::vector<NamedWeight> expressions, morphs;
+    std::string stem;    // outputs without extension, relative to the output directory
+    std::string source;  // where the job comes from, for messages: "jobs.csv:7", "--models"
+    // The job's scene options: those of the option table that batch takes (inkshade/options.hpp:
+    // size, samples, projection and framing, up axis, smooth angle, lights, AOVs, occlusion
+    // levels of STEM.svg, pose, ...), as a manifest line or the defaults give them. The view's
+    // placement is not in it: job_request joins the two.
+    SceneRequest options = default_request(kBatch);
 };
+
+// The request that renders the job, as `inkshade render` and `inkshade lines` take it: its
+// options with the view's placement (or the model file's camera, which projects by itself).
+SceneRequest job_request(const BatchJob& job);
+
+// The AOV files beside the job's image (its `aov` option; docs/aov.md).
+AovSet job_aovs(const BatchJob& job);
 
 // What a manifest line (or --models) leaves out.
 struct BatchDefaults {
     std::string views = "35:20";     // parse_views; the auto-framing default view
     std::string styles = "lambert";  // comma-separated
-    int width = 512, height = 512;
     BatchOutputs outputs;
-    float fov_degrees = 30.0f;
-    bool orthographic = false;
-    std::optional<UpAxis> up_axis;      // the models' up axis (CameraOptions::up_axis); unset: the style's
-    std::optional<float> smooth_angle;  // auto-smooth angle (SceneRequest::smooth_angle)
-    LightSource lights = LightSource::Style;
-    float margin = 0.05f;                             // auto-framing's margin (CameraOptions::margin)
-    std::optional<float> light_intensity;             // SceneRequest::light_intensity
-    AovSet aovs;                                      // --aov
-    std::optional<OcclusionLevels> occlusion_levels;  // --occlusion-levels
-    std::optional<float> time;                        // --time
-    std::string animation;                            // --animation
-    std::vector<NamedWeight> expressions, morphs;     // --expression, --morph
+    SceneRequest options = default_request(kBatch);  // the table's batch options (--size, --fov, ...)
 };
 
 // A view list: items separated by ',' or ';' —
@@ -93,10 +81,8 @@ std::string model_name(const std::string& model);
 // be double-quoted) or JSON Lines (one object per line). The format is chosen by the extension
 // of `source` (.csv; .jsonl, .ndjson, .json) and otherwise by the first character ('{' = JSON
 // Lines). Blank lines and lines starting with '#' are skipped. Columns / keys: model (required),
-// name, views (or view), styles (or style), size, format, fov, ortho, up-axis, smooth-angle,
-// lights, light-intensity, margin, aov, occlusion-levels, time, animation, morph, expression,
-// output;
-// docs/cli.md#batch.
+// name, views (or view), styles (or style), format, output, and every option of the option
+// table that batch takes (size, fov, margin, time, ...; inkshade/options.hpp); docs/cli.md#batch.
 // Each line gives views x styles jobs with stems NAME/STYLE/VIEW (or `output` for one job).
 // Throws InputError("SOURCE:LINE: problem") at the first bad line, and for a stem that two
 // jobs share.
@@ -138,7 +124,7 @@ void parse_shard(const std::string& text, int& k, int& n);
 // in bytes (-1 when unknown), the style's full TOML text, view, image size, samples, outputs.
 // Stored in the metadata: a changed style file, view or size gives a new hash, and the job is
 // rendered again on resume.
-std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t model_bytes, int samples);
+std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t model_bytes);
 
 enum class BatchStatus { Done, Skipped, Failed };
 
@@ -161,7 +147,6 @@ using BatchProgress = std::function<void(const BatchEvent&)>;
 struct BatchOptions {
     std::string output_dir;  // created when missing
     bool force = false;      // render complete jobs again
-    int samples = 4;         // MSAA samples
     // Checked between jobs: once true, run_batch returns after the job in progress (a signal
     // handler may set it). Nothing partial is left: every file is written atomically.
     const std::atomic<bool>* stop = nullptr;

@@ -19,8 +19,8 @@
 namespace inkshade {
 
 // How errors name a request's fields: "--light-pos: ..." on the command line, "light_pos: ..."
-// for Python keywords.
-enum class OptionNames { Cli, Keywords };
+// for Python keywords, "light-pos: ..." for a batch manifest's columns.
+enum class OptionNames { Cli, Keywords, Columns };
 
 // What the caller will make of the scene: the style's overrides are checked against what is
 // drawn (a line drawing draws only the object-space types it selects).
@@ -33,6 +33,7 @@ struct SceneOutputs {
 // front of a line; 0 = visible), from `min` to `max`.
 struct OcclusionLevels {
     int min = 0, max = 0;
+    bool operator==(const OcclusionLevels&) const = default;
 };
 // "A-B" (0 ≤ A ≤ B ≤ kMaxOcclusionLevel), "A" (A only) or "A-" (A and every deeper level).
 // InputError else.
@@ -162,9 +163,10 @@ Scene make_scene(const SceneRequest& request);
 void apply_threejs_scene(const std::string& path, SceneRequest& request,
                          const std::function<bool(const std::string& option)>& given);
 
-// The camera checks of make_scene, for front ends that take camera options before they have a
-// whole request (batch manifests and --fov).
-void check_camera_options(const CameraOptions& camera, OptionNames names);
+// The checks of make_scene on the request's values alone (ranges, colours, the pose's weights,
+// alternatives), without resolving its style: for front ends that take options before they
+// have a whole request (batch manifests and defaults). Throws InputError naming the option.
+void check_request(const SceneRequest& request);
 
 // What a line drawing draws when neither the request nor the style names an object-space type.
 const std::vector<std::string>& default_vector_lines();

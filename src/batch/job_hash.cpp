@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "inkshade/batch.hpp"
+#include "inkshade/options.hpp"
 
 namespace inkshade {
 
@@ -35,38 +36,44 @@ uint64_t fnv1a(std::string_view text) {
     return h;
 }
 
+// " NAME=VALUE" for each option of the view's line or the image's, in the table's order: always,
+// or where the value is not SceneRequest's default (a list once per item).
+std::string hashed_options(const SceneRequest& r, bool view_line) {
+    const HashUse always = view_line ? HashUse::ViewAlways : HashUse::None;
+    const HashUse when_set = view_line ? HashUse::ViewWhenSet : HashUse::ImageWhenSet;
+    static const SceneRequest defaults;
+    std::string text;
+    for (const OptionSpec& spec : scene_options()) {
+        if (spec.hash == HashUse::None || (spec.hash != always && spec.hash != when_set)) continue;
+        const OptionValue value = spec.get(r);
+        if (spec.hash == when_set && (std::holds_alternative<std::monostate>(value) || value == spec.get(defaults)))
+            continue;
+        if (const auto* weights = std::get_if<std::vector<NamedWeight>>(&value)) {
+            for (const NamedWeight& w : *weights) text += " " + spec.name + "=" + w.name + "=" + number(w.weight);
+            continue;
+        }
+        const std::string spelled = format_option_hash(spec, value);
+        if (!spelled.empty()) text += " " + spec.name + "=" + spelled;
+    }
+    return text;
+}
+
 }  // namespace
 
-std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t model_bytes, int samples) {
-    const CameraOptions& c = job.view.camera;
+std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t model_bytes) {
+    const SceneRequest r = job_request(job);
+    const CameraOptions& c = r.camera;
     std::string text = "inkshade-batch " + std::to_string(kHashFormat) + "\n";
     text += "model=" + job.model + "\nbytes=" + std::to_string(model_bytes) + "\n";
     text += "view=" + job.view.name + " az=" + optional_number(c.azimuth_degrees) +
             " el=" + optional_number(c.elevation_degrees) + " dist=" + optional_number(c.distance) +
-            " eye=" + optional_vec3(c.eye) + " target=" + optional_vec3(c.target) + " up=" + optional_vec3(c.up) +
-            " fov=" + number(c.fov_degrees) + " ortho=" + (c.orthographic ? "1" : "0") + " margin=" + number(c.margin);
-    // Only a model that is not y-up adds to the text, so earlier jobs keep their hashes.
-    if (c.up_axis && *c.up_axis != UpAxis::PosY) text += " up-axis=" + std::to_string(int(*c.up_axis));
-    if (job.smooth_angle) text += " smooth-angle=" + number(*job.smooth_angle);
-    if (!job.view.file_camera.empty()) text += " camera=" + job.view.file_camera;
-    if (job.lights == LightSource::File) text += " lights=file";
-    if (job.light_intensity) text += " light-intensity=" + number(*job.light_intensity);
-    text += "\n";
-    text += "size=" + std::to_string(job.width) + "x" + std::to_string(job.height) +
-            " samples=" + std::to_string(samples) + " png=" + (job.outputs.png ? "1" : "0") +
+            " eye=" + optional_vec3(c.eye) + " target=" + optional_vec3(c.target) + " up=" + optional_vec3(c.up);
+    // Options added after a job was hashed write nothing at their default, so the job keeps its hash.
+    text += hashed_options(r, /*view_line=*/true) + "\n";
+    text += "size=" + std::to_string(r.size.x) + "x" + std::to_string(r.size.y) +
+            " samples=" + std::to_string(r.samples) + " png=" + (job.outputs.png ? "1" : "0") +
             " svg=" + (job.outputs.svg ? "1" : "0");
-    // Only jobs with AOVs add to the text, so earlier jobs keep their hashes.
-    if (!job.aovs.empty()) text += " aov=" + format_aov_set(job.aovs);
-    // Likewise only jobs with occlusion levels (their SVG has other layers).
-    if (job.occlusion_levels)
-        text += " occlusion-levels=" + std::to_string(job.occlusion_levels->min) + "-" +
-                std::to_string(job.occlusion_levels->max);
-    // Likewise only posed jobs (a glTF animation's time, expressions, morph weights).
-    if (job.time) text += " time=" + number(*job.time);
-    if (!job.animation.empty()) text += " animation=" + job.animation;
-    for (const NamedWeight& e : job.expressions) text += " expression=" + e.name + "=" + number(e.weight);
-    for (const NamedWeight& m : job.morphs) text += " morph=" + m.name + "=" + number(m.weight);
-    text += "\n";
+    text += hashed_options(r, /*view_line=*/false) + "\n";
     text += "style=" + job.style + "\n";
     text += style_text;
     char hex[17];

@@ -85,22 +85,8 @@ JobGroup default_group(const BatchDefaults& d) {
     JobGroup g;
     g.views = d.views;
     g.styles = d.styles;
-    g.width = d.width;
-    g.height = d.height;
     g.outputs = d.outputs;
-    g.fov_degrees = d.fov_degrees;
-    g.orthographic = d.orthographic;
-    g.up_axis = d.up_axis;
-    g.smooth_angle = d.smooth_angle;
-    g.light_intensity = d.light_intensity;
-    g.lights = d.lights;
-    g.margin = d.margin;
-    g.aovs = d.aovs;
-    g.occlusion_levels = d.occlusion_levels;
-    g.time = d.time;
-    g.animation = d.animation;
-    g.expressions = d.expressions;
-    g.morphs = d.morphs;
+    g.options = d.options;
     return g;
 }
 
@@ -126,30 +112,14 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
     }
     for (const std::string& style : styles) {
         for (BatchView view : views) {
-            if (view.file_camera.empty()) {  // a file's camera has its own projection
-                view.camera.fov_degrees = group.fov_degrees;
-                view.camera.orthographic = group.orthographic;
-            }
-            view.camera.up_axis = group.up_axis;
-            view.camera.margin = group.margin;
             BatchJob job;
             job.model = group.model;
             job.style = style;
-            job.width = group.width;
-            job.height = group.height;
             job.outputs = group.outputs;
-            job.lights = group.lights;
             job.stem = group.output.empty() ? name + "/" + style_stem_name(style) + "/" + view.name : group.output;
             job.view = std::move(view);
             job.source = group.source;
-            job.smooth_angle = group.smooth_angle;
-            job.light_intensity = group.light_intensity;
-            job.aovs = group.aovs;
-            job.occlusion_levels = group.occlusion_levels;
-            job.time = group.time;
-            job.animation = group.animation;
-            job.expressions = group.expressions;
-            job.morphs = group.morphs;
+            job.options = group.options;
             out.push_back(std::move(job));
         }
     }
@@ -167,6 +137,26 @@ void check_unique_stems(const std::vector<BatchJob>& jobs) {
 }
 
 }  // namespace batch
+
+SceneRequest job_request(const BatchJob& job) {
+    SceneRequest r = job.options;
+    const CameraOptions& view = job.view.camera;
+    CameraOptions& c = r.camera;
+    c.azimuth_degrees = view.azimuth_degrees;
+    c.elevation_degrees = view.elevation_degrees;
+    c.distance = view.distance;
+    c.eye = view.eye;
+    c.target = view.target;
+    c.up = view.up;
+    r.file_camera = job.view.file_camera;
+    if (!r.file_camera.empty()) {  // a file's camera has its own projection
+        c.fov_degrees = CameraOptions{}.fov_degrees;
+        c.orthographic = false;
+    }
+    return r;
+}
+
+AovSet job_aovs(const BatchJob& job) { return aov_set("aov", job.options.aovs); }
 
 std::string model_name(const std::string& model) {
     constexpr std::string_view kBuiltin = "builtin:";

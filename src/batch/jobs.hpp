@@ -17,24 +17,12 @@ struct JobGroup {
     std::string views;   // parse_views text
     std::string styles;  // comma- or semicolon-separated style names / files
     std::string output;  // the stem of the one job, instead of NAME/STYLE/VIEW
-    int width = 0, height = 0;
     BatchOutputs outputs;
-    float fov_degrees = 30.0f;
-    bool orthographic = false;
-    std::optional<UpAxis> up_axis;
-    std::optional<float> smooth_angle;
-    std::optional<float> light_intensity;  // SceneRequest::light_intensity
-    LightSource lights = LightSource::Style;
-    float margin = 0.05f;  // CameraOptions::margin
-    AovSet aovs;
-    std::optional<OcclusionLevels> occlusion_levels;
-    std::optional<float> time;  // the pose (BatchJob)
-    std::string animation;
-    std::vector<NamedWeight> expressions, morphs;
+    SceneRequest options;  // the option table's values (BatchJob::options)
     std::string source;
 };
 
-// A group holding the defaults' views, styles, size, outputs and camera (no model yet).
+// A group holding the defaults' views, styles, outputs and options (no model yet).
 JobGroup default_group(const BatchDefaults& defaults);
 
 // Appends the group's views x styles jobs (style-major). Throws InputError(problem) without

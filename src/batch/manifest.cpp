@@ -1,6 +1,6 @@
 // Batch manifests (inkshade/batch.hpp): CSV with a header line or JSON Lines, one job group
 // per line, every problem reported as SOURCE:LINE.
-#include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +13,7 @@
 #include "batch/jobs.hpp"
 #include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/options.hpp"
 #include "inkshade/scene.hpp"
 #include "io/text_scanner.hpp"
 
@@ -23,13 +24,27 @@ namespace {
 using batch::default_group;
 using batch::JobGroup;
 
-const std::set<std::string> kColumns = {
-    "model",     "name",    "views",        "view",   "styles",          "style",  "size", "format",           "fov",
-    "ortho",     "up-axis", "smooth-angle", "lights", "light-intensity", "margin", "aov",  "occlusion-levels", "time",
-    "animation", "morph",   "expression",   "output"};
-const char* kColumnList =
-    "model, name, views, styles, size, format, fov, ortho, up-axis, smooth-angle, lights, light-intensity, margin, "
-    "aov, occlusion-levels, time, animation, morph, expression, output";
+// The columns of a manifest that are not scene options: what and where, not how.
+const std::vector<std::string> kJobColumns = {"model", "name", "views", "styles", "format", "output"};
+
+// The scene option a column sets (one that batch takes), or null.
+const OptionSpec* option_column(const std::string& key) {
+    const OptionSpec* spec = find_option(key);
+    return spec && spec->takes(kBatch) && spec->name == key ? spec : nullptr;
+}
+
+std::vector<std::string> column_names() {
+    std::vector<std::string> names = kJobColumns;
+    for (const OptionSpec& s : scene_options())
+        if (s.takes(kBatch)) names.push_back(s.name);
+    return names;
+}
+
+std::string column_list() {
+    std::string list;
+    for (const std::string& c : column_names()) list += (list.empty() ? "" : ", ") + c;
+    return list;
+}
 
 // Lines of the text with their 1-based numbers; '\r' before '\n' dropped.
 std::vector<std::pair<int, std::string_view>> numbered_lines(std::string_view text) {
@@ -52,16 +67,8 @@ bool skipped(std::string_view line) {
     return t.empty() || t.front() == '#';
 }
 
-// Sets one field of a group from its text form (CSV cells; JSON strings).
-// A number of a column in [lo, hi] ("KEY: expected EXPECTED, got 'x'" else).
-float number_in(const std::string& key, const std::string& value, double lo, double hi, const char* expected) {
-    double v = 0;
-    auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-    if (ec != std::errc() || ptr != value.data() + value.size() || !(v >= lo && v <= hi))
-        throw InputError(key + ": expected " + expected + ", got " + io::quote_token(value));
-    return float(v);
-}
-
+// Sets one field of a group from its text form (CSV cells; JSON strings): a cell replaces the
+// default, a list included.
 void set_field(JobGroup& g, const std::string& key, const std::string& value) {
     if (key == "model")
         g.model = value;
@@ -73,64 +80,28 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.styles = value;
     else if (key == "output")
         g.output = value;
-    else if (key == "size") {
-        const glm::ivec2 size = parse_image_size("size", value);
-        g.width = size.x, g.height = size.y;
-    } else if (key == "format")
+    else if (key == "format")
         g.outputs = batch::parse_formats(value);
-    else if (key == "fov" || key == "margin") {
-        double v = 0;
-        auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-        if (ec != std::errc() || ptr != value.data() + value.size())
-            throw InputError(key + ": expected " + (key == "fov" ? "degrees" : "a fraction") + ", got " +
-                             io::quote_token(value));
-        CameraOptions camera;
-        camera.fov_degrees = g.fov_degrees;
-        camera.margin = g.margin;
-        (key == "fov" ? camera.fov_degrees : camera.margin) = io::to_float(v);
-        check_camera_options(camera, OptionNames::Keywords);  // the range every front end takes
-        g.fov_degrees = camera.fov_degrees;
-        g.margin = camera.margin;
-    } else if (key == "up-axis") {
-        g.up_axis = parse_up_axis("up-axis", value);
-    } else if (key == "smooth-angle") {
-        g.smooth_angle = number_in(key, value, 0.0, 180.0, "degrees in [0, 180]");
-    } else if (key == "lights") {
-        g.lights = parse_light_source("lights", value);
-    } else if (key == "aov") {
-        g.aovs = parse_aov_list("aov", value);
-    } else if (key == "occlusion-levels") {
-        g.occlusion_levels = parse_occlusion_levels(value);
-    } else if (key == "time") {
-        g.time = number_in(key, value, -1e9, 1e9, "seconds");
-    } else if (key == "animation") {
-        g.animation = value;
-    } else if (key == "morph") {
-        g.morphs = parse_named_weights("morph", value);
-    } else if (key == "expression") {
-        g.expressions = parse_named_weights("expression", value);
-        SceneRequest check;  // weights in [0, 1], as every front end checks them
-        check.names = OptionNames::Keywords;
-        check.expressions = g.expressions;
-        make_scene(check);
-    } else if (key == "light-intensity") {
-        g.light_intensity = number_in(key, value, 0.0, 1e6, "a number in [0, 1e6]");
-    } else if (key == "ortho") {
-        if (value == "true" || value == "1" || value == "yes")
-            g.orthographic = true;
-        else if (value == "false" || value == "0" || value == "no")
-            g.orthographic = false;
-        else
-            throw InputError("ortho: expected true or false, got " + io::quote_token(value));
-    }
+    else if (const OptionSpec* spec = option_column(key))
+        replace_option(g.options, *spec, value, OptionNames::Columns);
 }
 
 void check_column(const std::string& key, std::set<std::string>& seen) {
-    if (!kColumns.count(key))
-        throw InputError("unknown column " + io::quote_token(key) + " (columns: " + kColumnList + ")");
+    const bool job_column = key == "view" || key == "style" ||
+                            std::find(kJobColumns.begin(), kJobColumns.end(), key) != kJobColumns.end();
+    if (!job_column && !option_column(key))
+        throw InputError("unknown column " + io::quote_token(key) + " (columns: " + column_list() + ")" +
+                         did_you_mean(key, column_names()));
     // "view" and "views" (and "style" / "styles") are one column under two spellings.
     std::string canonical = key == "view" ? "views" : key == "style" ? "styles" : key;
     if (!seen.insert(canonical).second) throw InputError("column " + io::quote_token(key) + " is given twice");
+}
+
+// A group's values checked as every front end checks a request (ranges, weights, ...).
+void check_group(const JobGroup& g) {
+    SceneRequest check = g.options;
+    check.names = OptionNames::Columns;
+    check_request(check);
 }
 
 // One CSV record (RFC 4180 quoting within the line: "a, b" and "" for a quote).
@@ -199,6 +170,7 @@ void parse_csv(const std::vector<std::pair<int, std::string_view>>& lines, const
             for (size_t i = 0; i < fields.size(); ++i)
                 if (!fields[i].empty()) set_field(g, header[i], fields[i]);
             if (g.model.empty()) throw InputError("model: empty");
+            check_group(g);
             batch::expand_group(g, jobs);
         } catch (const InputError& e) {
             throw InputError(source + ":" + std::to_string(number) + ": " + e.what());
@@ -207,12 +179,15 @@ void parse_csv(const std::vector<std::pair<int, std::string_view>>& lines, const
 }
 
 // A JSON value as set_field's text: strings as they are, lists joined, numbers and booleans
-// written out; `size` may also be [W, H].
+// written out, each where the column's kind of value takes it; `size` may also be [W, H].
 std::string json_text(const std::string& key, const nlohmann::json& v) {
     if (v.is_string()) return v.get<std::string>();
-    if (v.is_boolean() && key == "ortho") return v.get<bool>() ? "true" : "false";
-    if (v.is_number_integer() && key == "occlusion-levels") return std::to_string(v.get<long long>());
-    if (v.is_number() && (key == "fov" || key == "margin" || key == "light-intensity" || key == "time")) {
+    const OptionSpec* spec = option_column(key);
+    const OptionKind kind = spec ? spec->kind : OptionKind::Text;
+    if (v.is_boolean() && kind == OptionKind::Flag) return v.get<bool>() ? "true" : "false";
+    if (v.is_number_integer() && (kind == OptionKind::Levels || kind == OptionKind::Integer))
+        return std::to_string(v.get<long long>());
+    if (v.is_number() && kind == OptionKind::Number) {
         const double d = v.get<double>();
         if (!std::isfinite(d)) throw InputError(key + ": not a finite number");
         std::ostringstream out;
@@ -220,13 +195,14 @@ std::string json_text(const std::string& key, const nlohmann::json& v) {
         out << d;
         return out.str();
     }
-    if (v.is_array() && key == "size") {
+    if (v.is_array() && kind == OptionKind::Size) {
         if (v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
             throw InputError("size: expected \"WxH\" or [W, H]");
         return std::to_string(v[0].get<long long>()) + "x" + std::to_string(v[1].get<long long>());
     }
-    if (v.is_array() &&
-        (key == "views" || key == "view" || key == "styles" || key == "style" || key == "format" || key == "aov")) {
+    const bool list = key == "views" || key == "view" || key == "styles" || key == "style" || key == "format" ||
+                      kind == OptionKind::Names;
+    if (v.is_array() && list) {
         std::string joined;
         for (const auto& item : v) {
             if (!item.is_string()) throw InputError(key + ": expected a list of strings");
@@ -261,6 +237,7 @@ void parse_jsonl(const std::vector<std::pair<int, std::string_view>>& lines, con
                 if (!value.is_null()) set_field(g, key, json_text(key, value));
             }
             if (g.model.empty()) throw InputError("no \"model\" given");
+            check_group(g);
             batch::expand_group(g, jobs);
         } catch (const InputError& e) {
             throw InputError(source + ":" + std::to_string(number) + ": " + e.what());

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "inkshade/options.hpp"
 #include "inkshade/version.hpp"
 
 namespace inkshade::batch {
@@ -72,6 +73,47 @@ void write_pretty(const Json& j, int indent, std::string& out) {
     }
 }
 
+// An option's value in the metadata, as it has always been written: numbers of the "view"
+// object in their shortest form, the others as JSON converts a float.
+Json option_json(const OptionValue& value, bool nested) {
+    struct ToJson {
+        bool nested;
+        Json operator()(std::monostate) const { return nullptr; }
+        Json operator()(float v) const { return nested ? number(v) : Json(v); }
+        Json operator()(int v) const { return v; }
+        Json operator()(bool v) const { return v; }
+        Json operator()(const std::string& v) const { return v; }
+        Json operator()(const glm::vec3& v) const { return vec3(v); }
+        Json operator()(const glm::vec4& v) const { return Json::array({v.x, v.y, v.z, v.w}); }
+        Json operator()(const glm::ivec2& v) const { return Json::array({v.x, v.y}); }
+        Json operator()(const std::vector<std::string>& v) const { return v; }
+        Json operator()(const std::vector<NamedWeight>& v) const {
+            Json out = Json::object();
+            for (const NamedWeight& w : v) out[w.name] = w.weight;
+            return out;
+        }
+        Json operator()(const OcclusionLevels& v) const { return Json::array({v.min, v.max}); }
+    };
+    return std::visit(ToJson{nested}, value);
+}
+
+// The options with a metadata key: those inside an object ("view.margin") or the top-level ones,
+// in the table's order; where the job hash always writes one, always, else where it is set.
+void add_options(const SceneRequest& r, bool nested, Json& j) {
+    static const SceneRequest defaults;
+    for (const OptionSpec& spec : scene_options()) {
+        const size_t dot = spec.metadata.find('.');
+        if (spec.metadata.empty() || (dot != std::string::npos) != nested) continue;
+        const OptionValue value = spec.get(r);
+        const bool always = spec.hash == HashUse::ViewAlways;
+        if (!always && (std::holds_alternative<std::monostate>(value) || value == spec.get(defaults))) continue;
+        if (nested)
+            j[spec.metadata.substr(0, dot)][spec.metadata.substr(dot + 1)] = option_json(value, true);
+        else
+            j[spec.metadata] = option_json(value, false);
+    }
+}
+
 }  // namespace
 
 std::string job_file(const std::string& output_dir, const BatchJob& job, const char* extension) {
@@ -81,7 +123,8 @@ std::string job_file(const std::string& output_dir, const BatchJob& job, const c
 std::string format_metadata(const JobRecord& r) {
     const BatchJob& job = *r.job;
     const std::string file = std::filesystem::path(job.stem).filename().string();
-    const float aspect = float(job.width) / float(job.height);
+    const SceneRequest request = job_request(job);
+    const float aspect = float(request.size.x) / float(request.size.y);
     Json j;
     j["inkshade"] = kVersion;
     j["job_hash"] = r.hash;
@@ -94,16 +137,10 @@ std::string format_metadata(const JobRecord& r) {
     j["view"] = {{"name", job.view.name},
                  {"azimuth_degrees", optional_number(job.view.camera.azimuth_degrees)},
                  {"elevation_degrees", optional_number(job.view.camera.elevation_degrees)},
-                 {"distance", optional_number(job.view.camera.distance)},
-                 {"margin", number(job.view.camera.margin)}};
+                 {"distance", optional_number(job.view.camera.distance)}};
+    add_options(request, /*nested=*/true, j);
     if (!job.view.file_camera.empty()) j["view"]["file_camera"] = job.view.file_camera;  // camera=NAME
-    if (job.lights == LightSource::File) j["lights"] = "file";
-    if (job.light_intensity) j["light_intensity"] = *job.light_intensity;
-    if (job.occlusion_levels) j["occlusion_levels"] = {job.occlusion_levels->min, job.occlusion_levels->max};
-    if (job.time) j["time"] = *job.time;
-    if (!job.animation.empty()) j["animation"] = job.animation;
-    for (const NamedWeight& e : job.expressions) j["expressions"][e.name] = e.weight;
-    for (const NamedWeight& m : job.morphs) j["morphs"][m.name] = m.weight;
+    add_options(request, /*nested=*/false, j);
     j["camera"] = {{"eye", vec3(r.camera.eye)},
                    {"target", vec3(r.camera.target)},
                    {"up", vec3(r.camera.up)},
@@ -115,7 +152,7 @@ std::string format_metadata(const JobRecord& r) {
                    {"aspect", number(aspect)},
                    {"view_matrix", rows(r.camera.view())},
                    {"projection_matrix", rows(r.camera.projection(aspect))}};
-    j["image"] = {{"width", job.width}, {"height", job.height}, {"samples", r.samples}};
+    j["image"] = {{"width", request.size.x}, {"height", request.size.y}, {"samples", request.samples}};
     j["style"] = {{"name", job.style}, {"toml", r.style_toml}};
     j["lines"] = r.lines;
     Json outputs = Json::object();
@@ -124,9 +161,9 @@ std::string format_metadata(const JobRecord& r) {
         outputs["svg"] = file + ".svg";
         j["svg_lines"] = r.svg_lines;
     }
-    if (!job.aovs.empty()) {
+    if (const AovSet aovs = job_aovs(job); !aovs.empty()) {
         outputs["aov"] = r.aov_files;
-        j["aov"] = format_aov_set(job.aovs);
+        j["aov"] = format_aov_set(aovs);
     }
     j["outputs"] = outputs;
     j["renderer"] = r.gl_renderer.empty() ? Json(nullptr) : Json(r.gl_renderer);
@@ -151,7 +188,7 @@ bool job_complete(const std::string& output_dir, const BatchJob& job, const std:
     if (!j.is_object()) return false;  // unreadable metadata: render the job again
     const auto it = j.find("job_hash");
     if (it == j.end() || !it->is_string() || it->get<std::string>() != hash) return false;
-    if (job.aovs.empty()) return true;
+    if (job_aovs(job).empty()) return true;
     const Json* aov = j.contains("outputs") && j["outputs"].is_object() && j["outputs"].contains("aov")
                           ? &j["outputs"]["aov"]
                           : nullptr;

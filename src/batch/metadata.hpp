@@ -16,7 +16,6 @@ struct JobRecord {
     int64_t model_bytes = -1;  // -1: not a file (builtin)
     size_t vertices = 0, triangles = 0;
     Camera camera;  // as framed for the job
-    int samples = 0;
     std::string style_toml;                                  // format_style of the style used
     std::vector<std::string> lines;                          // the style's line types (drawn in the PNG)
     std::vector<std::string> svg_lines;                      // object-space types in the SVG

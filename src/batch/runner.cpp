@@ -154,13 +154,14 @@ private:
             // The angle and weighting make_scene resolves for the job (Scene::load_options): a
             // model is loaded once for each pair its jobs use (jobs are style-major, so at most
             // once a style).
+            const SceneRequest& o = job.options;
             const LoadOptions load{
-                .smooth_angle = job.smooth_angle.value_or(style.smooth_angle.value_or(LoadOptions{}.smooth_angle)),
+                .smooth_angle = o.smooth_angle.value_or(style.smooth_angle.value_or(LoadOptions{}.smooth_angle)),
                 .normal_weighting = style.normal_weighting,
-                .pose = {.animation = job.animation,
-                         .time = job.time.value_or(0.0f),
-                         .expressions = job.expressions,
-                         .morphs = job.morphs}};
+                .pose = {.animation = o.animation,
+                         .time = o.time.value_or(0.0f),
+                         .expressions = o.expressions,
+                         .morphs = o.morphs}};
             if (groups_.empty() || groups_.back().model != job.model ||
                 groups_.back().load.smooth_angle != load.smooth_angle ||
                 groups_.back().load.normal_weighting != load.normal_weighting ||
@@ -173,12 +174,12 @@ private:
             ModelGroup& group = groups_.back();
             group.jobs.push_back(i);
             if (!style.error.empty()) continue;  // reported as failed when the group comes up
-            hashes_[i] = job_hash(job, style.toml, group.bytes, options_.samples);
+            hashes_[i] = job_hash(job, style.toml, group.bytes);
             complete_[i] = !options_.force && batch::job_complete(options_.output_dir, job, hashes_[i]);
             if (complete_[i]) continue;
             group.pending.push_back(i);
             group.svg |= job.outputs.svg;
-            group.png |= job.outputs.png || !job.aovs.empty();
+            group.png |= job.outputs.png || !job.options.aovs.empty();
             ++to_render_;
         }
     }
@@ -287,23 +288,9 @@ private:
     JobFiles render_job(size_t i, const ModelGroup& group, LoadedModel& model, const BoundingBox& bounds) {
         const BatchJob& job = jobs_[i];
         // The job as `inkshade render` and `inkshade lines` take it: the same request path.
-        SceneRequest request;
+        SceneRequest request = job_request(job);
         request.model = job.model;
         request.style = job.style;
-        request.size = {job.width, job.height};
-        request.camera = job.view.camera;
-        request.smooth_angle = job.smooth_angle;
-        request.file_camera = job.view.file_camera;
-        request.lights = job.lights;
-        request.light_intensity = job.light_intensity;
-        request.occlusion_levels = job.occlusion_levels;
-        request.time = job.time;
-        request.animation = job.animation;
-        request.expressions = job.expressions;
-        request.morphs = job.morphs;
-        request.samples = options_.samples;
-        for (size_t a = 0; a < aov_names().size(); ++a)
-            if (job.aovs.contains(Aov(a))) request.aovs.push_back(aov_names()[a]);
         request.outputs = {.image = true, .line_drawing = true};
         Scene scene = make_scene(request);
         scene.apply_file_scene(*model.mesh);  // a bad camera fails the job; its warnings are not kept
@@ -316,7 +303,6 @@ private:
         record.vertices = model.mesh->vertex_count();
         record.triangles = model.mesh->triangle_count();
         record.camera = camera;
-        record.samples = options_.samples;
         record.style_toml = styles_.at(job.style).toml;
         for (const LineSettings& l : scene.style.lines) record.lines.push_back(l.type);
         for (const LineSettings& l : scene.vector_lines) record.svg_lines.push_back(l.type);
@@ -325,12 +311,12 @@ private:
         // The job's frame of its sequence: the views and animation times of one model, style and
         // size, in batch order (docs/lines.md, "Temporal coherence"; only `coherence` layers read it).
         Sequences& sequence =
-            sequences_[job.style + "\n" + std::to_string(job.width) + "x" + std::to_string(job.height)];
+            sequences_[job.style + "\n" + std::to_string(request.size.x) + "x" + std::to_string(request.size.y)];
         scene.options.stroke_sequence = &sequence.image;
-        if (job.outputs.png || !job.aovs.empty()) {
+        if (job.outputs.png || !scene.aovs.empty()) {
             const auto start = Clock::now();
             const Light light = scene.light(bounds, camera);
-            if (job.aovs.empty()) {
+            if (scene.aovs.empty()) {
                 files.image = render_scene(*renderer_, scene, camera, light);
             } else {
                 files.image = render_scene(*renderer_, scene, camera, light, files.aovs);
@@ -352,10 +338,11 @@ private:
         const auto start = Clock::now();
         std::filesystem::create_directories(
             std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
-        if (job.outputs.png) write_png(batch::job_file(options_.output_dir, job, ".png"), files.image);
-        if (!job.aovs.empty())
+        if (job.outputs.png)
+            write_png(batch::job_file(options_.output_dir, job, ".png"), files.image, job.options.bit_depth);
+        if (const AovSet aovs = job_aovs(job); !aovs.empty())
             files.record.aov_files =
-                write_aov_files(batch::job_file(options_.output_dir, job, ".png"), job.aovs, files.aovs, files.camera);
+                write_aov_files(batch::job_file(options_.output_dir, job, ".png"), aovs, files.aovs, files.camera);
         if (job.outputs.svg)
             write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
         files.record.timings_ms.emplace_back("write", ms_since(start));

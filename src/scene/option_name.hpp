@@ -12,6 +12,7 @@ inline std::string option_name(OptionNames names, const std::string& option) {
     // and svg(types) in Python.
     if (option == "vector-lines") return names == OptionNames::Cli ? "--lines" : "types";
     if (names == OptionNames::Cli) return "--" + option;
+    if (names == OptionNames::Columns) return option;
     std::string keyword = option;
     for (char& c : keyword)
         if (c == '-') c = '_';

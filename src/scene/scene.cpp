@@ -11,6 +11,7 @@
 
 #include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/options.hpp"
 #include "scene/file_scene.hpp"
 #include "scene/option_name.hpp"
 
@@ -27,9 +28,6 @@ void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNa
 
 // The pose's values; the names are the model file's, checked when it loads.
 void check_pose(const SceneRequest& r) {
-    // Seconds from the start: of a glTF animation (clamped to its range) and of MToon's UV animation.
-    if (r.time && !(std::isfinite(*r.time) && *r.time >= 0.0f))
-        throw InputError(option_name(r.names, "time") + ": expected seconds, a finite number >= 0");
     for (const auto& [list, option] : {std::pair{&r.expressions, "expression"}, std::pair{&r.morphs, "morph"}})
         for (const NamedWeight& w : *list) {
             if (w.name.empty()) throw InputError(option_name(r.names, option) + ": empty name");
@@ -187,6 +185,27 @@ void check_file_scene_alternatives(const SceneRequest& r) {
     }
 }
 
+// The camera's checks beyond the option table's ranges (make_scene checks those).
+void check_camera_options(const CameraOptions& o, OptionNames names) {
+    auto name = [&](const char* option) { return option_name(names, option); };
+    for (auto [value, option] : {std::pair{o.azimuth_degrees, "azimuth"}, std::pair{o.elevation_degrees, "elevation"}})
+        if (value && !std::isfinite(*value)) throw InputError(name(option) + ": must be a finite number");
+    if (o.distance && !(*o.distance > 0.0f && std::isfinite(*o.distance)))
+        throw InputError(name("distance") + ": must be a positive number");
+    for (auto [value, option] : {std::pair{o.eye, "eye"}, std::pair{o.target, "target"}, std::pair{o.up, "up"}})
+        if (value && !is_finite(*value)) throw InputError(name(option) + ": must be finite");
+    if (o.up && glm::length(*o.up) == 0.0f) throw InputError(name("up") + ": must not be zero");
+    const auto& near = o.near_plane;
+    const auto& far = o.far_plane;
+    if (near && !std::isfinite(*near)) throw InputError(name("near") + ": must be a finite number");
+    // An orthographic view may start behind the eye (three.js allows a negative near).
+    if (near && !(*near > 0.0f) && !o.orthographic) throw InputError(name("near") + ": must be a positive number");
+    if (far && !(std::isfinite(*far) && *far > near.value_or(0.0f)))
+        throw InputError(name("far") + ": must be greater than " + name("near"));
+    if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
+        throw InputError(name("ortho-height") + ": must be a positive number");
+}
+
 // The AOV names of the request, each once.
 AovSet parse_aovs(const SceneRequest& r) {
     const std::string option = option_name(r.names, "aov");
@@ -229,30 +248,6 @@ AovSet parse_aov_list(const std::string& option, const std::string& text) {
     return aov_set(option, names);
 }
 
-void check_camera_options(const CameraOptions& o, OptionNames names) {
-    auto name = [&](const char* option) { return option_name(names, option); };
-    for (auto [value, option] : {std::pair{o.azimuth_degrees, "azimuth"}, std::pair{o.elevation_degrees, "elevation"}})
-        if (value && !std::isfinite(*value)) throw InputError(name(option) + ": must be a finite number");
-    if (o.distance && !(*o.distance > 0.0f && std::isfinite(*o.distance)))
-        throw InputError(name("distance") + ": must be a positive number");
-    for (auto [value, option] : {std::pair{o.eye, "eye"}, std::pair{o.target, "target"}, std::pair{o.up, "up"}})
-        if (value && !is_finite(*value)) throw InputError(name(option) + ": must be finite");
-    if (o.up && glm::length(*o.up) == 0.0f) throw InputError(name("up") + ": must not be zero");
-    if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
-        throw InputError(name("fov") + ": expected degrees in (0, 180)");
-    const auto& near = o.near_plane;
-    const auto& far = o.far_plane;
-    if (near && !std::isfinite(*near)) throw InputError(name("near") + ": must be a finite number");
-    // An orthographic view may start behind the eye (three.js allows a negative near).
-    if (near && !(*near > 0.0f) && !o.orthographic) throw InputError(name("near") + ": must be a positive number");
-    if (far && !(std::isfinite(*far) && *far > near.value_or(0.0f)))
-        throw InputError(name("far") + ": must be greater than " + name("near"));
-    if (o.ortho_height && !(*o.ortho_height > 0.0f && std::isfinite(*o.ortho_height)))
-        throw InputError(name("ortho-height") + ": must be a positive number");
-    if (!(o.margin >= 0.0f && o.margin < 0.5f))
-        throw InputError(name("margin") + ": expected a fraction of the image in [0, 0.5)");
-}
-
 OcclusionLevels parse_occlusion_levels(const std::string& text) {
     auto fail = [&]() -> OcclusionLevels {
         throw InputError("occlusion levels: expected A-B with 0 <= A <= B <= " + std::to_string(kMaxOcclusionLevel) +
@@ -282,15 +277,12 @@ const std::vector<std::string>& default_vector_lines() {
     return lines;
 }
 
-Scene make_scene(const SceneRequest& r) {
+void check_request(const SceneRequest& r) {
     auto name = [&](const char* option) { return option_name(r.names, option); };
     if (r.size.x < 1 || r.size.y < 1 || r.size.x > 16384 || r.size.y > 16384)
         throw InputError(name("size") + ": each side must be in 1..16384, got " + std::to_string(r.size.x) + "x" +
                          std::to_string(r.size.y));
-    if (r.samples < 1 || r.samples > 16)
-        throw InputError(name("samples") + ": expected 1..16, got " + std::to_string(r.samples));
-    if (r.bit_depth != 8 && r.bit_depth != 16)
-        throw InputError(name("bit-depth") + ": expected 8 or 16, got " + std::to_string(r.bit_depth));
+    check_option_values(r);  // every range and choice of the option table
     check_camera_options(r.camera, r.names);
     for (auto [value, option] : {std::pair{r.light_position, "light-pos"}, std::pair{r.light_target, "light-target"}})
         if (value && !is_finite(*value)) throw InputError(name(option) + ": must be finite");
@@ -298,13 +290,15 @@ Scene make_scene(const SceneRequest& r) {
                                  std::pair{r.base_color, "base-color"}})
         check_color(value ? std::optional<glm::vec4>(glm::vec4(*value, 1.0f)) : std::nullopt, option, r.names);
     check_color(r.background, "background", r.names);
-    if (r.smooth_angle && !(*r.smooth_angle >= 0.0f && *r.smooth_angle <= 180.0f))
-        throw InputError(name("smooth-angle") + ": expected degrees in [0, 180]");
     check_pose(r);
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
     check_file_scene_alternatives(r);
-    const AovSet aovs = parse_aovs(r);
+    parse_aovs(r);
+}
 
+Scene make_scene(const SceneRequest& r) {
+    check_request(r);
+    const AovSet aovs = parse_aovs(r);
     Scene scene;
     scene.model = r.model;
     const Style named = named_style(r);

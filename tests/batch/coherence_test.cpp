@@ -45,7 +45,7 @@ double median_dash_motion(const std::string& style, const std::string& dir) {
     BatchDefaults d;
     d.views = "turntable:36:0";  // from the equator: the orbit turns the sphere about the image's vertical
     d.styles = style;
-    d.width = d.height = 160;
+    d.options.size = {160, 160};
     d.outputs = {.png = false, .svg = true};
     const std::vector<BatchJob> jobs = expand_jobs({{"builtin:sphere", "sphere"}}, d);
     BatchOptions options;

@@ -35,7 +35,7 @@ TEST(BatchManifest, CsvLineGivesViewsTimesStylesJobs) {
     for (const BatchJob& j : jobs) {
         EXPECT_EQ(j.model, "builtin:teapot");
         EXPECT_EQ(j.source, "m.csv:2");
-        EXPECT_EQ(j.width, 512);
+        EXPECT_EQ(j.options.size.x, 512);
         EXPECT_TRUE(j.outputs.png);
         EXPECT_FALSE(j.outputs.svg);
     }
@@ -64,11 +64,11 @@ TEST(BatchManifest, JsonLinesTakesStringsListsNumbersAndBooleans) {
     ASSERT_EQ(jobs.size(), 3u);
     EXPECT_EQ(stems(jobs),
               (std::vector<std::string>{"chair/ink/az000_el00", "chair/ink/cam1", "lamp/toon/az035_el20"}));
-    EXPECT_EQ(jobs[0].width, 64);
-    EXPECT_EQ(jobs[0].height, 32);
+    EXPECT_EQ(jobs[0].options.size.x, 64);
+    EXPECT_EQ(jobs[0].options.size.y, 32);
     EXPECT_TRUE(jobs[0].outputs.png && jobs[0].outputs.svg);
-    EXPECT_EQ(jobs[0].view.camera.fov_degrees, 45.0f);
-    EXPECT_TRUE(jobs[1].view.camera.orthographic);
+    EXPECT_EQ(job_request(jobs[0]).camera.fov_degrees, 45.0f);
+    EXPECT_TRUE(job_request(jobs[1]).camera.orthographic);
     EXPECT_EQ(jobs[1].view.camera.eye.value(), glm::vec3(1, 2, 3));
     EXPECT_FALSE(jobs[2].outputs.png);
     EXPECT_TRUE(jobs[2].outputs.svg);
@@ -79,106 +79,105 @@ TEST(BatchManifest, DefaultsFillWhatALineLeavesOut) {
     BatchDefaults d;
     d.views = "turntable:3";
     d.styles = "anime";
-    d.width = 100;
-    d.height = 50;
+    d.options.size = {100, 50};
     d.outputs = {false, true};
     const auto jobs = parse_manifest("model,styles\nx.stl,\ny.stl,toon\n", "m.csv", d);
     EXPECT_EQ(stems(jobs), (std::vector<std::string>{"x/anime/az000_el20", "x/anime/az120_el20", "x/anime/az240_el20",
                                                      "y/toon/az000_el20", "y/toon/az120_el20", "y/toon/az240_el20"}));
-    EXPECT_EQ(jobs[0].width, 100);
-    EXPECT_EQ(jobs[0].height, 50);
+    EXPECT_EQ(jobs[0].options.size.x, 100);
+    EXPECT_EQ(jobs[0].options.size.y, 50);
     EXPECT_TRUE(jobs[0].outputs.svg);
     EXPECT_FALSE(jobs[0].outputs.png);
 }
 
 TEST(BatchManifest, UpAxisColumnAndDefaultTurnTheViews) {
     BatchDefaults d;
-    d.up_axis = UpAxis::PosX;
+    d.options.camera.up_axis = UpAxis::PosX;
     const auto jobs = parse_manifest("model,up-axis\nx.stl,z\ny.stl,\n", "m.csv", d);
     ASSERT_EQ(jobs.size(), 2u);
-    EXPECT_EQ(jobs[0].view.camera.up_axis, UpAxis::PosZ);
-    EXPECT_EQ(jobs[1].view.camera.up_axis, UpAxis::PosX);  // an empty cell takes the default
+    EXPECT_EQ(job_request(jobs[0]).camera.up_axis, UpAxis::PosZ);
+    EXPECT_EQ(job_request(jobs[1]).camera.up_axis, UpAxis::PosX);  // an empty cell takes the default
     // A z-up job hashes differently from the same job y-up; a y-up job's hash is unchanged.
     BatchJob y_up = jobs[0];
-    y_up.view.camera.up_axis = UpAxis::PosY;
-    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(y_up, "", -1, 4));
+    y_up.options.camera.up_axis = UpAxis::PosY;
+    EXPECT_NE(job_hash(jobs[0], "", -1), job_hash(y_up, "", -1));
 }
 
 TEST(BatchManifest, LightsColumnAndFileCamerasKeepTheirOwnProjection) {
     BatchDefaults d;
-    d.fov_degrees = 50.0f;
-    d.orthographic = true;
+    d.options.camera.fov_degrees = 50.0f;
+    d.options.camera.orthographic = true;
     const auto jobs = parse_manifest("model,views,lights\na.glb,camera=Main;20:10,file\nb.glb,,\n", "m.csv", d);
     ASSERT_EQ(jobs.size(), 3u);
-    EXPECT_EQ(jobs[0].lights, LightSource::File);
+    EXPECT_EQ(jobs[0].options.lights, LightSource::File);
     EXPECT_EQ(jobs[0].view.file_camera, "Main");
-    EXPECT_EQ(jobs[0].view.camera.fov_degrees, CameraOptions{}.fov_degrees);  // the file's camera projects
-    EXPECT_FALSE(jobs[0].view.camera.orthographic);
-    EXPECT_EQ(jobs[1].view.camera.fov_degrees, 50.0f);  // an orbit view takes the line's camera
-    EXPECT_TRUE(jobs[1].view.camera.orthographic);
-    EXPECT_EQ(jobs[2].lights, LightSource::Style);
+    EXPECT_EQ(job_request(jobs[0]).camera.fov_degrees, CameraOptions{}.fov_degrees);  // the file's camera projects
+    EXPECT_FALSE(job_request(jobs[0]).camera.orthographic);
+    EXPECT_EQ(job_request(jobs[1]).camera.fov_degrees, 50.0f);  // an orbit view takes the line's camera
+    EXPECT_TRUE(job_request(jobs[1]).camera.orthographic);
+    EXPECT_EQ(jobs[2].options.lights, LightSource::Style);
     EXPECT_THROW(parse_manifest("model,lights\na.glb,sun\n", "m.csv"), InputError);
     // Each changes the job's hash; a job with neither hashes as before.
     BatchJob plain = jobs[0];
-    plain.lights = LightSource::Style;
-    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(plain, "", -1, 4));
+    plain.options.lights = LightSource::Style;
+    EXPECT_NE(job_hash(jobs[0], "", -1), job_hash(plain, "", -1));
     BatchJob orbit = plain;
     orbit.view.file_camera.clear();
-    EXPECT_NE(job_hash(plain, "", -1, 4), job_hash(orbit, "", -1, 4));
+    EXPECT_NE(job_hash(plain, "", -1), job_hash(orbit, "", -1));
 }
 
 TEST(BatchManifest, MarginColumnAndDefaultReachTheCamera) {
     BatchDefaults d;
-    d.margin = 0.1f;
+    d.options.camera.margin = 0.1f;
     const auto jobs = parse_manifest("model,margin,fov\nx.stl,0.25,40\ny.stl,,\n", "m.csv", d);
     ASSERT_EQ(jobs.size(), 2u);
-    EXPECT_EQ(jobs[0].view.camera.margin, 0.25f);
-    EXPECT_EQ(jobs[0].view.camera.fov_degrees, 40.0f);  // one column does not reset the other
-    EXPECT_EQ(jobs[1].view.camera.margin, 0.1f);
+    EXPECT_EQ(job_request(jobs[0]).camera.margin, 0.25f);
+    EXPECT_EQ(job_request(jobs[0]).camera.fov_degrees, 40.0f);  // one column does not reset the other
+    EXPECT_EQ(job_request(jobs[1]).camera.margin, 0.1f);
     const auto json = parse_manifest("{\"model\": \"x.stl\", \"fov\": 50, \"margin\": 0}\n", "m.jsonl");
-    EXPECT_EQ(json[0].view.camera.margin, 0.0f);
-    EXPECT_EQ(json[0].view.camera.fov_degrees, 50.0f);
-    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    EXPECT_EQ(job_request(json[0]).camera.margin, 0.0f);
+    EXPECT_EQ(job_request(json[0]).camera.fov_degrees, 50.0f);
+    EXPECT_NE(job_hash(jobs[0], "", -1), job_hash(jobs[1], "", -1));
 }
 
 TEST(BatchManifest, LightIntensityColumnAndDefaultReachTheJob) {
     BatchDefaults d;
-    d.light_intensity = 2.0f;
+    d.options.light_intensity = 2.0f;
     const auto jobs = parse_manifest("model,light-intensity\nx.stl,3.5\ny.stl,\n", "m.csv", d);
     ASSERT_EQ(jobs.size(), 2u);
-    EXPECT_EQ(jobs[0].light_intensity, 3.5f);
-    EXPECT_EQ(jobs[1].light_intensity, 2.0f);
+    EXPECT_EQ(jobs[0].options.light_intensity, 3.5f);
+    EXPECT_EQ(jobs[1].options.light_intensity, 2.0f);
     const auto json = parse_manifest("{\"model\": \"x.stl\", \"light-intensity\": 0.5}\n", "m.jsonl");
-    EXPECT_EQ(json[0].light_intensity, 0.5f);
-    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    EXPECT_EQ(json[0].options.light_intensity, 0.5f);
+    EXPECT_NE(job_hash(jobs[0], "", -1), job_hash(jobs[1], "", -1));
     try {
         parse_manifest("model,light-intensity\nx.stl,-1\n", "m.csv");
         ADD_FAILURE() << "a negative intensity was accepted";
     } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()), "m.csv:2: light-intensity: expected a number in [0, 1e6], got '-1'");
+        EXPECT_EQ(std::string(e.what()), "m.csv:2: light-intensity: expected a number in [0, 1e+06], got '-1'");
     }
 }
 
 TEST(BatchManifest, OcclusionLevelsColumnAndDefaultReachTheJob) {
     BatchDefaults d;
-    d.occlusion_levels = OcclusionLevels{0, 1};
+    d.options.occlusion_levels = OcclusionLevels{0, 1};
     const auto jobs = parse_manifest("model,occlusion-levels\nx.stl,1-\ny.stl,\n", "m.csv", d);
     ASSERT_EQ(jobs.size(), 2u);
-    ASSERT_TRUE(jobs[0].occlusion_levels && jobs[1].occlusion_levels);
-    EXPECT_EQ(jobs[0].occlusion_levels->min, 1);
-    EXPECT_EQ(jobs[0].occlusion_levels->max, kMaxOcclusionLevel);
-    EXPECT_EQ(jobs[1].occlusion_levels->max, 1);  // the default
+    ASSERT_TRUE(jobs[0].options.occlusion_levels && jobs[1].options.occlusion_levels);
+    EXPECT_EQ(jobs[0].options.occlusion_levels->min, 1);
+    EXPECT_EQ(jobs[0].options.occlusion_levels->max, kMaxOcclusionLevel);
+    EXPECT_EQ(jobs[1].options.occlusion_levels->max, 1);  // the default
     const auto json = parse_manifest("{\"model\": \"x.stl\", \"occlusion-levels\": 2}\n", "m.jsonl");
-    ASSERT_TRUE(json[0].occlusion_levels);
-    EXPECT_EQ(json[0].occlusion_levels->min, 2);
-    EXPECT_EQ(json[0].occlusion_levels->max, 2);
+    ASSERT_TRUE(json[0].options.occlusion_levels);
+    EXPECT_EQ(json[0].options.occlusion_levels->min, 2);
+    EXPECT_EQ(json[0].options.occlusion_levels->max, 2);
     // Part of the job hash when given (other SVG layers), absent otherwise (earlier jobs keep
     // their hashes).
-    EXPECT_NE(job_hash(jobs[0], "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    EXPECT_NE(job_hash(jobs[0], "", -1), job_hash(jobs[1], "", -1));
     BatchJob plain = jobs[1];
-    plain.occlusion_levels.reset();
-    EXPECT_EQ(job_hash(plain, "", -1, 4).size(), job_hash(jobs[1], "", -1, 4).size());
-    EXPECT_NE(job_hash(plain, "", -1, 4), job_hash(jobs[1], "", -1, 4));
+    plain.options.occlusion_levels.reset();
+    EXPECT_EQ(job_hash(plain, "", -1).size(), job_hash(jobs[1], "", -1).size());
+    EXPECT_NE(job_hash(plain, "", -1), job_hash(jobs[1], "", -1));
     EXPECT_EQ(input_error([] { parse_manifest("model,occlusion-levels\nx.stl,2-1\n", "m.csv"); }),
               "m.csv:2: occlusion levels: expected A-B with 0 <= A <= B <= 253 (0 = visible), A, or A- for A and "
               "deeper; got '2-1'");
@@ -186,48 +185,48 @@ TEST(BatchManifest, OcclusionLevelsColumnAndDefaultReachTheJob) {
 
 TEST(BatchManifest, PoseColumnsAndDefaultsReachTheJob) {
     BatchDefaults d;
-    d.time = 0.5f;
-    d.animation = "wave";
-    d.morphs = {{"blink", 1.0f}};
+    d.options.time = 0.5f;
+    d.options.animation = "wave";
+    d.options.morphs = {{"blink", 1.0f}};
     const auto jobs = parse_manifest(
         "model,time,animation,morph,expression\n"
         "a.vrm,1.25,hop,\"happy=0.5;blink=0\",happy=1\n"
         "b.vrm,,,,\n",
         "m.csv", d);
     ASSERT_EQ(jobs.size(), 2u);
-    EXPECT_EQ(jobs[0].time, 1.25f);
-    EXPECT_EQ(jobs[0].animation, "hop");
-    EXPECT_EQ(jobs[0].morphs, (std::vector<NamedWeight>{{"happy", 0.5f}, {"blink", 0.0f}}));
-    EXPECT_EQ(jobs[0].expressions, (std::vector<NamedWeight>{{"happy", 1.0f}}));
-    EXPECT_EQ(jobs[1].time, 0.5f);  // the defaults
-    EXPECT_EQ(jobs[1].animation, "wave");
-    EXPECT_EQ(jobs[1].morphs, (std::vector<NamedWeight>{{"blink", 1.0f}}));
-    EXPECT_TRUE(jobs[1].expressions.empty());
+    EXPECT_EQ(jobs[0].options.time, 1.25f);
+    EXPECT_EQ(jobs[0].options.animation, "hop");
+    EXPECT_EQ(jobs[0].options.morphs, (std::vector<NamedWeight>{{"happy", 0.5f}, {"blink", 0.0f}}));
+    EXPECT_EQ(jobs[0].options.expressions, (std::vector<NamedWeight>{{"happy", 1.0f}}));
+    EXPECT_EQ(jobs[1].options.time, 0.5f);  // the defaults
+    EXPECT_EQ(jobs[1].options.animation, "wave");
+    EXPECT_EQ(jobs[1].options.morphs, (std::vector<NamedWeight>{{"blink", 1.0f}}));
+    EXPECT_TRUE(jobs[1].options.expressions.empty());
     const auto json =
         parse_manifest(R"({"model": "a.vrm", "time": 2, "animation": "0", "expression": "sad=0.25"})", "m.jsonl");
-    EXPECT_EQ(json[0].time, 2.0f);
-    EXPECT_EQ(json[0].expressions, (std::vector<NamedWeight>{{"sad", 0.25f}}));
+    EXPECT_EQ(json[0].options.time, 2.0f);
+    EXPECT_EQ(json[0].options.expressions, (std::vector<NamedWeight>{{"sad", 0.25f}}));
     // Each part of the pose is in the job hash when given; a job without a pose keeps its hash.
     BatchJob plain = jobs[1];
-    plain.time.reset();
-    plain.animation.clear();
-    plain.morphs.clear();
-    const std::string base = job_hash(plain, "", -1, 4);
+    plain.options.time.reset();
+    plain.options.animation.clear();
+    plain.options.morphs.clear();
+    const std::string base = job_hash(plain, "", -1);
     BatchJob other = plain;
-    other.time = 1.0f;
-    const std::string at_one = job_hash(other, "", -1, 4);
-    other.time = 2.0f;
+    other.options.time = 1.0f;
+    const std::string at_one = job_hash(other, "", -1);
+    other.options.time = 2.0f;
     EXPECT_NE(at_one, base);
-    EXPECT_NE(job_hash(other, "", -1, 4), at_one);  // a dataset's frames are separate jobs
+    EXPECT_NE(job_hash(other, "", -1), at_one);  // a dataset's frames are separate jobs
     other = plain;
-    other.animation = "wave";
-    EXPECT_NE(job_hash(other, "", -1, 4), base);
+    other.options.animation = "wave";
+    EXPECT_NE(job_hash(other, "", -1), base);
     other = plain;
-    other.expressions = {{"happy", 1.0f}};
-    EXPECT_NE(job_hash(other, "", -1, 4), base);
+    other.options.expressions = {{"happy", 1.0f}};
+    EXPECT_NE(job_hash(other, "", -1), base);
     other = plain;
-    other.morphs = {{"happy", 1.0f}};
-    EXPECT_NE(job_hash(other, "", -1, 4), base);
+    other.options.morphs = {{"happy", 1.0f}};
+    EXPECT_NE(job_hash(other, "", -1), base);
     EXPECT_EQ(input_error([] { parse_manifest("model,time\nx.glb,soon\n", "m.csv"); }),
               "m.csv:2: time: expected seconds, got 'soon'");
     EXPECT_EQ(input_error([] { parse_manifest("model,morph\nx.glb,happy\n", "m.csv"); }),
@@ -267,7 +266,8 @@ TEST(BatchManifest, EveryBadLineIsAnInputErrorNamingSourceAndLine) {
         {"model,fov\na.obj,180\n", "m.csv:2: fov:"},
         {"model,ortho\na.obj,maybe\n", "m.csv:2: ortho:"},
         {"model,margin\na.obj,0.5\n", "m.csv:2: margin: expected a fraction of the image in [0, 0.5)"},
-        {"model,margin\na.obj,wide\n", "m.csv:2: margin: expected a fraction, got 'wide'"},
+        {"model,time\na.obj,-1\n", "m.csv:2: time: expected seconds >= 0, got '-1'"},
+        {"model,margin\na.obj,wide\n", "m.csv:2: margin: expected a fraction of the image, got 'wide'"},
         {"model,up-axis\na.obj,w\n", "m.csv:2: up-axis: expected x, y, z, -x, -y or -z, got 'w'"},
         {"model,output\na.obj,/abs\n", "m.csv:2: output: '/abs' must be relative"},
         {"model,output\na.obj,x/../../y\n", "m.csv:2: output: 'x/../../y' must stay inside"},
@@ -293,6 +293,8 @@ TEST(BatchManifest, EveryBadLineIsAnInputErrorNamingSourceAndLine) {
         {"{\"model\": \"a.obj\", \"size\": [1, 2, 3]}\n", "j.jsonl:1: size: expected"},
         {"{\"model\": \"a.obj\", \"views\": [1]}\n", "j.jsonl:1: views: expected a list of strings"},
         {"{\"model\": \"a.obj\", \"camera\": 1}\n", "j.jsonl:1: unknown column 'camera'"},
+        {"{\"model\": \"a.obj\", \"margin\": \"\"}\n", "j.jsonl:1: margin: empty value"},
+        {"{\"model\": \"a.obj\", \"time\": -1}\n", "j.jsonl:1: time: expected seconds >= 0, got '-1'"},
         {"{\"model\": \"a.obj\", \"view\": \"0:0\", \"views\": \"1:1\"}\n", "j.jsonl:1: column 'views' is given twice"},
     };
     for (const auto& [text, expected] : json_cases) {

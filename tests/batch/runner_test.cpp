@@ -16,7 +16,7 @@ std::vector<BatchJob> jobs_for(const std::vector<std::string>& models, const std
     BatchDefaults d;
     d.views = views;
     d.styles = "lambert";
-    d.width = d.height = 32;
+    d.options.size = {32, 32};
     return expand_jobs(list, d);
 }
 

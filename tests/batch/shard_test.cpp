@@ -82,23 +82,23 @@ TEST(BatchShard, BadShardArgumentsAreInputErrors) {
 
 TEST(BatchShard, JobHashFollowsEverythingThatDecidesTheFiles) {
     const BatchJob job = jobs_for(1, "30:20", "toon")[0];
-    const std::string h = job_hash(job, "style text", 1234, 4);
+    const std::string h = job_hash(job, "style text", 1234);
     EXPECT_EQ(h.size(), 16u);
     EXPECT_EQ(h.find_first_not_of("0123456789abcdef"), std::string::npos);
-    EXPECT_EQ(job_hash(job, "style text", 1234, 4), h);  // deterministic
-    EXPECT_NE(job_hash(job, "style text edited", 1234, 4), h);
-    EXPECT_NE(job_hash(job, "style text", 1235, 4), h);
-    EXPECT_NE(job_hash(job, "style text", 1234, 1), h);
+    EXPECT_EQ(job_hash(job, "style text", 1234), h);  // deterministic
+    EXPECT_NE(job_hash(job, "style text edited", 1234), h);
+    EXPECT_NE(job_hash(job, "style text", 1235), h);
     auto changed = [&](auto edit) {
         BatchJob j = job;
         edit(j);
-        return job_hash(j, "style text", 1234, 4);
+        return job_hash(j, "style text", 1234);
     };
-    EXPECT_NE(changed([](BatchJob& j) { j.width = 256; }), h);
+    EXPECT_NE(changed([](BatchJob& j) { j.options.samples = 1; }), h);
+    EXPECT_NE(changed([](BatchJob& j) { j.options.size.x = 256; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.outputs.svg = true; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.view.camera.azimuth_degrees = 31.0f; }), h);
-    EXPECT_NE(changed([](BatchJob& j) { j.view.camera.fov_degrees = 40.0f; }), h);
-    EXPECT_NE(changed([](BatchJob& j) { j.view.camera.margin = 0.1f; }), h);
+    EXPECT_NE(changed([](BatchJob& j) { j.options.camera.fov_degrees = 40.0f; }), h);
+    EXPECT_NE(changed([](BatchJob& j) { j.options.camera.margin = 0.1f; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.view.camera.eye = glm::vec3(1.0f); }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.model = "other.obj"; }), h);
     EXPECT_NE(changed([](BatchJob& j) { j.style = "anime"; }), h);

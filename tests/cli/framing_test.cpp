@@ -87,7 +87,9 @@ TEST(Framing, MarginOutsideItsRangeIsExit2) {
         const CliResult r =
             run_cli(std::string("render builtin:sphere --size 8x8 --margin ") + value + " -o " + dir.file("x.png"));
         EXPECT_EQ(r.status, 2) << value;
-        EXPECT_EQ(r.err, "inkshade: --margin: expected a fraction of the image in [0, 0.5)\n") << value;
+        EXPECT_EQ(r.err, std::string("inkshade: --margin: expected a fraction of the image in [0, 0.5), got '") + value +
+                             "'\n")
+            << value;
     }
     EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
 }

@@ -145,7 +145,7 @@ TEST(HardEdges, SmoothAngleOf180AveragesNormalsAcrossTheEdges) {
 TEST(HardEdges, SmoothAngleOutOfRangeIsAnError) {
     const auto r = run_cli("render builtin:sphere --smooth-angle 200 -o /tmp/never.png");
     EXPECT_EQ(r.status, 2);
-    EXPECT_EQ(r.err, "inkshade: --smooth-angle: expected degrees in [0, 180]\n");
+    EXPECT_EQ(r.err, "inkshade: --smooth-angle: expected degrees in [0, 180], got '200'\n");
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ TEST(RenderCommand, LightIntensityMatchesTheStyleFilesAndBrightens) {
     EXPECT_GT(int(bright.pixel(32, 32)[0]), int(dim.pixel(32, 32)[0]) + 60);
     auto bad = run_cli(base + "--light-intensity -2 -o " + dir.file("bad.png"));
     EXPECT_EQ(bad.status, 2);
-    EXPECT_EQ(bad.err, "inkshade: --light-intensity: expected a number in [0, 1e+06]\n");
+    EXPECT_EQ(bad.err, "inkshade: --light-intensity: expected a number in [0, 1e+06], got '-2'\n");
 }
 
 TEST(RenderCommand, RepeatedSetBeforeModelTakesOneValueEach) {
