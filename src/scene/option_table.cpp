@@ -123,7 +123,8 @@ std::vector<OptionSpec> make_table() {
                      [](auto& r) -> auto& { return r.samples; }));
     t.push_back(bind({.name = "bit-depth", .kind = K::Integer, .value = "8|16",
                       .help = "PNG bits a channel: 16 renders into RGBA16 targets (PNG only)",
-                      .fronts = kRender | kLines | kPython, .choices = {"8", "16"}},
+                      .fronts = kRender | kLines | kBatch | kPython, .choices = {"8", "16"},
+                      .hash = HashUse::ImageWhenSet, .metadata = "bit_depth"},
                      [](auto& r) -> auto& { return r.bit_depth; }));
     t.push_back(bind({.name = "srgb", .kind = K::Flag,
                       .help = "decode textures from sRGB, sRGB-encode the output (default: as they are)",

@@ -102,6 +102,50 @@ class ModuleTest(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "bit_depth: expected 8 or 16, got 12"):
                 self.renderer.render("lambert", size=(8, 8), bit_depth=12)
 
+    def test_batch_bit_depth_comes_from_the_option_table(self):
+        """--bit-depth reaches `inkshade batch` (flag and column) and inkshade.batch(bit_depth=) through
+        the option table alone: the same 16-bit PNG as `inkshade render --bit-depth 16`."""
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "a.png")
+            self.cli("render", "builtin:torus", "--size", "48x40", "--azimuth", "60", "--elevation", "30",
+                     "--bit-depth", "16", "-o", png)
+            expected = read_png(png)
+            self.assertEqual(expected.dtype, np.uint16)
+            manifest = os.path.join(tmp, "jobs.csv")
+            with open(manifest, "w") as f:
+                f.write("model,name,views,size,bit-depth\n"
+                        "builtin:torus,column,60:30,48x40,16\n"
+                        "builtin:torus,default,60:30,48x40,\n")
+
+            def job(folder, name):
+                stem = os.path.join(tmp, folder, name, "lambert", "az060_el30")
+                with open(stem + ".json") as f:
+                    return read_png(stem + ".png"), json.load(f)
+            self.cli("batch", manifest, "-o", os.path.join(tmp, "cli"), "-q", "--bit-depth", "16")
+            summary = inkshade.batch(os.path.join(tmp, "py"), manifest=manifest, bit_depth=16)
+            self.assertEqual(summary["done"], 2)
+            for folder in ("cli", "py"):
+                for name in ("column", "default"):
+                    image, meta = job(folder, name)
+                    np.testing.assert_array_equal(image, expected, f"{folder}/{name}")
+                    self.assertEqual(meta["bit_depth"], 16)
+            # Without the flag the column alone asks for 16 bits; the other job is 8 bits again, a
+            # new job hash, so resume renders it again and keeps the column's job.
+            result = subprocess.run([INKSHADE_BIN, "batch", manifest, "-o", os.path.join(tmp, "cli")],
+                                    capture_output=True, text=True)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("1 done, 1 skipped", result.stdout)
+            image, meta = job("cli", "default")
+            self.assertEqual(image.dtype, np.uint8)
+            self.assertNotIn("bit_depth", meta)
+            with open(manifest, "w") as f:
+                f.write("model,bit-depth\nbuiltin:torus,12\n")
+            result = subprocess.run([INKSHADE_BIN, "batch", manifest, "--dry-run"], capture_output=True, text=True)
+            self.assertEqual(result.returncode, 2)
+            self.assertEqual(result.stderr, f"inkshade: {manifest}:2: bit-depth: expected 8 or 16, got 12\n")
+            with self.assertRaisesRegex(ValueError, "bit_depth: expected 8 or 16, got 12"):
+                inkshade.batch(os.path.join(tmp, "py"), manifest=manifest, bit_depth=12)
+
     def test_one_request_gives_the_same_bytes_in_every_front_end(self):
         """`inkshade render`/`lines`, `inkshade batch`, inkshade.batch and Renderer.render/svg."""
         with tempfile.TemporaryDirectory() as tmp:
