@@ -15,9 +15,9 @@
 #include <cstdio>
 #include <iostream>
 
-#include "geometry/mesh_stats.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "inkshade/mesh_stats.hpp"
 #include "inkshade/orbit_controls.hpp"
 #include "inkshade/renderer.hpp"
 #include "param_widgets.hpp"
@@ -208,7 +208,7 @@ bool Viewer::open_model(const std::string& path) {
         mesh_ = std::move(mesh);
         box_ = mesh_.bounds();
         model_path_ = model_field_ = path;
-        const geometry::MeshStats s = geometry::mesh_stats(mesh_);
+        const MeshStats s = mesh_stats(mesh_);
         char facts[512];
         std::snprintf(facts, sizeof facts,
                       "%zu vertices, %zu triangles\nsize %.3g x %.3g x %.3g\n%zu boundary, %zu non-manifold edges\n"
