@@ -11,6 +11,7 @@
 //   save-frame PATH     save the rendered image (what `inkshade render` writes)
 //   save-style PATH     save the current style as a preset file
 //   gui on|off          show or hide the panels;  quit
+// This file reads and checks scripts; script_runner.hpp runs them.
 #pragma once
 #include <string>
 #include <vector>
