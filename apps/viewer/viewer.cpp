@@ -57,7 +57,10 @@ int run_frames(Window& window, ViewerSession& session, ScriptRunner& script, con
 
 int run_viewer(const ViewerOptions& options) {
     std::vector<ScriptCommand> commands;
-    if (!options.script.empty()) commands = read_script(options.script);  // bad scripts fail first
+    if (!options.script.empty()) {  // a bad script fails before the window opens
+        commands = read_script(options.script);
+        check_script(commands, options.scene, options.script);
+    }
     ScriptRunner script(std::move(commands));
     Window window(options.scene.options.width, options.scene.options.height,
                   /*vsync=*/!script.scripted() && options.frames == 0);
