@@ -16,6 +16,7 @@ WindowCanvas::WindowCanvas() : impl_(std::make_unique<Impl>()) {}
 WindowCanvas::~WindowCanvas() = default;
 
 void WindowCanvas::show(const Image& image) {
+    if (image.width <= 0 || image.height <= 0) return;  // GL has no texture of no pixels
     if (!impl_->texture || image.width != impl_->width || image.height != impl_->height) {
         // Immutable storage of the image's size: a new texture when the window is resized.
         impl_->texture = gpu::GlTexture::create(GL_TEXTURE_2D);

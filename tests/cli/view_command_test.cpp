@@ -87,7 +87,7 @@ TEST(ViewCommand, SavedStyleRendersTheSameImage) {
     const std::string shot = dir.file("shot.png"), style = dir.file("tuned.toml");
     CliResult r =
         run_view("builtin:torus --style cel-002 --size 96x96 --script " +
-                 script(dir, "gui off\nset levels=0.2,0.5,0.9\nset base-color=1,0.5,0.2\nframes 1\nscreenshot " + shot +
+                 script(dir, "gui off\nset levels=0.2,0.5,0.9\nset shade-color=1,0.5,0.2\nframes 1\nscreenshot " + shot +
                                  "\nsave-style " + style + "\n"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_GE(matches_render(shot, "builtin:torus --style " + style + " --size 96x96", dir), 0.99);
