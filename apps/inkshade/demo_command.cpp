@@ -3,6 +3,8 @@
 // labelled contact sheet, and the SVG line drawing of the same view.
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <optional>
 
 #include "commands.hpp"
 #include "inkshade/contact_sheet.hpp"
@@ -12,6 +14,19 @@
 #include "inkshade/scene.hpp"
 
 namespace inkshade::cli {
+
+namespace {
+
+// The tiles that need another background than their style's for the model to show. three.js
+// draws a MeshBasicMaterial unlit, all in its colour (white by default), over the clear colour
+// of its WebGLRenderer, black: on the style's white the teapot would be white on white.
+std::optional<glm::vec4> tile_background(const std::string& style) {
+    static const std::map<std::string, glm::vec4> backgrounds = {{"threejs-basic", {0.0f, 0.0f, 0.0f, 1.0f}}};
+    const auto it = backgrounds.find(style);
+    return it == backgrounds.end() ? std::nullopt : std::optional(it->second);
+}
+
+}  // namespace
 
 Command add_demo_command(CLI::App& app) {
     struct Args {
@@ -38,6 +53,7 @@ Command add_demo_command(CLI::App& app) {
         std::vector<LabelledImage> tiles, debug_tiles;
         for (const std::string& name : builtin_style_names()) {
             request.style = name;
+            request.background = tile_background(name);
             const Scene scene = make_scene(request);
             const Camera camera = scene.frame(mesh);
             Image image = render_scene(renderer, scene, camera, scene.light(box, camera));
@@ -51,6 +67,7 @@ Command add_demo_command(CLI::App& app) {
         // The vector line drawing of the same view: what `inkshade lines MODEL` writes.
         {
             request.style.clear();
+            request.background.reset();
             request.outputs = {.image = false, .line_drawing = true};
             const Scene scene = make_scene(request);
             LineExtractor extractor(mesh);

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "geometry/mesh_stats.hpp"
 #include "inkshade/io.hpp"
+#include "inkshade/mesh_stats.hpp"
 #include "io/gltf_names.hpp"
 #include "mesh_warnings.hpp"
 
@@ -119,7 +119,7 @@ Command add_info_command(CLI::App& app) {
         Mesh mesh = load_mesh(*model, as_in_file);
         print_mesh_warnings(mesh);
         double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        geometry::MeshStats s = geometry::mesh_stats(mesh);
+        MeshStats s = mesh_stats(mesh);
         BoundingBox b = mesh.bounds();
         std::printf("model:                %s\n", model->c_str());
         std::printf("vertices:             %zu\n", s.vertices);

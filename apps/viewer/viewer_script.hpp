@@ -11,12 +11,14 @@
 //   save-frame PATH     save the rendered image (what `inkshade render` writes)
 //   save-style PATH     save the current style as a preset file
 //   gui on|off          show or hide the panels;  quit
+// This file reads and checks scripts; script_runner.hpp runs them.
 #pragma once
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "inkshade/scene.hpp"
 #include "inkshade/style.hpp"
 
 namespace inkshade::viewer {
@@ -27,11 +29,19 @@ struct ScriptCommand {
     std::string argument;    // paths, names, set text
     int count = 0;           // frames, key code (GLFW = upper-case ASCII), gui on/off
     glm::vec3 vector{0.0f};  // light-pos; orbit (yaw, pitch); zoom (factor)
+    int line = 0;            // in the script file, for messages
 };
 
 // Reads and checks a whole script first, so a typo fails before the window opens.
 // Throws InputError("FILE:LINE: problem").
 std::vector<ScriptCommand> read_script(const std::string& path);
+
+// Checks, before the window opens, what the commands name as the window will meet it: every
+// `set` against the style it applies to (the scene's, then as `style` lines and the F and 1-9
+// keys change it), every `style` name or file (load_style), and every `open` model (loaded
+// with the scene's options, its file camera and lights as the scene asks). Throws
+// InputError("FILE:LINE: problem") for the first bad one; `path` is the script's.
+void check_script(const std::vector<ScriptCommand>& commands, const Scene& scene, const std::string& path);
 
 // Parses one script line (no comment, trimmed); throws InputError with the problem.
 ScriptCommand parse_script_line(const std::string& line);

@@ -11,6 +11,10 @@ namespace inkshade {
 
 namespace {
 
+constexpr int kPad = 8;  // pixels around each tile and its caption
+
+int caption_height(int text_scale) { return 12 * text_scale + 2 * kPad; }
+
 // Fills the axis-aligned quads stb_easy_font produces (4 vertices of 16 bytes each).
 void draw_text(Image& img, int x0, int y0, const std::string& text, int scale) {
     std::vector<char> buffer(text.size() * 270 + 64);  // ~270 bytes per char (stb docs)
@@ -35,18 +39,24 @@ void draw_text(Image& img, int x0, int y0, const std::string& text, int scale) {
 
 }  // namespace
 
+glm::ivec2 contact_sheet_tile_origin(size_t index, size_t count, int columns, glm::ivec2 tile_size, int text_scale) {
+    const size_t cols = size_t(std::clamp(columns, 1, int(std::max<size_t>(count, 1))));
+    return {kPad + int(index % cols) * (tile_size.x + kPad),
+            kPad + int(index / cols) * (tile_size.y + caption_height(text_scale))};
+}
+
 Image contact_sheet(const std::vector<LabelledImage>& tiles, int columns, int text_scale) {
     if (tiles.empty() || columns <= 0) throw RuntimeError("contact sheet needs at least one image");
     const int w = tiles[0].image.width, h = tiles[0].image.height;
     for (const auto& t : tiles)
         if (t.image.width != w || t.image.height != h) throw RuntimeError("contact sheet images differ in size");
-    const int pad = 8, caption = 12 * text_scale + 2 * pad;
     const int rows = (int(tiles.size()) + columns - 1) / columns;
     const int cols = std::min(columns, int(tiles.size()));
-    Image sheet(cols * (w + pad) + pad, rows * (h + caption) + pad);
+    Image sheet(cols * (w + kPad) + kPad, rows * (h + caption_height(text_scale)) + kPad);
     std::fill(sheet.rgba.begin(), sheet.rgba.end(), uint8_t(255));
     for (size_t i = 0; i < tiles.size(); ++i) {
-        const int x0 = pad + int(i % size_t(cols)) * (w + pad), y0 = pad + int(i / size_t(cols)) * (h + caption);
+        const glm::ivec2 origin = contact_sheet_tile_origin(i, tiles.size(), columns, {w, h}, text_scale);
+        const int x0 = origin.x, y0 = origin.y;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
                 const uint8_t* src = tiles[i].image.pixel(x, y);
@@ -56,7 +66,7 @@ Image contact_sheet(const std::vector<LabelledImage>& tiles, int columns, int te
                 dst[3] = 255;
             }
         const int text_w = stb_easy_font_width(const_cast<char*>(tiles[i].label.c_str())) * text_scale;
-        draw_text(sheet, x0 + std::max(0, (w - text_w) / 2), y0 + h + pad, tiles[i].label, text_scale);
+        draw_text(sheet, x0 + std::max(0, (w - text_w) / 2), y0 + h + kPad, tiles[i].label, text_scale);
     }
     return sheet;
 }

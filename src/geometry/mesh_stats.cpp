@@ -2,7 +2,7 @@
 // sorting packed keys (TBB parallel sort) rather than with node-based maps, so 10 M triangles
 // take about a second; components use union-find with path halving and union by size (Tarjan
 // 1975).
-#include "geometry/mesh_stats.hpp"
+#include "inkshade/mesh_stats.hpp"
 
 #include <tbb/parallel_sort.h>
 
@@ -15,7 +15,7 @@
 
 #include "geometry/duplicate_faces.hpp"
 
-namespace inkshade::geometry {
+namespace inkshade {
 namespace {
 
 class UnionFind {
@@ -57,7 +57,7 @@ MeshStats mesh_stats(const Mesh& mesh) {
     edges.reserve(3 * mesh.triangles.size());
     // A face is a duplicate when an earlier face has the same vertex set. The earlier face of an
     // in-range duplicate is in range too, so counting flagged in-range faces counts among those.
-    const std::vector<uint8_t> duplicate = find_duplicate_faces(mesh.triangles);
+    const std::vector<uint8_t> duplicate = geometry::find_duplicate_faces(mesh.triangles);
     std::vector<uint8_t> referenced(n, 0);
     UnionFind components(n);
     size_t valid_faces = 0;
@@ -108,4 +108,4 @@ MeshStats mesh_stats(const Mesh& mesh) {
     return s;
 }
 
-}  // namespace inkshade::geometry
+}  // namespace inkshade

@@ -87,7 +87,7 @@ TEST(ViewCommand, SavedStyleRendersTheSameImage) {
     const std::string shot = dir.file("shot.png"), style = dir.file("tuned.toml");
     CliResult r =
         run_view("builtin:torus --style cel-002 --size 96x96 --script " +
-                 script(dir, "gui off\nset levels=0.2,0.5,0.9\nset base-color=1,0.5,0.2\nframes 1\nscreenshot " + shot +
+                 script(dir, "gui off\nset levels=0.2,0.5,0.9\nset shade-color=1,0.5,0.2\nframes 1\nscreenshot " + shot +
                                  "\nsave-style " + style + "\n"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_GE(matches_render(shot, "builtin:torus --style " + style + " --size 96x96", dir), 0.99);
@@ -98,14 +98,14 @@ TEST(ViewCommand, SavedStyleRendersTheSameImage) {
 TEST(ViewCommand, BadModelKeepsPreviousModelAndReportsError) {
     TempDir dir;
     const std::string a = dir.file("a.png"), b = dir.file("b.png");
-    const std::string bad = dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
-    CliResult r =
-        run_view("builtin:sphere --size 64x64 --script " +
-                 script(dir, "gui off\nframes 1\nscreenshot " + a + "\nopen " + bad + "\nframes 1\nscreenshot " + b +
-                                 "\nopen /nonexistent/model.obj\nframes 1\n"));
+    // A model that breaks after the script was checked, as a file opened from the Model panel
+    // can be bad: the script itself overwrites it with a style file before opening it.
+    const std::string model = dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    CliResult r = run_view("builtin:sphere --size 64x64 --script " +
+                           script(dir, "gui off\nframes 1\nscreenshot " + a + "\nsave-style " + model + "\nopen " +
+                                           model + "\nframes 1\nscreenshot " + b + "\n"));
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("broken.obj"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("/nonexistent/model.obj"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("broken.obj: "), std::string::npos) << r.err;
     EXPECT_EQ(matching_fraction(read_png(a), read_png(b), 0), 1.0);
 }
 
@@ -123,6 +123,50 @@ TEST(ViewCommand, BadScriptFailsBeforeTheWindowWithLineNumber) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find(s + ":2: unknown command 'fly-away'"), std::string::npos) << r.err;
     EXPECT_EQ(line_count(r.err), 1);
+}
+
+// What a script's lines name is checked before the window opens (no display here: a window
+// would fail with exit 1): each is exit 2 with the script's FILE:LINE and one line.
+TEST(ViewCommand, BadSetStyleOrModelInScriptFailsBeforeTheWindow) {
+    TempDir dir;
+    const std::string bad_model = dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+    const struct {
+        std::string script, message;
+    } cases[] = {
+        {"gui off\nframes 1\nset no-such-param=1\n", ":3: set no-such-param=1: model 'lambert' has no parameter"},
+        {"style cel-002\nset levels=0.2,0.5\nset hull.width=2\n", ":3: set hull.width=2: the style draws no 'hull'"},
+        {"frames 1\nstyle no-such-style\n", ":2: no-such-style: no such style file or built-in style"},
+        {"open builtin:torus\nopen /nonexistent/model.obj\n", ":2: /nonexistent/model.obj: "},
+        {"frames 2\n\n# broken\nopen " + bad_model + "\n", ":4: " + bad_model + ": "},
+    };
+    for (const auto& c : cases) {
+        const std::string s = script(dir, c.script);
+        CliResult r =
+            run_cli("view builtin:sphere --shading lambert --script " + s, "env -u DISPLAY -u WAYLAND_DISPLAY");
+        EXPECT_EQ(r.status, 2) << c.script << r.err;
+        EXPECT_NE(r.err.find(s + c.message), std::string::npos) << c.script << r.err;
+        EXPECT_EQ(line_count(r.err), 1) << r.err;
+    }
+}
+
+TEST(ViewCommand, ScriptIsCheckedAgainstTheStyleEachLineMeets) {
+    TempDir dir;
+    // Key 1 turns on the first line type `inkshade styles` lists, with its parameters.
+    CliResult styles = run_cli("styles");
+    const std::string header = "Line types (";
+    const size_t at = styles.out.find('\n', styles.out.find(header)) + 1;
+    ASSERT_NE(at, 0u) << styles.out;
+    const std::string first_type = styles.out.substr(at + 2, styles.out.find(' ', at + 2) - at - 2);
+    // `levels` is cel's, not lambert's; hull.width needs the hull lines toon draws; the first
+    // type's width needs key 1, since lambert draws no lines.
+    CliResult r = run_view("builtin:sphere --shading lambert --size 64x64 --script " +
+                           script(dir,
+                                  "gui off\nstyle cel-002\nset levels=0.2,0.5\nstyle toon\nset hull.width=2\n"
+                                  "style lambert\nkey 1\nset " +
+                                      first_type + ".width=2\nframes 1\nquit\n"));
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("has no parameter"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("draws no"), std::string::npos) << r.err;
 }
 
 }  // namespace

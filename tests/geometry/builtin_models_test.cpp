@@ -9,19 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "geometry/mesh_stats.hpp"
 #include "geometry/normals.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/mesh_stats.hpp"
 
 namespace inkshade::builtin {
 namespace {
 
-using geometry::MeshStats;
-
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 void expect_closed(const Mesh& m, long euler) {
-    const MeshStats s = geometry::mesh_stats(m);
+    const MeshStats s = mesh_stats(m);
     EXPECT_EQ(s.boundary_edges, 0u);
     EXPECT_EQ(s.non_manifold_edges, 0u);
     EXPECT_EQ(s.degenerate_faces, 0u);
@@ -168,7 +166,7 @@ TEST(BuiltinModels, TeapotTessellationCounts) {
 
 TEST(BuiltinModels, TeapotTopologyAfterWelding) {
     const Mesh m = teapot(16);
-    const MeshStats s = geometry::mesh_stats(m);
+    const MeshStats s = mesh_stats(m);
     EXPECT_EQ(s.vertices, 8257u);
     EXPECT_EQ(s.triangles, 16256u);
     EXPECT_EQ(s.boundary_edges, 256u);  // 16n: rim lip, lid edge, handle and spout ends

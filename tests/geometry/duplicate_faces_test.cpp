@@ -7,7 +7,7 @@
 #include <random>
 #include <set>
 
-#include "geometry/mesh_stats.hpp"
+#include "inkshade/mesh_stats.hpp"
 
 namespace inkshade::geometry {
 namespace {

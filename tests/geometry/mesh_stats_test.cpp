@@ -1,4 +1,4 @@
-#include "geometry/mesh_stats.hpp"
+#include "inkshade/mesh_stats.hpp"
 
 #include <gtest/gtest.h>
 

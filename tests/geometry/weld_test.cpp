@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "geometry/mesh_stats.hpp"
+#include "inkshade/mesh_stats.hpp"
 
 namespace inkshade::geometry {
 namespace {

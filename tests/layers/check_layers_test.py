@@ -3,8 +3,10 @@ must fail, naming file, line, parts and header, exactly where a part includes wh
 
   python3 -m unittest -v check_layers_test      (ctest: layers.checker)
 """
+import contextlib
 import importlib.machinery
 import importlib.util
+import io
 import subprocess
 import sys
 import tempfile
@@ -14,9 +16,22 @@ from pathlib import Path
 SCRIPT = Path(__file__).resolve().parent.parent.parent / "scripts" / "check-layers"
 
 
-def run(root):
-    r = subprocess.run([sys.executable, str(SCRIPT), "--root", str(root)], capture_output=True, text=True)
-    return r.returncode, r.stdout.splitlines()
+def load_script():
+    loader = importlib.machinery.SourceFileLoader("check_layers", str(SCRIPT))
+    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)
+    return module
+
+
+def run(root, exceptions):
+    """The script's exit status and output lines for the tree at `root`, with `exceptions` in
+    place of the repository's FRONT_END_EXCEPTIONS (which name the repository's files)."""
+    module = load_script()
+    module.FRONT_END_EXCEPTIONS = exceptions
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        rc = module.main(["--root", str(root)])
+    return rc, out.getvalue().splitlines()
 
 
 class Tree:
@@ -37,16 +52,19 @@ class Tree:
         self.write("src/io/text_scanner.hpp", "#pragma once")
         self.write("src/io/load_mesh.cpp", '#include "geometry/weld.hpp"', '#include "io/text_scanner.hpp"',
                    '#include "tiny_gltf.h"')
-        self.write("src/render/renderer.cpp", '#include "inkshade/renderer.hpp"', '#include "geometry/weld.hpp"')
+        self.write("src/render/renderer.cpp", '#include "inkshade/renderer.hpp"', '#include "geometry/weld.hpp"',
+                   "#include <epoxy/gl.h>")
         self.write("src/styles/style.cpp", '#include "inkshade/style.hpp"', '#include "io/text_scanner.hpp"')
         self.write("src/batch/jobs.hpp", "#pragma once", '#include "inkshade/batch.hpp"')
         self.write("src/batch/jobs.cpp", '#include "batch/jobs.hpp"', '#include "scene/request.hpp"',
                    '#include "inkshade/style.hpp"')
-        self.write("apps/viewer/viewer.hpp", "#pragma once", '#include "inkshade/renderer.hpp"')
+        self.write("apps/viewer/viewer.hpp", "#pragma once", '#include "inkshade/scene.hpp"')
         self.write("apps/inkshade/commands.hpp", "#pragma once")
         self.write("apps/inkshade/view_command.cpp", '#include "commands.hpp"', '#include "viewer/viewer.hpp"',
                    '#include "batch/jobs.hpp"')
         self.write("python/module.cpp", '#include "inkshade/batch.hpp"')
+        # Front ends include public headers only, but for the files and headers listed here.
+        self.exceptions = {("apps/inkshade/view_command.cpp", "batch/jobs.hpp"): "the jobs of a dry run"}
 
     def write(self, path, *lines):
         p = self.root / path
@@ -54,7 +72,7 @@ class Tree:
         p.write_text("\n".join(lines) + "\n")
 
     def check(self):
-        return run(self.root)
+        return run(self.root, self.exceptions)
 
     def close(self):
         self._dir.cleanup()
@@ -134,6 +152,72 @@ class CheckLayers(unittest.TestCase):
         self.tree.write("src/batch/runner.cpp", '#include "viewer/viewer.hpp"')
         self.assertFails("src/batch/runner.cpp:1: part batch may not include viewer (viewer/viewer.hpp)")
 
+    def test_front_ends_may_not_include_gpu(self):
+        self.tree.write("apps/viewer/canvas.cpp", '#include "viewer.hpp"', '#include "gpu/gl_handle.hpp"')
+        self.tree.write("python/module.cpp", '#include "inkshade/batch.hpp"', '#include "gpu/framebuffer.hpp"')
+        self.assertFails("apps/viewer/canvas.cpp:2: part viewer may not include gpu (gpu/gl_handle.hpp)",
+                         "python/module.cpp:2: part python may not include gpu (gpu/framebuffer.hpp)")
+
+    def test_opengl_headers_are_gpu_s(self):
+        # <epoxy/...> and "epoxy/..." alike; render may (the clean tree's renderer.cpp does).
+        self.tree.write("apps/viewer/viewer.cpp", '#include "viewer.hpp"', "#include <epoxy/gl.h>")
+        self.tree.write("apps/inkshade/render_command.cpp", '#include "epoxy/egl.h"')
+        self.tree.write("src/styles/style.cpp", '#include "inkshade/style.hpp"', "#  include <epoxy/gl.h>")
+        self.assertFails("src/styles/style.cpp:2: part styles may not include gpu (epoxy/gl.h)",
+                         "apps/inkshade/render_command.cpp:1: part cli may not include gpu (epoxy/egl.h)",
+                         "apps/viewer/viewer.cpp:2: part viewer may not include gpu (epoxy/gl.h)")
+
+    def test_front_ends_include_public_headers_only(self):
+        self.tree.write("apps/inkshade/info_command.cpp", '#include "commands.hpp"', '#include "inkshade/io.hpp"',
+                        '#include "geometry/weld.hpp"')
+        self.tree.write("python/module.cpp", '#include "io/text_scanner.hpp"')
+        hint = " (or list it in FRONT_END_EXCEPTIONS of scripts/check-layers with the reason)"
+        self.assertFails("apps/inkshade/info_command.cpp:3: part cli may include the library's public headers only, "
+                         "not geometry/weld.hpp" + hint,
+                         "python/module.cpp:1: part python may include the library's public headers only, "
+                         "not io/text_scanner.hpp" + hint)
+
+    def test_an_exception_is_for_its_file_only(self):
+        self.tree.write("apps/viewer/viewer.cpp", '#include "batch/jobs.hpp"')
+        rc, out = self.tree.check()
+        self.assertEqual(rc, 1, out)
+        self.assertTrue(out[0].startswith("apps/viewer/viewer.cpp:1: part viewer may include the library's public "
+                                          "headers only, not batch/jobs.hpp"), out)
+        self.assertEqual(len(out), 2, out)
+
+    def test_front_ends_reach_the_renderer_through_scene(self):
+        self.tree.write("include/inkshade/scene.hpp", "#pragma once", '#include "inkshade/renderer.hpp"')
+        self.tree.write("apps/viewer/viewer.cpp", '#include "inkshade/scene.hpp"', '#include "inkshade/renderer.hpp"')
+        rc, out = self.tree.check()
+        self.assertEqual(rc, 1, out)
+        self.assertEqual(out[:-1], ["apps/viewer/viewer.cpp:2: part viewer may not include inkshade/renderer.hpp: "
+                                    "front ends draw through scene.hpp (render_scene, draw_scene_lines) (or list it "
+                                    "in FRONT_END_EXCEPTIONS of scripts/check-layers with the reason)"])
+        self.tree.exceptions[("apps/viewer/viewer.cpp", "inkshade/renderer.hpp")] = "a renderer across frames"
+        rc, out = self.tree.check()
+        self.assertEqual(rc, 0, out)
+
+    def test_an_exception_no_include_uses_fails(self):
+        self.tree.exceptions[("apps/inkshade/main.cpp", "core/name_suggestion.hpp")] = "did you mean"
+        self.tree.write("apps/inkshade/view_command.cpp", '#include "commands.hpp"', '#include "viewer/viewer.hpp"')
+        self.assertFails("apps/inkshade/main.cpp:1: the exception for core/name_suggestion.hpp matches no include "
+                         "that needs it (remove it from FRONT_END_EXCEPTIONS)",
+                         "apps/inkshade/view_command.cpp:1: the exception for batch/jobs.hpp matches no include "
+                         "that needs it (remove it from FRONT_END_EXCEPTIONS)")
+
+    def test_an_exception_needs_a_reason_and_may_not_name_gl(self):
+        self.tree.exceptions[("apps/viewer/viewer.cpp", "io/text_scanner.hpp")] = " "
+        rc, out = self.tree.check()
+        self.assertEqual((rc, out), (1, ["scripts/check-layers: the exception for io/text_scanner.hpp in "
+                                         "apps/viewer/viewer.cpp gives no reason"]))
+        del self.tree.exceptions[("apps/viewer/viewer.cpp", "io/text_scanner.hpp")]
+        for header in ("gpu/gl_handle.hpp", "epoxy/gl.h"):
+            self.tree.exceptions[("apps/viewer/viewer.cpp", header)] = "a texture"
+            rc, out = self.tree.check()
+            self.assertEqual((rc, out), (1, [f"scripts/check-layers: the exception for {header} in "
+                                             "apps/viewer/viewer.cpp names GL, which front ends never include"]))
+            del self.tree.exceptions[("apps/viewer/viewer.cpp", header)]
+
     def test_unknown_source_folder_fails(self):
         self.tree.write("src/extra/thing.cpp", '#include "inkshade/mesh.hpp"')
         rc, out = self.tree.check()
@@ -155,9 +239,7 @@ class Rules(unittest.TestCase):
         self.assertIn("scene    src/scene/", r.stdout)
 
     def test_a_cycle_in_the_rules_is_refused(self):
-        loader = importlib.machinery.SourceFileLoader("check_layers", str(SCRIPT))
-        module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
-        loader.exec_module(module)
+        module = load_script()
         self.assertIsNone(module.check_rules())
         module.ALLOWED["core"] = ["io"]  # io may include core already
         self.assertEqual(module.check_rules(), "the rules have a cycle: core -> io -> core")

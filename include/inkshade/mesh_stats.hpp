@@ -1,10 +1,10 @@
-// Topological facts about a mesh, as `inkshade info` prints them.
+// Topological facts about a mesh, as `inkshade info` and the viewer's model panel give them.
 #pragma once
 #include <cstddef>
 
 #include "inkshade/mesh.hpp"
 
-namespace inkshade::geometry {
+namespace inkshade {
 
 struct MeshStats {
     size_t vertices = 0;
@@ -21,4 +21,4 @@ struct MeshStats {
 
 MeshStats mesh_stats(const Mesh& mesh);
 
-}  // namespace inkshade::geometry
+}  // namespace inkshade
