@@ -15,7 +15,9 @@
 namespace inkshade {
 
 // One polyline in image coordinates: pixels, origin at the top-left corner of the image, y
-// down (SVG's convention; pixel (i, j) covers [i, i+1] x [j, j+1]).
+// down (SVG's convention; pixel (i, j) covers [i, i+1] x [j, j+1]). A new per-point attribute
+// is listed in for_each_point_attribute too (src/geometry/path_attributes.hpp), which every
+// operation on paths goes through.
 struct LinePath {
     std::vector<glm::vec2> points;  // a closed path does not repeat its first point
     std::vector<float> depth;       // per point: window depth in [0, 1] as in the GL depth buffer

@@ -1,17 +1,15 @@
 // The registry behind [[lines]] in style files, --lines and `inkshade styles`.
-#include <algorithm>
 #include <stdexcept>
 
-#include "core/name_suggestion.hpp"
-#include "inkshade/error.hpp"
+#include "core/registry.hpp"
 #include "inkshade/lines.hpp"
 
 namespace inkshade {
 
 namespace {
 
-std::vector<LineType>& registry() {
-    static std::vector<LineType> types;
+Registry<LineType>& registry() {
+    static Registry<LineType> types("line type");
     return types;
 }
 
@@ -25,29 +23,11 @@ std::vector<ParamSpec> stroke_params(glm::vec3 color, float width_px) {
             float_param("width", width_px, 0.0f, 64.0f, "stroke width in pixels of the output image")};
 }
 
-LineTypeRegistration::LineTypeRegistration(LineType type) { registry().push_back(std::move(type)); }
+LineTypeRegistration::LineTypeRegistration(LineType type) { registry().add(std::move(type)); }
 
-std::vector<const LineType*> line_types() {
-    std::vector<const LineType*> out;
-    for (const auto& t : registry()) out.push_back(&t);
-    std::sort(out.begin(), out.end(), [](auto* a, auto* b) { return a->name < b->name; });
-    return out;
-}
+std::vector<const LineType*> line_types() { return registry().list(); }
 
-const LineType& line_type(const std::string& name) {
-    for (const auto& t : registry())
-        if (t.name == name) return t;
-    for (const auto& t : registry())  // names are lower case; what users type may not be
-        if (equal_ignoring_case(t.name, name)) return t;
-    std::string names;
-    std::vector<std::string> candidates;
-    for (const auto* t : line_types()) {
-        names += (names.empty() ? "" : ", ") + t->name;
-        candidates.push_back(t->name);
-    }
-    throw InputError("unknown line type '" + name + "' (choose " + (names.empty() ? "none registered" : names) + ")" +
-                     did_you_mean(name, candidates));
-}
+const LineType& line_type(const std::string& name) { return registry().at(name); }
 
 const ParamValue& line_param(const LineSettings& settings, const std::string& name) {
     const ParamSpec* spec = line_type(settings.type).param(name);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/path_arc_length.hpp"
+#include "geometry/path_attributes.hpp"
 
 namespace inkshade::geometry {
 
@@ -96,13 +97,7 @@ LinePath vertex_range(const LinePath& p, size_t a, size_t b) {
     auto take = [&](auto& to, const auto& from) {
         if (!from.empty()) to.assign(from.begin() + long(a), from.begin() + long(b) + 1);
     };
-    take(out.points, p.points);
-    take(out.depth, p.depth);
-    take(out.strength, p.strength);
-    take(out.width, p.width);
-    take(out.color, p.color);
-    take(out.u, p.u);
-    take(out.world, p.world);
+    for_each_point_attribute(take, out, p);
     return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/path_arc_length.hpp"
+#include "geometry/path_attributes.hpp"
 
 namespace inkshade::geometry {
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/path_attributes.hpp"
+
 namespace inkshade::geometry {
 
 namespace {
@@ -10,14 +12,10 @@ namespace {
 // Appends to `out` the attributes of `p` at point i, or between i and i + 1 at fraction f.
 void append_point(LinePath& out, const LinePath& p, size_t i, float f) {
     const size_t j = std::min(i + 1, p.points.size() - 1);
-    auto mix = [&](const auto& v) { return f == 0.0f ? v[i] : v[i] + (v[j] - v[i]) * f; };
-    out.points.push_back(mix(p.points));
-    if (!p.depth.empty()) out.depth.push_back(mix(p.depth));
-    if (!p.strength.empty()) out.strength.push_back(mix(p.strength));
-    if (!p.width.empty()) out.width.push_back(mix(p.width));
-    if (!p.color.empty()) out.color.push_back(mix(p.color));
-    if (!p.u.empty()) out.u.push_back(mix(p.u));
-    if (!p.world.empty()) out.world.push_back(mix(p.world));
+    auto mix = [&](auto& to, const auto& v) {
+        if (!v.empty()) to.push_back(f == 0.0f ? v[i] : v[i] + (v[j] - v[i]) * f);
+    };
+    for_each_point_attribute(mix, out, p);
 }
 
 // The stroke parameter past a closed path's last point, at its first point again: u runs on
@@ -58,12 +56,7 @@ LinePath rotated(const LinePath& path, size_t k) {
     auto turn = [&](auto& v) {
         if (!v.empty()) std::rotate(v.begin(), v.begin() + long(k % v.size()), v.end());
     };
-    turn(out.points);
-    turn(out.depth);
-    turn(out.strength);
-    turn(out.width);
-    turn(out.color);
-    turn(out.world);
+    for_each_point_attribute(turn, out);
     if (!path.u.empty() && !path.points.empty()) {
         // u stays increasing: the points that wrapped around come after the loop's last one.
         const size_t n = path.u.size(), first = k % n;
@@ -84,13 +77,6 @@ LinePath sub_path(const LinePath& open, const std::vector<double>& s, double s0,
         if (!(i == i1 && f1 == 0.0f)) append_point(out, open, i, 0.0f);
     append_point(out, open, i1, f1);
     return out;
-}
-
-bool attributes_consistent(const LinePath& path) {
-    const size_t n = path.points.size();
-    auto ok = [n](size_t m) { return m == 0 || m == n; };
-    return ok(path.depth.size()) && ok(path.strength.size()) && ok(path.width.size()) && ok(path.color.size()) &&
-           ok(path.u.size()) && ok(path.world.size());
 }
 
 }  // namespace inkshade::geometry

@@ -1,5 +1,5 @@
 // Arc length along an image path (LinePath: pixels) and its pieces between two arc lengths, the
-// per-point attributes (depth, strength, width, colour) interpolated at the cut points: what
+// per-point attributes (geometry/path_attributes.hpp) interpolated at the cut points: what
 // chain splitting, dashes and the thickness modifiers measure along.
 #pragma once
 #include <vector>
@@ -22,9 +22,5 @@ LinePath rotated(const LinePath& path, size_t k);
 // The piece of the open path `open` between arc lengths s0 < s1 (`s` = arc_lengths(open)):
 // the points strictly inside and two interpolated end points. Level copied, not closed.
 LinePath sub_path(const LinePath& open, const std::vector<double>& s, double s0, double s1);
-
-// The per-point attributes that are present (depth, strength, width, colour) resized or
-// checked: every one either empty or of the points' size.
-bool attributes_consistent(const LinePath& path);
 
 }  // namespace inkshade::geometry

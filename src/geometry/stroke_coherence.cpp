@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "geometry/path_arc_length.hpp"
+#include "geometry/path_attributes.hpp"
 
 namespace inkshade::geometry {
 
@@ -169,24 +170,17 @@ void reverse_attribute(V& v, bool closed) {
 
 LinePath reversed(const LinePath& path) {
     LinePath out = path;
-    out.u.clear();
-    reverse_attribute(out.points, path.closed);
-    reverse_attribute(out.depth, path.closed);
-    reverse_attribute(out.strength, path.closed);
-    reverse_attribute(out.width, path.closed);
-    reverse_attribute(out.color, path.closed);
-    reverse_attribute(out.world, path.closed);
+    for_each_point_attribute([&](auto& v) { reverse_attribute(v, path.closed); }, out);
+    out.u.clear();  // it would decrease along the path: the caller sets it anew
     return out;
 }
 
 LinePath rotated_at(const LinePath& path, double at) {
-    LinePath plain = path;
-    plain.u.clear();
-    if (!path.closed || path.points.size() < 2) return plain;
-    const LinePath open = opened(plain);
+    if (!path.closed || path.points.size() < 2) return path;
+    const LinePath open = opened(path);
     const std::vector<double> s = arc_lengths(open);
     const double total = s.back();
-    if (!(at > 1e-9 && at < total - 1e-9)) return plain;
+    if (!(at > 1e-9 && at < total - 1e-9)) return path;
     // From `at` round to the start, then on to `at`; each piece's last point is the other's first.
     const LinePath a = sub_path(open, s, at, total), b = sub_path(open, s, 0.0, at);
     LinePath out;
@@ -197,12 +191,12 @@ LinePath rotated_at(const LinePath& path, double at) {
         to.assign(x.begin(), x.end() - 1);
         to.insert(to.end(), y.begin(), y.end() - 1);
     };
-    join(out.points, a.points, b.points);
-    join(out.depth, a.depth, b.depth);
-    join(out.strength, a.strength, b.strength);
-    join(out.width, a.width, b.width);
-    join(out.color, a.color, b.color);
-    join(out.world, a.world, b.world);
+    for_each_point_attribute(join, out, a, b);
+    // u stays increasing, as rotated() keeps it: b's points come after the loop's end.
+    if (!out.u.empty()) {
+        const float lap = open.u.back() - open.u.front();
+        for (size_t i = a.u.size() - 1; i < out.u.size(); ++i) out.u[i] += lap;
+    }
     return out;
 }
 

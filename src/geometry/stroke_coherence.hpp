@@ -36,11 +36,11 @@ void parameterise_paths(std::vector<LinePath>& paths, const std::vector<LinePath
                         const ProjectPoint& project, const CoherenceOptions& options = {});
 
 // The path with its points in the reverse order (closed: starting at the same point), every
-// per-point attribute with them; u is dropped.
+// per-point attribute with them but u, which is dropped: it must increase along a path.
 LinePath reversed(const LinePath& path);
 
 // A closed path starting at arc length s (a point inserted there unless it is a vertex), still
-// closed; attributes interpolated.
+// closed; attributes interpolated, u (when set) kept increasing as rotated() keeps it.
 LinePath rotated_at(const LinePath& path, double s);
 
 }  // namespace inkshade::geometry

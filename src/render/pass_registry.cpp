@@ -1,16 +1,20 @@
 // The registry of pass types: each registers itself from its own file (PassRegistration).
-#include <algorithm>
-#include <deque>
 #include <stdexcept>
 
+#include "core/registry.hpp"
 #include "render/pass.hpp"
 
 namespace inkshade::render {
 
 namespace {
 
-std::deque<PassType>& registry() {  // a deque: registered types never move
-    static std::deque<PassType> types;
+// By stage, then name.
+bool runs_before(const PassType& a, const PassType& b) {
+    return a.stage != b.stage ? a.stage < b.stage : a.name < b.name;
+}
+
+Registry<PassType>& registry() {
+    static Registry<PassType> types("pass", runs_before);
     return types;
 }
 
@@ -18,17 +22,9 @@ std::deque<PassType>& registry() {  // a deque: registered types never move
 
 PassRegistration::PassRegistration(PassType type) {
     if (!type.plan || !type.create) throw std::logic_error("pass " + type.name + " registered without plan or create");
-    registry().push_back(std::move(type));
+    registry().add(std::move(type));
 }
 
-std::vector<const PassType*> pass_types() {
-    std::vector<const PassType*> out;
-    for (const PassType& t : registry()) out.push_back(&t);
-    // Registration order is that of static initialisation, which differs between builds.
-    std::sort(out.begin(), out.end(), [](const PassType* a, const PassType* b) {
-        return a->stage != b->stage ? a->stage < b->stage : a->name < b->name;
-    });
-    return out;
-}
+std::vector<const PassType*> pass_types() { return registry().list(); }
 
 }  // namespace inkshade::render
