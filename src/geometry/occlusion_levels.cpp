@@ -172,7 +172,7 @@ struct RayState {
 
 }  // namespace
 
-// Counts each crossing once and lets the ray go on until the cap is reached.
+// The occlusion filter (ray_scene_impl.hpp).
 void count_crossings(const RTCFilterFunctionNArguments* args) {
     const auto* ctx = reinterpret_cast<const OcclusionContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
