@@ -1,4 +1,4 @@
-// tiny_gltf.h as gltf_reader.cpp compiles it (TINYGLTF_IMPLEMENTATION there): images decoded
+// tiny_gltf.h as gltf_container.cpp compiles it (TINYGLTF_IMPLEMENTATION there): images decoded
 // by texture_image.cpp, never written, external files opened by the reader's callbacks, no
 // wordexp() path expansion. The other glTF files include this for the declarations, so every
 // translation unit sees the same configuration.

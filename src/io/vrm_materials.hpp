@@ -2,7 +2,7 @@
 // VRMC_materials_mtoon with the glTF material's own emissive and normal map, and VRM 0.x's
 // extensions.VRM.materialProperties ported to MToon 1.0 the way three-vrm's
 // VRMMaterialsV0CompatPlugin does. Values only: textures come back as glTF texture indices,
-// which the glTF reader decodes (gltf_reader.cpp's MaterialTable).
+// which the glTF reader decodes (gltf_materials.cpp's GltfMaterialTable).
 #pragma once
 #include <map>
 #include <string>

@@ -1,5 +1,6 @@
-// Style files (TOML, parsed with toml++). TOML because presets are written and tuned by
-// hand: comments, no quoting of keys, arrays for band lists.
+// Style files (TOML, parsed with toml++; text toml++ mishandles is refused first by
+// toml_prelexer.hpp). TOML because presets are written and tuned by hand: comments, no quoting
+// of keys, arrays for band lists.
 #include "inkshade/style.hpp"
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_scanner.hpp"
+#include "styles/toml_prelexer.hpp"
 
 namespace inkshade {
 
@@ -32,135 +34,6 @@ namespace {
 constexpr size_t kMaxStyleFileBytes = 1 << 20;  // style files are small; refuse anything huge
 
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
-
-// Two inputs toml++ 3.3 (Debian 12) mishandles, refused before it sees them (found by fuzzing):
-// - A non-ASCII character where toml++ tests for whitespace (after a key, inside a bare value
-//   such as a number, after a backslash in a multi-line string) goes to a generated function
-//   that reaches __builtin_unreachable for most code points: undefined behaviour. TOML allows
-//   non-ASCII characters only in strings and comments, so this walks the TOML grammar (keys,
-//   values, arrays, inline tables, table headers) far enough to know where strings are, as
-//   toml++ does: a quote inside a bare value (`0["é`) does not start one. Anything unexpected
-//   is a syntax error toml++ reports; the rest of that line may hold no non-ASCII character.
-// - A dotted key nests a table per dot, and toml++ builds and frees them recursively: a 600 KB
-//   key `a.a.a...` overflowed the stack. Keys lie on one line, so at most kMaxDotsPerLine dots
-//   per line outside strings and comments (a style's longest number list has 16).
-constexpr size_t kMaxDotsPerLine = 128;
-void check_toml_text(std::string_view text, const std::string& source) {
-    enum class Mode { Key, Value, AfterValue, Strict };  // Strict: what is left of a line after a syntax error
-    auto non_ascii = [](char c) { return static_cast<unsigned char>(c) >= 0x80; };
-    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-    auto key_char = [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-    };
-    size_t i = text.starts_with("\xEF\xBB\xBF") ? 3 : 0, line = 1, dots = 0;
-    std::vector<char> nest;  // open arrays '[' and inline tables '{'
-    Mode mode = Mode::Key;
-    bool header = false;  // inside [table] or [[array of tables]]
-    auto fail = [&](const char* where) {
-        throw InputError(source, "line " + std::to_string(line) + ": non-ASCII character " + where);
-    };
-    auto dot = [&] {
-        if (++dots > kMaxDotsPerLine)
-            throw InputError(source, "line " + std::to_string(line) + ": more than " + std::to_string(kMaxDotsPerLine) +
-                                         " dots outside strings (keys nest at most that deep)");
-    };
-    auto at = [&](size_t k, std::string_view s) { return text.substr(k, s.size()) == s; };
-    // A string starting at the quote text[i]; leaves i after it.
-    auto string = [&] {
-        const char q = text[i];
-        const bool multi_line = at(i, q == '"' ? "\"\"\"" : "'''");
-        const std::string_view end = multi_line ? text.substr(i, 3) : text.substr(i, 1);
-        for (i += end.size(); i < text.size() && !at(i, end) && (multi_line || text[i] != '\n'); ++i) {
-            if (text[i] == '\n') ++line;
-            if (q != '"' || text[i] != '\\' || i + 1 >= text.size()) continue;
-            ++i;  // an escaped character
-            if (!multi_line) continue;
-            if (non_ascii(text[i])) fail("after a backslash in a multi-line string");
-            if (blank(text[i]) || text[i] == '\n') {  // a line-ending backslash: blanks and line breaks are skipped
-                while (i < text.size() && (blank(text[i]) || text[i] == '\n')) line += text[i++] == '\n';
-                if (i < text.size() && non_ascii(text[i])) fail("after a line-ending backslash");
-                --i;
-            }
-        }
-        // The closing delimiter; a multi-line string's may have up to two more quotes.
-        for (size_t n = 0; i < text.size() && text[i] == q && n < (multi_line ? 5u : 1u); ++n) ++i;
-    };
-    auto close = [&](char open) {  // ']' or '}' closing nest.back()
-        if (nest.empty() || nest.back() != open) return Mode::Strict;
-        nest.pop_back();
-        return Mode::AfterValue;
-    };
-    while (i < text.size()) {
-        const char c = text[i];
-        if (c == '\n') {
-            ++line, ++i, dots = 0;
-            if (nest.empty() || mode == Mode::Strict) mode = nest.empty() ? Mode::Key : Mode::Value, header = false;
-            continue;
-        }
-        if (mode == Mode::Strict) {
-            if (non_ascii(c)) fail("outside a string or comment (keys and values are ASCII)");
-            if (c == '.') dot();
-            ++i;
-            continue;
-        }
-        if (blank(c)) {
-            ++i;
-        } else if (c == '#') {
-            while (i < text.size() && text[i] != '\n') ++i;
-        } else if (non_ascii(c)) {
-            fail("outside a string or comment (keys and values are ASCII)");
-        } else if (mode == Mode::Key) {
-            if (key_char(c)) {
-                while (i < text.size() && key_char(text[i])) ++i;
-            } else if (c == '"' || c == '\'') {
-                string();
-            } else if (c == '.') {
-                dot(), ++i;
-            } else if (c == '[' && nest.empty() && !header) {  // [table] or [[array of tables]]
-                header = true;
-                i += at(i, "[[") ? 2 : 1;
-            } else if (c == ']' && header) {
-                header = false;
-                i += at(i, "]]") ? 2 : 1;
-                mode = Mode::AfterValue;
-            } else if (c == '=' && !header) {
-                mode = Mode::Value, ++i;
-            } else if (c == '}') {  // {} or a trailing comma
-                mode = close('{'), ++i;
-            } else {
-                mode = Mode::Strict;
-            }
-        } else if (mode == Mode::Value) {
-            if (c == '"' || c == '\'') {
-                string();
-                mode = Mode::AfterValue;
-            } else if (c == '[' || c == '{') {
-                nest.push_back(c), ++i;
-                mode = c == '[' ? Mode::Value : Mode::Key;
-            } else if (c == ']') {  // [] or a trailing comma
-                mode = close('['), ++i;
-            } else {  // a bare value (number, date, boolean): toml++ reads it up to a terminator
-                for (; i < text.size() && !blank(text[i]) && text[i] != '\n' && text[i] != ']' && text[i] != '}' &&
-                       text[i] != ',' && text[i] != '#';
-                     ++i) {
-                    if (non_ascii(text[i])) fail("outside a string or comment (keys and values are ASCII)");
-                    if (text[i] == '.') dot();
-                }
-                mode = Mode::AfterValue;
-            }
-        } else {  // AfterValue
-            if (c == ',' && !nest.empty())
-                mode = nest.back() == '[' ? Mode::Value : Mode::Key;
-            else if (c == ']')
-                mode = close('[');
-            else if (c == '}')
-                mode = close('{');
-            else
-                mode = Mode::Strict;
-            if (mode != Mode::Strict) ++i;
-        }
-    }
-}
 
 const EmbeddedFile* embedded_preset(const std::string& name) {
     for (const auto& f : styles::embedded_style_presets())
@@ -373,23 +246,8 @@ void apply_override_unchecked(Style& style, const std::string& text) {
                      (drawn.empty() ? std::string("it draws none") : "it draws " + drawn) + ")");
 }
 
-Style parse_style_unchecked(std::string_view text, const std::string& source) {
-    if (text.size() > kMaxStyleFileBytes) throw InputError(source, "style file larger than 1 MiB");
-    check_toml_text(text, source);
-    toml::table root;
-    try {
-        root = toml::parse(text, source);
-    } catch (const toml::parse_error& e) {
-        std::string what(e.description());
-        std::replace(what.begin(), what.end(), '\n', ' ');
-        throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
-    }
-    reject_unknown_keys(root,
-                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "light",
-                         "shading", "lines"},
-                        source, "");
-    Style style;
-    style.name = stem(source);
+// The top-level keys: description, background, base-color, smooth-angle, up-axis, mesh-colors.
+void parse_top_level(const toml::table& root, const std::string& source, Style& style) {
     if (auto d = root["description"].value<std::string>()) style.description = *d;
     if (auto* n = root.get("background")) style.background = color_value(*n, source, "background");
     // A style's base colour tints only meshes without colours of their own (a preset's skin
@@ -412,7 +270,10 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         if (!use) throw InputError(source, "mesh-colors: expected true or false");
         if (!*use) style.shading.base_color_use = BaseColorUse::Only;
     }
+}
 
+// The optional [light] table.
+void parse_light(const toml::table& root, const std::string& source, Style& style) {
     if (auto* light = root["light"].as_table()) {
         reject_unknown_keys(*light, {"color", "ambient", "intensity", "decay", "distance"}, source, " in [light]");
         if (auto* n = light->get("color")) style.light_color = glm::vec3(color_value(*n, source, "light.color"));
@@ -434,7 +295,10 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
     } else if (root.contains("light")) {
         throw InputError(source, "[light] must be a table");
     }
+}
 
+// The [shading] table: the model and its parameters.
+void parse_shading(const toml::table& root, const std::string& source, Style& style) {
     auto* shading = root["shading"].as_table();
     if (!shading) throw InputError(source, "missing [shading] table with a model");
     auto model_name = (*shading)["model"].value<std::string>();
@@ -458,7 +322,10 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         }
         style.shading.params[spec->name] = param_value(*spec, node, source);
     }
+}
 
+// The optional [[lines]] tables, each line type once.
+void parse_lines(const toml::table& root, const std::string& source, Style& style) {
     if (auto* lines = root["lines"].as_array()) {
         for (const auto& entry : *lines) {
             const toml::table* table = entry.as_table();
@@ -471,6 +338,29 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
     } else if (root.contains("lines")) {
         throw InputError(source, "lines must be an array of tables ([[lines]])");
     }
+}
+
+Style parse_style_unchecked(std::string_view text, const std::string& source) {
+    if (text.size() > kMaxStyleFileBytes) throw InputError(source, "style file larger than 1 MiB");
+    styles::check_toml_text(text, source);
+    toml::table root;
+    try {
+        root = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        std::string what(e.description());
+        std::replace(what.begin(), what.end(), '\n', ' ');
+        throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
+    }
+    reject_unknown_keys(root,
+                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "light",
+                         "shading", "lines"},
+                        source, "");
+    Style style;
+    style.name = stem(source);
+    parse_top_level(root, source, style);
+    parse_light(root, source, style);
+    parse_shading(root, source, style);
+    parse_lines(root, source, style);
     return style;
 }
 
@@ -521,8 +411,7 @@ std::optional<float> light_value(const Style& style, LightValue which) {
     const char* name = light_value_param(which);
     if (shading_model(style.shading.model).param(name)) {
         auto it = style.shading.params.find(name);
-        return it != style.shading.params.end() && it->second.size() == 1 ? std::optional(it->second[0])
-                                                                          : std::nullopt;
+        return it != style.shading.params.end() && it->second.size() == 1 ? std::optional(it->second[0]) : std::nullopt;
     }
     return which == LightValue::Intensity ? style.light_intensity
            : which == LightValue::Decay   ? style.light_decay
