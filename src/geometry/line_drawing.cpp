@@ -128,7 +128,6 @@ DrawPlan plan_layers(const std::vector<LineSettings>& lines) {
 
 // What the per-view stages of one draw share.
 struct DrawView {
-    const Camera& camera;
     ImageProjection projection;
     ViewDepthRange depth_range;
     std::vector<LineTiming>* timings;
@@ -364,8 +363,8 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         return drawing;
     }
     Impl& m = *impl_;
-    const DrawView view{camera, ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth),
-                        timings, sequence};
+    const DrawView view{ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth), timings,
+                        sequence};
     m.prepare(plan.mesh, timings);
     const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, timings);
     const EdgeNeighbours around = m.fold_surroundings(plan, segments, timings);
