@@ -1,16 +1,25 @@
-// LineExtractor: per view, for each object-space line type of the style: extract segments
-// (world space) → split by visibility (ray casting, visibility.hpp) → chain into polylines →
-// project to image pixels → drop short chains and smooth (in pixels) → stylised strokes (split,
-// widths and colours, sketchy passes, dashes; stroke_style.hpp) → one layer.
+// LineExtractor: per view, the object-space layers of a style drawn in named stages, each timed
+// on its own (LineTiming, stage_timer.hpp):
+//   plan        check every layer, then compute the mesh-wide data their types declare they need
+//               (LineTypeNeeds → MeshLineData::prepare; reported per computation) and the ray scene
+//   extract     each layer's segments (world space) from its type's extractor
+//   visibility  split by visibility (ray casting, visibility.hpp), per occlusion level
+//   chain       chain into polylines per level drawn
+//   finish      project to image pixels, drop short chains and smooth (in pixels), then stylised
+//               strokes (split, widths and colours, sketchy passes, dashes; stroke_style.hpp)
+//   coherence   in a sequence, the stroke parameter from the previous frame and the record of
+//               this frame's chains for the next (stroke_coherence.hpp)
+// No type is named here: what differs between types is declared at their registration.
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <optional>
+#include <utility>
 
 #include "geometry/chaining.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
 #include "geometry/path_arc_length.hpp"
+#include "geometry/stage_timer.hpp"
 #include "geometry/stroke_coherence.hpp"
 #include "geometry/stroke_style.hpp"
 #include "geometry/suggestive_contours.hpp"
@@ -22,58 +31,7 @@ namespace inkshade {
 
 using namespace geometry;
 
-struct LineExtractor::Impl {
-    MeshLineData data;
-    std::unique_ptr<RayScene> scene;    // built on the first draw (timed there)
-    std::optional<BoundingBox> bounds;  // the depth range of the stroke modifiers, on first use
-    explicit Impl(const Mesh& mesh) : data(mesh) {}
-    explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
-    explicit Impl(std::shared_ptr<const Mesh> mesh) : data(std::move(mesh)) {}
-};
-
-LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
-LineExtractor::LineExtractor(Mesh&& mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
-LineExtractor::LineExtractor(std::shared_ptr<const Mesh> mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
-LineExtractor::~LineExtractor() = default;
-
-void LineExtractor::release_mesh_data() {
-    impl_->scene.reset();  // it reads the mesh, not the derived data: either order works
-    impl_->data.release_derived();
-}
-
-std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
-    MeshLineData& d = impl_->data;
-    return geometry::radial_curvature(d.mesh(), d.normals(), d.curvature(), camera).kr;
-}
-
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Sums milliseconds per stage over the line types, stages in first-seen order.
-class StageTimer {
-public:
-    explicit StageTimer(std::vector<LineTiming>* out) : out_(out) {}
-    template <class F>
-    auto operator()(const std::string& stage, F&& f) {
-        const auto start = Clock::now();
-        auto result = f();
-        add(stage, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        return result;
-    }
-    void add(const std::string& stage, double ms) {
-        if (!out_) return;
-        for (auto& t : *out_)
-            if (t.stage == stage) {
-                t.milliseconds += ms;
-                return;
-            }
-        out_->push_back({stage, ms});
-    }
-
-private:
-    std::vector<LineTiming>* out_;
-};
 
 // World polylines → image paths; drops those shorter than min_length px, then smooths. With
 // `keep_world` each path keeps the world points it was projected from (LinePath::world).
@@ -129,179 +87,293 @@ LevelRange drawn_levels(const LineSettings& settings) {
     return r;
 }
 
-}  // namespace
+// One object-space layer of a drawing, checked before any work.
+struct PlannedLayer {
+    const LineSettings* settings = nullptr;
+    const ObjectLineType* type = nullptr;
+    LevelRange levels;
+    StrokeModifiers modifiers;
+};
 
-LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
-                                std::vector<LineTiming>* timings, StrokeSequence* sequence) {
-    if (width < 1 || height < 1 || width > 16384 || height > 16384)
-        throw InputError("line drawing size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
-                         std::to_string(height));
-    if (timings) timings->clear();
-    StageTimer timer(timings);
-    LineDrawing drawing;
-    drawing.width = width;
-    drawing.height = height;
+// The layers of a drawing and what they need, from their types' declared needs.
+struct DrawPlan {
+    std::vector<PlannedLayer> layers;
+    MeshLineNeeds mesh;        // for MeshLineData::prepare
+    bool reads_depth = false;  // some layer's stroke modifiers read the view's depth range
+};
 
-    // Validate every entry before any work, so bad input fails fast.
-    std::vector<const LineSettings*> object_lines;
+// Stage "plan", first half: every layer checked before any work, so bad input fails fast
+// (InputError for an unknown type, inverted levels or a stroke parameter out of bounds).
+DrawPlan plan_layers(const std::vector<LineSettings>& lines) {
+    DrawPlan plan;
     for (const LineSettings& settings : lines) {
         const LineType& type = line_type(settings.type);  // InputError when unknown
         if (type.space != LineSpace::Object) continue;
-        if (!object_line_extractor(type.name))
-            throw InputError("line type '" + type.name + "' has no object-space extractor");
-        object_lines.push_back(&settings);
+        const ObjectLineType* object = object_line_type(type.name);
+        if (!object) throw InputError("line type '" + type.name + "' has no object-space extractor");
+        plan.layers.push_back({.settings = &settings, .type = object, .levels = {}, .modifiers = {}});
     }
-    if (object_lines.empty()) {
-        if (sequence) *sequence = StrokeSequence{{}, camera, width, height};
-        return drawing;
+    for (PlannedLayer& layer : plan.layers) {
+        layer.levels = drawn_levels(*layer.settings);
+        layer.modifiers = StrokeModifiers::of(*layer.settings);
+        plan.reads_depth |= layer.modifiers.reads_depth();
+        const LineTypeNeeds& needs = layer.type->needs;
+        plan.mesh.adjacency |= needs.adjacency || needs.creases;
+        plan.mesh.curvature |= needs.curvature;
+        if (needs.creases) plan.mesh.crease_angle = line_number(*layer.settings, "angle");
+        plan.mesh.intersections |= needs.intersections;
     }
-    // InputError when the levels are inverted or a stroke parameter is out of bounds.
-    std::vector<StrokeModifiers> modifiers;
-    for (const LineSettings* settings : object_lines) {
-        drawn_levels(*settings);
-        modifiers.push_back(StrokeModifiers::of(*settings));
-    }
+    return plan;
+}
 
-    Impl& m = *impl_;
-    const ImageProjection view(camera, width, height);
+// What the per-view stages of one draw share.
+struct DrawView {
+    ImageProjection projection;
     ViewDepthRange depth_range;
-    if (std::any_of(modifiers.begin(), modifiers.end(), [](const StrokeModifiers& s) { return s.reads_depth(); })) {
-        if (!m.bounds) m.bounds = m.data.mesh().bounds();
-        depth_range = ViewDepthRange::of_sphere(camera, m.bounds->center(), 0.5f * m.bounds->diagonal());
-    }
+    std::vector<LineTiming>* timings;
+    const StrokeSequence* sequence;  // the previous frame; null outside a sequence
+};
 
-    MeshLineNeeds needs;
-    for (const LineSettings* settings : object_lines) {
-        const MeshLineNeeds n = object_line_needs(settings->type);
-        needs.adjacency |= n.adjacency;
-        needs.curvature |= n.curvature;
-        if (settings->type == "crease") needs.crease_angle = line_number(*settings, "angle");
-        needs.intersections |= settings->type == "intersection";
-    }
-    // The ray scene (first view only) is built beside the curvature threads, after the
-    // adjacency's serial sort and the crease classification (which drops a large adjacency):
-    // the BVH and a 10 M-triangle adjacency are never held at once.
-    double scene_ms = 0.0;
-    m.data.prepare(needs, [&] {
-        if (m.scene) return;
-        const auto start = Clock::now();
-        m.scene = std::make_unique<RayScene>(m.data.mesh());
-        scene_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    });
-    for (const auto& [stage, ms] : m.data.take_setup_timings()) timer.add(stage, ms);
-    if (scene_ms > 0.0) timer.add("ray scene", scene_ms);
+// Chains per occlusion level drawn, and the same in image pixels.
+using LevelChains = std::vector<std::pair<int, std::vector<Polyline>>>;
+using LevelPaths = std::vector<std::pair<int, std::vector<LinePath>>>;
 
-    std::vector<std::vector<LineSegment>> segments_per_type;
-    for (const LineSettings* settings : object_lines) {
-        const ExtractLineSegments extract = object_line_extractor(settings->type);
-        const auto start = Clock::now();
-        segments_per_type.push_back(extract(m.data, camera, *settings));
-        double extract_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        // Lazy mesh-wide work done inside extract() (curvature, adjacency) is reported on its
-        // own stage, not as per-view extraction.
-        for (const auto& [stage, ms] : m.data.take_setup_timings()) {
-            timer.add(stage, ms);
-            extract_ms -= ms;
-        }
-        timer.add("extract", extract_ms);
+// Stage "chain": the layer's visible and hidden segments chained per level drawn (a change of
+// level ends a chain).
+LevelChains chain_levels(const VisibilitySplit& split, LevelRange levels, std::vector<LineTiming>* timings) {
+    StageTimer timer(timings, "chain");
+    LevelChains out;
+    if (levels.min == 0) out.emplace_back(0, chain_segments(split.visible));
+    std::map<int, std::vector<LineSegment>> by_level;
+    for (size_t k = 0; k < split.hidden.size(); ++k) {
+        const int level = split.hidden_levels[k];
+        if (level >= levels.min && level <= levels.max) by_level[level].push_back(split.hidden[k]);
     }
+    for (const auto& [level, parts] : by_level) out.emplace_back(level, chain_segments(parts));
+    return out;
+}
 
-    // The faces around the contours, where the fold walks of their visibility test go
-    // (RayScene::occlusion_levels), gathered once per view for every contour list.
-    const EdgeNeighbours around = timer("visibility", [&] {
-        std::vector<const std::vector<LineSegment>*> contours;
-        for (size_t i = 0; i < object_lines.size(); ++i)
-            if (object_lines[i]->type == "contour") contours.push_back(&segments_per_type[i]);
-        return contours.empty() ? EdgeNeighbours() : contour_surroundings(m.data.mesh(), contours);
-    });
-    StrokeSequence next{{}, camera, width, height};
-    const ProjectPoint project = [&view](const glm::vec3& p) {
-        const glm::dvec3 q = view.project(p);
+// Stage "finish", first half: the chains in image pixels, short ones dropped, smoothed; in a
+// sequence they keep their surface points for the coherence stage.
+LevelPaths image_paths(const LevelChains& chained, const LineSettings& settings, const DrawView& v) {
+    StageTimer timer(v.timings, "finish");
+    const float min_length = line_number(settings, "min-length");
+    const int smooth = int(line_number(settings, "smooth"));
+    LevelPaths out;
+    for (const auto& [level, polylines] : chained) {
+        std::vector<LinePath> chains = to_image(polylines, v.projection, min_length, smooth, v.sequence != nullptr);
+        for (LinePath& p : chains) p.level = level;
+        out.emplace_back(level, std::move(chains));
+    }
+    return out;
+}
+
+// The layer's strokes as the previous frame left them: the index-th layer when it is of this
+// type, else the first of this type.
+const std::vector<LinePath>* previous_paths(const StrokeSequence& sequence, size_t index, const std::string& type) {
+    const auto& layers = sequence.layers;
+    if (index < layers.size() && layers[index].type == type) return &layers[index].paths;
+    for (const ParameterisedLayer& layer : layers)
+        if (layer.type == type) return &layer.paths;
+    return nullptr;
+}
+
+// What the next frame matches of a chain: its points and surface points with u (its arc length
+// when the layer is not coherent, so the drift of its marks can be measured too).
+LinePath matched_chain(const LinePath& p, bool coherent) {
+    LinePath kept;
+    kept.points = p.points;
+    kept.world = p.world;
+    kept.closed = p.closed;
+    kept.level = p.level;
+    if (coherent) {
+        kept.u = p.u;
+    } else {
+        const std::vector<double> s = arc_lengths(p);
+        kept.u.assign(s.begin(), s.begin() + long(p.points.size()));
+    }
+    return kept;
+}
+
+// Stage "coherence" (a sequence's frames): a `coherence` layer's chains take their stroke
+// parameter from the previous frame's (Kalnins et al. 2003); every layer's chains are recorded
+// for the next frame.
+ParameterisedLayer cohere(LevelPaths& levels, const LineSettings& settings, size_t index, const DrawView& v) {
+    StageTimer timer(v.timings, "coherence");
+    const std::vector<LinePath>* previous = previous_paths(*v.sequence, index, settings.type);
+    const bool coherent = line_number(settings, "coherence") != 0.0f;
+    // Kalnins' propagation by the surface (the previous frame's points projected with this
+    // camera), or the previous frame's image points as they are.
+    const bool by_surface = line_number(settings, "coherence-by") == 0.0f;
+    const ImageProjection& projection = v.projection;
+    const ProjectPoint project = [&projection](const glm::vec3& p) {
+        const glm::dvec3 q = projection.project(p);
         return glm::vec2(float(q.x), float(q.y));
     };
-    for (size_t i = 0; i < object_lines.size(); ++i) {
-        const LineSettings* settings = object_lines[i];
-        const std::vector<LineSegment>& segments = segments_per_type[i];
-        const LevelRange levels = drawn_levels(*settings);
-        VisibilityOptions options;
-        options.count_levels_to = std::min(levels.max + 1, kMaxOcclusionLevel);
-        options.contour = settings->type == "contour";
-        options.min_length_px = line_number(*settings, "min-length");
-        const VisibilitySplit split = timer("visibility", [&] {
-            return split_by_visibility(*m.scene, m.data.mesh(), view, segments, options, &around);
-        });
-        // Chains per level: a change of level ends a chain.
-        auto chained = timer("chain", [&] {
-            std::vector<std::pair<int, std::vector<Polyline>>> out;
-            if (levels.min == 0) out.emplace_back(0, chain_segments(split.visible));
-            std::map<int, std::vector<LineSegment>> by_level;
-            for (size_t k = 0; k < split.hidden.size(); ++k) {
-                const int level = split.hidden_levels[k];
-                if (level >= levels.min && level <= levels.max) by_level[level].push_back(split.hidden[k]);
-            }
-            for (const auto& [level, parts] : by_level) out.emplace_back(level, chain_segments(parts));
-            return out;
-        });
-        LineLayer layer;
-        layer.settings = *settings;
-        // A sequence's frame: the layer's strokes as the previous frame left them (the i-th
-        // layer when it is of this type, else the first of this type).
-        const std::vector<LinePath>* previous = nullptr;
-        if (sequence) {
-            const auto& layers = sequence->layers;
-            if (i < layers.size() && layers[i].type == settings->type) previous = &layers[i].paths;
-            for (size_t k = 0; k < layers.size() && !previous; ++k)
-                if (layers[k].type == settings->type) previous = &layers[k].paths;
-        }
-        const bool coherent = sequence && line_number(*settings, "coherence") != 0.0f;
-        // Kalnins' propagation by the surface (the previous frame's points projected with this
-        // camera), or the previous frame's image points as they are.
-        const bool by_surface = line_number(*settings, "coherence-by") == 0.0f;
-        ParameterisedLayer record{settings->type, {}};
-        double coherence_ms = 0.0;
-        timer("finish", [&] {
-            const float min_length = line_number(*settings, "min-length");
-            const int smooth = int(line_number(*settings, "smooth"));
-            for (const auto& [level, polylines] : chained) {
-                std::vector<LinePath> chains = to_image(polylines, view, min_length, smooth, sequence != nullptr);
-                for (LinePath& p : chains) p.level = level;
-                if (sequence) {
-                    const auto start = Clock::now();
-                    if (coherent)
-                        parameterise_paths(chains, previous ? *previous : std::vector<LinePath>{},
-                                           by_surface ? project : ProjectPoint());
-                    // What the next frame matches: the chains with u (their arc length when the
-                    // layer is not coherent, so the drift of its marks can be measured too).
-                    for (const LinePath& p : chains) {
-                        LinePath kept;
-                        kept.points = p.points;
-                        kept.world = p.world;
-                        kept.closed = p.closed;
-                        kept.level = p.level;
-                        if (coherent) {
-                            kept.u = p.u;
-                        } else {
-                            const std::vector<double> s = arc_lengths(p);
-                            kept.u.assign(s.begin(), s.begin() + long(p.points.size()));
-                        }
-                        record.paths.push_back(std::move(kept));
-                    }
-                    coherence_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-                }
-                for (LinePath& p : chains) p.world.clear();
-                std::vector<LinePath> paths =
-                    style_strokes(std::move(chains), modifiers[i], depth_range, uint32_t(i * 256 + size_t(level)));
-                auto& into = level == 0 ? layer.visible : layer.hidden;
-                into.insert(into.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
-            }
-            return 0;
-        });
-        if (sequence) {  // reported on its own stage, not as finishing
-            timer.add("finish", -coherence_ms);
-            timer.add("coherence", coherence_ms);
-        }
-        drawing.layers.push_back(std::move(layer));
-        if (sequence) next.layers.push_back(std::move(record));
+    static const std::vector<LinePath> none;  // the first frame's, or a new layer's
+    ParameterisedLayer record{settings.type, {}};
+    for (auto& [level, chains] : levels) {
+        if (coherent) parameterise_paths(chains, previous ? *previous : none, by_surface ? project : ProjectPoint());
+        for (const LinePath& p : chains) record.paths.push_back(matched_chain(p, coherent));
+    }
+    return record;
+}
+
+// Stage "finish", second half: each level's chains as styled strokes, level 0 in the layer's
+// visible paths, the others in its hidden ones.
+LineLayer styled_layer(LevelPaths levels, const PlannedLayer& layer, size_t index, const DrawView& v) {
+    StageTimer timer(v.timings, "finish");
+    LineLayer out;
+    out.settings = *layer.settings;
+    for (auto& [level, chains] : levels) {
+        for (LinePath& p : chains) p.world.clear();
+        std::vector<LinePath> paths =
+            style_strokes(std::move(chains), layer.modifiers, v.depth_range, uint32_t(index * 256 + size_t(level)));
+        auto& into = level == 0 ? out.visible : out.hidden;
+        into.insert(into.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
+    }
+    return out;
+}
+
+void check_size(int width, int height) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        throw InputError("line drawing size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
+                         std::to_string(height));
+}
+
+}  // namespace
+
+struct LineExtractor::Impl {
+    MeshLineData data;
+    std::unique_ptr<RayScene> scene;    // built on the first draw (timed there)
+    std::optional<BoundingBox> bounds;  // the depth range of the stroke modifiers, on first use
+    explicit Impl(const Mesh& mesh) : data(mesh) {}
+    explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
+    explicit Impl(std::shared_ptr<const Mesh> mesh) : data(std::move(mesh)) {}
+
+    ViewDepthRange depth_range(const Camera& camera, bool reads_depth);
+    double report_setup(std::vector<LineTiming>* timings);
+    void prepare(const MeshLineNeeds& needs, std::vector<LineTiming>* timings);
+    std::vector<std::vector<LineSegment>> extract(const DrawPlan& plan, const Camera& camera,
+                                                  std::vector<LineTiming>* timings);
+    EdgeNeighbours fold_surroundings(const DrawPlan& plan, const std::vector<std::vector<LineSegment>>& segments,
+                                     std::vector<LineTiming>* timings);
+    VisibilitySplit visibility(const PlannedLayer& layer, const std::vector<LineSegment>& segments,
+                               const EdgeNeighbours& around, const DrawView& v);
+};
+
+ViewDepthRange LineExtractor::Impl::depth_range(const Camera& camera, bool reads_depth) {
+    if (!reads_depth) return {};
+    if (!bounds) bounds = data.mesh().bounds();
+    return ViewDepthRange::of_sphere(camera, bounds->center(), 0.5f * bounds->diagonal());
+}
+
+// The lazy mesh-wide work since the last call, each computation on its own stage; returns its
+// milliseconds.
+double LineExtractor::Impl::report_setup(std::vector<LineTiming>* timings) {
+    double total = 0.0;
+    for (const auto& [stage, ms] : data.take_setup_timings()) {
+        add_timing(timings, stage, ms);
+        total += ms;
+    }
+    return total;
+}
+
+// Stage "plan", second half: what the layers need and is not cached yet, and the ray scene.
+void LineExtractor::Impl::prepare(const MeshLineNeeds& needs, std::vector<LineTiming>* timings) {
+    // The ray scene (first view only) is built beside the curvature threads, after the
+    // adjacency's serial sort and the crease classification (which drops a large adjacency):
+    // the BVH and a 10 M-triangle adjacency are never held at once. Reported after the rest.
+    std::vector<LineTiming> scene_timing;
+    data.prepare(needs, [&] {
+        if (scene) return;
+        StageTimer timer(&scene_timing, "ray scene");
+        scene = std::make_unique<RayScene>(data.mesh());
+    });
+    report_setup(timings);
+    for (const LineTiming& t : scene_timing) add_timing(timings, t.stage, t.milliseconds);
+}
+
+// Stage "extract": each layer's segments from its type's extractor.
+std::vector<std::vector<LineSegment>> LineExtractor::Impl::extract(const DrawPlan& plan, const Camera& camera,
+                                                                   std::vector<LineTiming>* timings) {
+    std::vector<std::vector<LineSegment>> segments;
+    segments.reserve(plan.layers.size());
+    for (const PlannedLayer& layer : plan.layers) {
+        StageTimer timer(timings, "extract");
+        segments.push_back(layer.type->extract(data, camera, *layer.settings));
+        // Lazy mesh-wide work done inside (curvature, ridges, hatching) is reported on its own
+        // stage, not as per-view extraction.
+        timer.exclude(report_setup(timings));
+    }
+    return segments;
+}
+
+// Stage "visibility", once per view: the faces around the segments of every layer whose type
+// declares contour_folds, where the fold walks of their visibility test go
+// (RayScene::occlusion_levels), gathered in one scan for all of them.
+EdgeNeighbours LineExtractor::Impl::fold_surroundings(const DrawPlan& plan,
+                                                      const std::vector<std::vector<LineSegment>>& segments,
+                                                      std::vector<LineTiming>* timings) {
+    StageTimer timer(timings, "visibility");
+    std::vector<const std::vector<LineSegment>*> contours;
+    for (size_t i = 0; i < plan.layers.size(); ++i)
+        if (plan.layers[i].type->needs.contour_folds) contours.push_back(&segments[i]);
+    return contours.empty() ? EdgeNeighbours() : contour_surroundings(data.mesh(), contours);
+}
+
+// Stage "visibility", per layer: its segments split into visible and hidden parts with their
+// occlusion levels, counted as deep as the layer draws.
+VisibilitySplit LineExtractor::Impl::visibility(const PlannedLayer& layer, const std::vector<LineSegment>& segments,
+                                                const EdgeNeighbours& around, const DrawView& v) {
+    StageTimer timer(v.timings, "visibility");
+    VisibilityOptions options;
+    options.count_levels_to = std::min(layer.levels.max + 1, kMaxOcclusionLevel);
+    options.contour = layer.type->needs.contour_folds;
+    options.min_length_px = line_number(*layer.settings, "min-length");
+    return split_by_visibility(*scene, data.mesh(), v.projection, segments, options, &around);
+}
+
+LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
+LineExtractor::LineExtractor(Mesh&& mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
+LineExtractor::LineExtractor(std::shared_ptr<const Mesh> mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
+LineExtractor::~LineExtractor() = default;
+
+void LineExtractor::release_mesh_data() {
+    impl_->scene.reset();  // it reads the mesh, not the derived data: either order works
+    impl_->data.release_derived();
+}
+
+std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
+    MeshLineData& d = impl_->data;
+    return geometry::radial_curvature(d.mesh(), d.normals(), d.curvature(), camera).kr;
+}
+
+LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
+                                std::vector<LineTiming>* timings, StrokeSequence* sequence) {
+    check_size(width, height);
+    if (timings) timings->clear();
+    const DrawPlan plan = plan_layers(lines);
+    LineDrawing drawing;
+    drawing.width = width;
+    drawing.height = height;
+    StrokeSequence next{{}, camera, width, height};
+    if (plan.layers.empty()) {
+        if (sequence) *sequence = std::move(next);
+        return drawing;
+    }
+    Impl& m = *impl_;
+    const DrawView view{ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth), timings,
+                        sequence};
+    m.prepare(plan.mesh, timings);
+    const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, timings);
+    const EdgeNeighbours around = m.fold_surroundings(plan, segments, timings);
+    for (size_t i = 0; i < plan.layers.size(); ++i) {
+        const PlannedLayer& layer = plan.layers[i];
+        const VisibilitySplit split = m.visibility(layer, segments[i], around, view);
+        LevelPaths paths = image_paths(chain_levels(split, layer.levels, timings), *layer.settings, view);
+        if (sequence) next.layers.push_back(cohere(paths, *layer.settings, i, view));
+        drawing.layers.push_back(styled_layer(std::move(paths), layer, i, view));
     }
     if (sequence) *sequence = std::move(next);
     return drawing;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/builtin_models.hpp"
@@ -161,6 +162,28 @@ TEST(LineDrawing, RepeatedDrawsAreIdenticalAndReportTimings) {
     EXPECT_TRUE(has(first, "ray scene"));    // built once per mesh ...
     EXPECT_FALSE(has(second, "ray scene"));  // ... and kept
     for (const char* stage : {"extract", "visibility", "chain", "finish"}) EXPECT_TRUE(has(second, stage)) << stage;
+}
+
+// The stages in the order --timing prints them: the mesh-wide work first (its own stages), then
+// per view extract, visibility, chain, finish and, in a sequence, coherence.
+TEST(LineDrawing, TimingStagesComeInPipelineOrder) {
+    const Mesh torus = builtin::torus();
+    LineExtractor extractor(torus);
+    const Camera camera = looking_at_origin({1.0f, -3.0f, 2.0f}, false);
+    const std::vector<LineSettings> lines{{"contour", {{"coherence", {1.0f}}}}, {"crease", {}}, {"suggestive", {}}};
+    StrokeSequence sequence;
+    std::vector<LineTiming> first, second;
+    extractor.draw(camera, kWidth, kHeight, lines, &first, &sequence);
+    extractor.draw(camera, kWidth, kHeight, lines, &second, &sequence);
+    std::vector<std::string> stages;
+    for (const LineTiming& t : second) stages.push_back(t.stage);
+    EXPECT_EQ(stages, (std::vector<std::string>{"extract", "visibility", "chain", "finish", "coherence"}));
+    std::vector<std::string> once;
+    for (const LineTiming& t : first) once.push_back(t.stage);
+    ASSERT_GE(once.size(), 5u);
+    EXPECT_EQ(std::vector<std::string>(once.end() - 5, once.end()), stages);
+    for (const char* stage : {"curvature", "adjacency", "creases", "ray scene"})
+        EXPECT_NE(std::find(once.begin(), once.end() - 5, stage), once.end() - 5) << stage;
 }
 
 TEST(LineDrawing, BadSizeAndUnknownTypeAreInputErrors) {

@@ -34,7 +34,8 @@ const ObjectLineRegistration registration{
                      "also draw whole mesh edges between a front- and a back-facing face (the "
                      "polygon silhouette, not interpolated: jagged on coarse meshes but exactly the polygon outline)")},
          1.0f)},
-    extract};
+    extract,
+    {.contour_folds = true}};
 
 }  // namespace
 

@@ -25,7 +25,7 @@ const ObjectLineRegistration registration{
                       "trimesh2's sharp-edge angle, above the facets of a tessellated curved surface)")},
          0.0f)},
     extract,
-    {.adjacency = true}};
+    {.creases = true}};
 
 }  // namespace
 

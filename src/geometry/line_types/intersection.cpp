@@ -15,7 +15,8 @@ const ObjectLineRegistration registration{
     {.name = "intersection",
      .summary = "intersections: where two surfaces of the mesh cross (parts of an assembly, self-intersections)",
      .params = object_line_params(glm::vec3(0.0f), 1.0f, {}, 0.0f)},
-    extract};
+    extract,
+    {.intersections = true}};
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "geometry/line_types/object_line_registry.hpp"
 
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "geometry/brush_names.hpp"
@@ -10,49 +11,14 @@ namespace inkshade::geometry {
 
 namespace {
 
-struct Registered {
-    ExtractLineSegments extract = nullptr;
-    MeshLineNeeds needs;
-};
-
-std::map<std::string, Registered>& extractors() {
-    static std::map<std::string, Registered> map;
+std::map<std::string, ObjectLineType>& registered() {
+    static std::map<std::string, ObjectLineType> map;
     return map;
 }
 
-}  // namespace
-
-ObjectLineRegistration::ObjectLineRegistration(LineType type, ExtractLineSegments extract, MeshLineNeeds needs) {
-    type.space = LineSpace::Object;
-    extractors()[type.name] = {extract, needs};
-    LineTypeRegistration{std::move(type)};
-}
-
-ExtractLineSegments object_line_extractor(const std::string& type_name) {
-    auto it = extractors().find(type_name);
-    return it == extractors().end() ? nullptr : it->second.extract;
-}
-
-MeshLineNeeds object_line_needs(const std::string& type_name) {
-    auto it = extractors().find(type_name);
-    return it == extractors().end() ? MeshLineNeeds{} : it->second.needs;
-}
-
-std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::vector<ParamSpec> own,
-                                          float min_length_px) {
-    std::vector<ParamSpec> params = stroke_params(color, width_px);
-    for (auto& p : own) params.push_back(std::move(p));
-    params.push_back(float_param("min-length", min_length_px, 0.0f, 10000.0f,
-                                 "drop polylines shorter than this many pixels (after hidden-line removal): the "
-                                 "specks curvature noise leaves (DeCarlo et al. 2003 §4 discard short pieces)"));
-    params.push_back(int_param("smooth", 0, 0, 100,
-                               "Laplacian smoothing iterations in the image (weight 0.5, ends fixed); 0 keeps the "
-                               "exact interpolated points"));
-    params.push_back(bool_param("taper", false,
-                                "line strength (fading, e.g. suggestive contours near their trim point) scales "
-                                "the stroke width instead of its opacity"));
-    // Stylised strokes (docs/lines.md): thickness along a stroke, colour, caps and joins,
-    // chain splitting, sketchy passes and dashes; every default leaves the stroke as it was.
+// Stylised strokes (docs/lines.md): thickness along a stroke and colour; every default leaves
+// the stroke as it was.
+void add_thickness_and_color_params(std::vector<ParamSpec>& params) {
     params.push_back(
         float_param("taper-in", 0.0f, 0.0f, 100000.0f,
                     "the width grows from 0 at a stroke's start to full over this many pixels (Freestyle's "
@@ -87,6 +53,11 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
                                   "blend the colour towards color-end by depth (near → far over the model) or "
                                   "along the stroke (start → end)"));
     params.push_back(color_param("color-end", glm::vec3(0.0f), "the far (or end) colour of color-along"));
+}
+
+// Stylised strokes: caps and joins, dashes and brush, their coherence over frames, chain
+// splitting and sketchy passes; every default leaves the stroke as it was.
+void add_pattern_params(std::vector<ParamSpec>& params) {
     params.push_back(choice_param("cap", {"butt", "round", "square"}, 1, "the shape of a stroke's ends"));
     params.push_back(choice_param("join", {"miter", "round", "bevel"}, 1,
                                   "the shape of a stroke's corners (SVG; GPU strokes join round)"));
@@ -116,6 +87,10 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
         int_param("sketch-passes", 1, 1, 8, "draw each stroke this many times, each pass displaced by sketch-jitter"));
     params.push_back(float_param("sketch-jitter", 0.0f, 0.0f, 100.0f,
                                  "the largest displacement in pixels of a sketch pass's points (smooth seeded noise)"));
+}
+
+// The occlusion levels drawn.
+void add_level_params(std::vector<ParamSpec>& params) {
     params.push_back(int_param("min-level", 0, 0, kMaxOcclusionLevel,
                                "lowest occlusion level drawn: how many surfaces lie in front of a line (0 = "
                                "visible; quantitative invisibility, Appel 1967)"));
@@ -125,6 +100,39 @@ std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::
     params.push_back(bool_param("hidden", false,
                                 "also output every hidden level, as dashed layers TYPE-hidden-N (technical "
                                 "drawing convention; every max-level)"));
+}
+
+}  // namespace
+
+ObjectLineRegistration::ObjectLineRegistration(LineType type, ExtractLineSegments extract, LineTypeNeeds needs) {
+    if (needs.creases && !type.param("angle"))
+        throw std::logic_error("line type " + type.name + " needs creases but has no angle parameter");
+    type.space = LineSpace::Object;
+    registered()[type.name] = {extract, needs};
+    LineTypeRegistration{std::move(type)};
+}
+
+const ObjectLineType* object_line_type(const std::string& type_name) {
+    auto it = registered().find(type_name);
+    return it == registered().end() ? nullptr : &it->second;
+}
+
+std::vector<ParamSpec> object_line_params(glm::vec3 color, float width_px, std::vector<ParamSpec> own,
+                                          float min_length_px) {
+    std::vector<ParamSpec> params = stroke_params(color, width_px);
+    for (auto& p : own) params.push_back(std::move(p));
+    params.push_back(float_param("min-length", min_length_px, 0.0f, 10000.0f,
+                                 "drop polylines shorter than this many pixels (after hidden-line removal): the "
+                                 "specks curvature noise leaves (DeCarlo et al. 2003 §4 discard short pieces)"));
+    params.push_back(int_param("smooth", 0, 0, 100,
+                               "Laplacian smoothing iterations in the image (weight 0.5, ends fixed); 0 keeps the "
+                               "exact interpolated points"));
+    params.push_back(bool_param("taper", false,
+                                "line strength (fading, e.g. suggestive contours near their trim point) scales "
+                                "the stroke width instead of its opacity"));
+    add_thickness_and_color_params(params);
+    add_pattern_params(params);
+    add_level_params(params);
     return params;
 }
 

@@ -17,16 +17,35 @@ namespace inkshade::geometry {
 using ExtractLineSegments = std::vector<LineSegment> (*)(MeshLineData& data, const Camera& camera,
                                                          const LineSettings& settings);
 
-struct ObjectLineRegistration {
-    // `needs`: the mesh-wide data extract() reads, so LineExtractor can compute what a drawing
-    // needs up front and concurrently (MeshLineData::prepare).
-    ObjectLineRegistration(LineType type, ExtractLineSegments extract, MeshLineNeeds needs = {});
+// What a type reads or asks of the drawing besides the mesh's positions and normals, declared at
+// its registration: LineExtractor plans a drawing's mesh-wide work from the needs of its layers
+// (computed up front and concurrently, MeshLineData::prepare) and names no type.
+struct LineTypeNeeds {
+    // Edge adjacency; crease classification comes with it (at the default angle unless a
+    // layer asks for `creases`), and the borders from that classification.
+    bool adjacency = false;
+    // Crease classification at the angle (degrees) of the type's `angle` parameter; implies
+    // adjacency. The registration checks that the type has that parameter.
+    bool creases = false;
+    bool curvature = false;      // principal curvatures and their derivatives (feature size too)
+    bool intersections = false;  // where two surfaces of the mesh cross
+    // The segments are occluding contours: their visibility test walks the folds around them
+    // (VisibilityOptions::contour, over the faces of contour_surroundings).
+    bool contour_folds = false;
 };
 
-// The extractor of an object-space type, or nullptr.
-ExtractLineSegments object_line_extractor(const std::string& type_name);
-// What the type's extractor reads (nothing for unknown types).
-MeshLineNeeds object_line_needs(const std::string& type_name);
+// A registered object-space type: how to extract it and what that needs.
+struct ObjectLineType {
+    ExtractLineSegments extract = nullptr;
+    LineTypeNeeds needs;
+};
+
+struct ObjectLineRegistration {
+    ObjectLineRegistration(LineType type, ExtractLineSegments extract, LineTypeNeeds needs = {});
+};
+
+// The registration of an object-space type, or nullptr.
+const ObjectLineType* object_line_type(const std::string& type_name);
 
 // The parameters of an object-space type: stroke_params(color, width), then `own`, then the
 // clean-up and output parameters every object-space type has (min-length, smooth, taper,
