@@ -5,7 +5,7 @@
 // diverging scale: red convex along w, white kr = 0 (suggestive contour candidates), blue
 // concave.
 #include "common/surface.glsl"  // outputs, bounding box
-in float v_kr;
+// in float v_kr: the declared `radial-curvature` attribute, declared by the program variant.
 uniform float u_range;
 void shade() {
     float feature = 0.01 * length(u_bbox_max - u_bbox_min);
