@@ -5,7 +5,9 @@
 // vertex/material colours are left out, C is the base colour alone (BaseColorUse::Only).
 // INKSHADE_MTOON_OUTLINE: mtoon's outline draw, vertices moved out (shading/mtoon_outline.glsl);
 // INKSHADE_MTOON_TEXTURES: a VRM material's MToon textures, read at the uvs.
-// INKSHADE_MULTISCALE_NORMALS: the normals smoothed at several scales (exaggerated shading).
+// INKSHADE_VERTEX_ATTRIBUTES: the vertex attributes the model declares (locations 6 on), and
+// INKSHADE_PASS_VERTEX_ATTRIBUTES their copies to the fragment stage, both generated from the
+// declaration (render/shading_inputs.hpp).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
@@ -13,14 +15,8 @@ layout(location = 2) in vec3 a_color;
 layout(location = 5) in vec2 a_uv;
 out vec2 v_uv;
 #endif
-#ifdef INKSHADE_RADIAL_CURVATURE
-layout(location = 6) in float a_kr;  // per view, from the CPU (debug view kr)
-out float v_kr;
-#endif
-#ifdef INKSHADE_MULTISCALE_NORMALS
-// The normals smoothed at INKSHADE_SCALES + 1 widths, finest first (exaggerated shading).
-layout(location = 7) in vec3 a_scale_normal[INKSHADE_SCALES + 1];
-out vec3 v_scale_normal[INKSHADE_SCALES + 1];
+#ifdef INKSHADE_VERTEX_ATTRIBUTES
+INKSHADE_VERTEX_ATTRIBUTES
 #endif
 
 uniform mat4 u_model;
@@ -49,11 +45,8 @@ void main() {
 #if defined(INKSHADE_BASE_TEXTURE) || defined(INKSHADE_MTOON_TEXTURES)
     v_uv = a_uv;
 #endif
-#ifdef INKSHADE_RADIAL_CURVATURE
-    v_kr = a_kr;
-#endif
-#ifdef INKSHADE_MULTISCALE_NORMALS
-    for (int i = 0; i <= INKSHADE_SCALES; ++i) v_scale_normal[i] = u_normal_matrix * a_scale_normal[i];
+#ifdef INKSHADE_PASS_VERTEX_ATTRIBUTES
+    INKSHADE_PASS_VERTEX_ATTRIBUTES
 #endif
     vec4 clip = u_view_proj * world;
 #ifdef INKSHADE_MTOON_OUTLINE

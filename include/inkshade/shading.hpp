@@ -1,6 +1,7 @@
 // Shading models: a registry of named models, each one GLSL file plus a parameter table
 // (inkshade/params.hpp).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -8,33 +9,57 @@
 
 namespace inkshade {
 
+// What a model reads besides the mesh's positions, normals, colours and uvs, the camera and the
+// light: declared once in its registration, provided by the renderer for every model alike
+// (render/shading_inputs.hpp), as the render passes declare what they read (render/pass.hpp).
+enum class ShadingInputKind : uint8_t {
+    // A per-vertex attribute computed by the registered provider `name`
+    // (render/vertex_attribute.hpp: "radial-curvature", "multiscale-normals"): uploaded to the
+    // vertex attribute locations from 6 on, in declaration order, and declared in the GLSL from
+    // the same declaration (v_GLSL in the fragment stage, #define INKSHADE_NAME).
+    VertexAttribute,
+    // Depth from the light (common/shadow.glsl): the renderer runs a depth pass from the light
+    // and binds the map. Its `when` is a compile-time Bool parameter (INKSHADE_SHADOWS: a
+    // program variant, so the taps cost nothing when off).
+    ShadowMap,
+    // Shades in the linear convention whatever --srgb (docs/shading.md, "Colour conventions"):
+    // textures decoded from sRGB, output sRGB-encoded (the three.js models).
+    LinearLight,
+};
+
+struct ShadingInput {
+    ShadingInputKind kind = ShadingInputKind::VertexAttribute;
+    std::string name;  // VertexAttribute: its provider
+    // The parameter that switches the input on (empty: always on): a Bool one that is on, or a
+    // Choice one at `when_choice`.
+    std::string when;
+    std::string when_choice;
+};
+
+ShadingInput vertex_attribute_input(std::string provider);
+ShadingInput shadow_map_input(std::string when);
+ShadingInput linear_light_input(std::string when = {}, std::string when_choice = {});
+
 struct ShadingModel {
     std::string name;      // as selected by --shading
     std::string summary;   // one line with the formula
     std::string fragment;  // shader file under shaders/, e.g. "shading/phong.frag"
     std::string vertex = "mesh.vert";
-    bool debug_view = false;  // debug views (normal, view, w, ndotv)
-    // Casts shadows from a shadow map when its compile-time bool parameter "shadows" is on:
-    // the renderer then runs a depth pass from the light and binds it
-    // (shaders/common/shadow.glsl).
-    bool shadow_map = false;
-    // Reads the per-vertex radial curvature κr of the current view (attribute 6, v_kr, under
-    // INKSHADE_RADIAL_CURVATURE), computed on the CPU from Rusinkiewicz 2004 curvatures.
-    bool radial_curvature = false;
-    // Reads the mesh's vertex normals smoothed at several scales (attributes 7 on, one per scale,
-    // v_scale_normal[] under INKSHADE_MULTISCALE_NORMALS; geometry/multiscale_normals.hpp): the
-    // model's parameters "scales" (compile-time) and "sigma" choose them (exaggerated shading).
-    bool multiscale_normals = false;
-    // Shades in the linear convention whatever --srgb (docs/shading.md, "Colour conventions"):
-    // textures decoded from sRGB, output sRGB-encoded (the three.js models). A model with a
-    // Choice parameter "convention" is in it when that is "threejs" (mtoon).
-    bool linear_light = false;
+    // What the model is rather than what it reads: a view of the geometry (normal, view, w,
+    // ndotv, kr), listed apart from the shading models, drawn without the mesh's textures,
+    // material rules or colour encoding.
+    bool debug_view = false;
     // An object-space line type the model draws over its fill with the GPU strokes (hatching:
     // `hatch`): its parameters are the model's of the same names, its light the render's.
     std::string strokes;
+    std::vector<ShadingInput> inputs;
     std::vector<ParamSpec> params;
 
     const ParamSpec* param(const std::string& name) const;
+    // Whether `input` is on with `values` (its `when` parameter's value there, else its default).
+    bool input_on(const ShadingInput& input, const ParamValues& values) const;
+    // Whether an input of `kind` is on with `values`.
+    bool reads(ShadingInputKind kind, const ParamValues& values) const;
 };
 
 // All registered models: shading models alphabetically, then debug views.

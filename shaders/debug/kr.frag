@@ -5,7 +5,11 @@
 // diverging scale: red convex along w, white kr = 0 (suggestive contour candidates), blue
 // concave.
 #include "common/surface.glsl"  // outputs, bounding box
+// v_kr: the declared `radial-curvature` attribute, whose `in` the program variant generates;
+// here only for this file compiled on its own.
+#ifndef INKSHADE_RADIAL_CURVATURE
 in float v_kr;
+#endif
 uniform float u_range;
 void shade() {
     float feature = 0.01 * length(u_bbox_max - u_bbox_min);

@@ -14,8 +14,12 @@
 #ifndef INKSHADE_SCALES
 #define INKSHADE_SCALES 6  // the `scales` parameter, defined by the program variant
 #endif
-
+// v_scale_normal[]: the declared `multiscale-normals` attribute, whose `in` the program variant
+// generates (render/vertex_attributes/multiscale_normals.cpp); here only for this file compiled
+// on its own.
+#ifndef INKSHADE_MULTISCALE_NORMALS
 in vec3 v_scale_normal[INKSHADE_SCALES + 1];
+#endif
 
 uniform float u_contrast;  // a
 uniform float u_detail;    // k_i ∝ σ_i^(−detail)

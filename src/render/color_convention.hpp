@@ -4,8 +4,8 @@
 //     are, as hand-written GLSL shaders without a gamma step do; a texel's bytes reach the
 //     pixel unchanged where the formula leaves C alone.
 //   Linear: texels are decoded from sRGB to linear light and the output is sRGB-encoded; with
-//     --srgb (RenderOptions::srgb_output), for the three.js models (ShadingModel::linear_light)
-//     and for a model whose "convention" parameter is "threejs" (mtoon).
+//     --srgb (RenderOptions::srgb_output), and for a model that declares linear light
+//     (ShadingInputKind::LinearLight): the three.js models, mtoon when its "convention" is "threejs".
 #pragma once
 #include "gpu/base_texture.hpp"
 #include "inkshade/renderer.hpp"

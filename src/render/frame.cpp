@@ -11,13 +11,6 @@ const LineSettings* Frame::line(const std::string& type) const {
     return found;
 }
 
-void Frame::set_vertex_scalar(std::vector<float> per_mesh_vertex) {
-    if (mesh)
-        mesh->set_vertex_scalar(per_mesh_vertex);
-    else
-        vertex_scalar = std::move(per_mesh_vertex);
-}
-
 std::vector<LineSettings> object_lines_of(const std::vector<LineSettings>& lines, bool may_have_borders) {
     std::vector<LineSettings> out;
     const LineSettings* hull = nullptr;

@@ -1,6 +1,7 @@
 // One Renderer::render call as its passes see it: what to draw, the scene, and the resources
 // (render/pass.hpp) passes hand each other.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,16 +38,14 @@ struct Frame {
     Resources reads;                // what the planned passes read (PassPlan::reads)
 
     // Made during the frame.
-    std::vector<LineSettings> object_lines;           // the style's object-space lines, in order
-    std::optional<LineDrawing> drawing;               // LineDrawing
-    std::optional<std::vector<float>> vertex_scalar;  // VertexScalar computed before the upload
-    Image image;                                      // Image
-    AovImages* aovs = nullptr;                        // Aov: where options.aovs go (null: none asked)
+    std::vector<LineSettings> object_lines;                     // the style's object-space lines, in order
+    std::optional<LineDrawing> drawing;                         // LineDrawing
+    std::map<std::string, std::vector<float>> view_attributes;  // ViewAttributes, by provider
+    Image image;                                                // Image
+    AovImages* aovs = nullptr;                                  // Aov: where options.aovs go (null: none asked)
 
     // The style's settings of line type `type` (the last when listed twice), or null.
     const LineSettings* line(const std::string& type) const;
-    // VertexScalar: uploaded now, or kept for the upload when the GPU mesh is not made yet.
-    void set_vertex_scalar(std::vector<float> per_mesh_vertex);
     float aspect() const { return float(options.width) / float(options.height); }
 };
 

@@ -111,7 +111,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
         for (size_t i = 0; i < stream_size; ++i) uvs[i] = mesh.uvs[source_of(i)];
         uv_vbo_ = upload_buffer(GLsizeiptr(uvs.size() * sizeof(glm::vec2)), uvs.data());
     }
-    // Kept for set_vertex_scalar only when the stream is not the mesh's own vertex order.
+    // Kept for set_attribute only when the stream is not the mesh's own vertex order.
     if (split) source_ = std::move(source);
     std::vector<uint32_t>().swap(source);
 
@@ -247,48 +247,47 @@ void GpuMesh::make_vertex_array() {
     }
 }
 
-void GpuMesh::set_vertex_scalar(const std::vector<float>& per_mesh_vertex) {
+void GpuMesh::set_attribute(const std::string& name, const std::vector<float>& per_mesh_vertex, size_t floats,
+                            std::vector<float> key) {
     std::vector<float> stream;
     const std::vector<float>* data = &per_mesh_vertex;
-    if (!source_.empty()) {
-        stream.resize(source_.size(), 0.0f);
-        for (size_t i = 0; i < source_.size(); ++i)
-            if (source_[i] < per_mesh_vertex.size()) stream[i] = per_mesh_vertex[source_[i]];
+    if (!source_.empty() || per_mesh_vertex.size() != stream_size_ * floats) {
+        // Each stream vertex its source vertex's values (0 past the end).
+        stream.assign(stream_size_ * floats, 0.0f);
+        for (size_t i = 0; i < stream_size_; ++i) {
+            const size_t v = source_.empty() ? i : source_[i];
+            if ((v + 1) * floats <= per_mesh_vertex.size())
+                std::copy_n(per_mesh_vertex.begin() + std::ptrdiff_t(v * floats), floats,
+                            stream.begin() + std::ptrdiff_t(i * floats));
+        }
         data = &stream;
     }
-    if (!scalar_vbo_) {
-        // Binding point 4 (0-3 hold the other streams).
-        scalar_vbo_ = gpu::GlBuffer::create();
-        glVertexArrayVertexBuffer(vao_.id(), 4, scalar_vbo_.id(), 0, sizeof(float));
-        glEnableVertexArrayAttrib(vao_.id(), 6);
-        glVertexArrayAttribFormat(vao_.id(), 6, 1, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao_.id(), 6, 4);
-    }
-    glNamedBufferData(scalar_vbo_.id(), GLsizeiptr(data->size() * sizeof(float)), data->data(), GL_DYNAMIC_DRAW);
+    Attribute& attribute = attributes_[name];
+    if (!attribute.buffer) attribute.buffer = gpu::GlBuffer::create();
+    glNamedBufferData(attribute.buffer.id(), GLsizeiptr(data->size() * sizeof(float)), data->data(), GL_DYNAMIC_DRAW);
+    attribute.key = std::move(key);
 }
 
-void GpuMesh::set_scale_normals(const std::vector<std::vector<glm::vec3>>& normals, std::vector<float> sigmas) {
-    const size_t scales = std::min(normals.size(), kMaxScaleNormals);
-    // Interleaved: vertex i's scales side by side, each stream vertex its source vertex's.
-    std::vector<glm::vec3> stream(stream_size_ * scales, glm::vec3(0.0f, 0.0f, 1.0f));
-    for (size_t i = 0; i < stream_size_; ++i) {
-        const size_t v = source_.empty() ? i : source_[i];
-        for (size_t s = 0; s < scales; ++s)
-            if (v < normals[s].size()) stream[i * scales + s] = normals[s][v];
-    }
+const std::vector<float>* GpuMesh::attribute_key(const std::string& name) const {
+    const auto it = attributes_.find(name);
+    return it == attributes_.end() ? nullptr : &it->second.key;
+}
+
+void GpuMesh::bind_attributes(const std::vector<AttributeLayout>& layouts) {
     const GLuint vao = vao_.id();
-    for (GLuint a = 0; a < kMaxScaleNormals; ++a) glDisableVertexArrayAttrib(vao, 7 + a);
-    scale_normal_vbo_ = gpu::GlBuffer::create();
-    glNamedBufferData(scale_normal_vbo_.id(), GLsizeiptr(stream.size() * sizeof(glm::vec3)), stream.data(),
-                      GL_STATIC_DRAW);
-    // Binding point 5 (0-4 hold the other streams).
-    glVertexArrayVertexBuffer(vao, 5, scale_normal_vbo_.id(), 0, GLsizei(scales * sizeof(glm::vec3)));
-    for (GLuint s = 0; s < scales; ++s) {
-        glEnableVertexArrayAttrib(vao, 7 + s);
-        glVertexArrayAttribFormat(vao, 7 + s, 3, GL_FLOAT, GL_FALSE, GLuint(s * sizeof(glm::vec3)));
-        glVertexArrayAttribBinding(vao, 7 + s, 5);
+    for (GLuint a = kFirstDeclaredLocation; a < kLocationCount; ++a) glDisableVertexArrayAttrib(vao, a);
+    // Binding points from 4 (0-3 hold the other streams), one a buffer; its elements side by side.
+    GLuint binding = 4;
+    for (const AttributeLayout& l : layouts) {
+        const GLsizei element = GLsizei(l.components * sizeof(float));
+        glVertexArrayVertexBuffer(vao, binding, attributes_.at(l.name).buffer.id(), 0, element * GLsizei(l.count));
+        for (GLuint e = 0; e < GLuint(l.count); ++e) {
+            glEnableVertexArrayAttrib(vao, l.location + e);
+            glVertexArrayAttribFormat(vao, l.location + e, l.components, GL_FLOAT, GL_FALSE, e * GLuint(element));
+            glVertexArrayAttribBinding(vao, l.location + e, binding);
+        }
+        ++binding;
     }
-    scale_sigmas_ = std::move(sigmas);
 }
 
 namespace {

@@ -3,12 +3,14 @@
 // them: welded normals for the inverted hull (attribute 3) and the object id (attribute 4,
 // unsigned int, read `flat`; render/welded_attributes.hpp). A textured mesh (uvs and at least
 // one material texture) also gets its uvs (attribute 5) and one GL texture per distinct image;
-// a debug view may add a per-vertex scalar (attribute 6).
+// the vertex attributes shading models declare take locations 6 on (set_attribute).
 #pragma once
 #include <epoxy/gl.h>
 
 #include <array>
 #include <functional>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "gpu/base_texture.hpp"
@@ -82,15 +84,26 @@ public:
     // The (part, material) ids of each object id (attribute 4) from 1: the id and material AOVs.
     const std::vector<glm::uvec2>& object_parts() const { return object_parts_; }
 
-    // Uploads one float per mesh vertex as attribute 6 (the `kr` debug view's per-view radial
-    // curvature); stream vertices duplicated per material take their source vertex's value.
-    void set_vertex_scalar(const std::vector<float>& per_mesh_vertex);
-    // Uploads normals[s][v], one vec3 per mesh vertex and scale, as attributes 7, 8, ... (one a
-    // scale, at most kMaxScaleNormals) for models that read multiscale normals, and remembers
-    // `sigmas` (what scale_normal_sigmas() returns) so they are computed once per mesh and choice.
-    static constexpr size_t kMaxScaleNormals = 9;  // attributes 7-15 of the 16 GL guarantees
-    void set_scale_normals(const std::vector<std::vector<glm::vec3>>& normals, std::vector<float> sigmas);
-    const std::vector<float>& scale_normal_sigmas() const { return scale_sigmas_; }
+    // The vertex attributes shading models declare (render/shading_inputs.hpp), by provider name.
+    // Uploads `per_mesh_vertex`, `floats` a mesh vertex, as the buffer of attribute `name`
+    // (stream vertices duplicated per material take their source vertex's values) and remembers
+    // the `key` they were computed for.
+    void set_attribute(const std::string& name, const std::vector<float>& per_mesh_vertex, size_t floats,
+                       std::vector<float> key);
+    // The key `name`'s values were uploaded with; null: none uploaded.
+    const std::vector<float>* attribute_key(const std::string& name) const;
+    // Where an uploaded attribute is read: `count` elements of `components` floats at locations
+    // `location` on.
+    struct AttributeLayout {
+        std::string name;
+        GLuint location = 0;
+        GLint components = 1;
+        int count = 1;
+    };
+    // Binds those attributes at their locations and turns the other declared locations off.
+    static constexpr GLuint kFirstDeclaredLocation = 6;  // 0-5 are the mesh's own streams
+    static constexpr GLuint kLocationCount = 16;         // what GL guarantees
+    void bind_attributes(const std::vector<AttributeLayout>& layouts);
 
 private:
     void upload_materials(const Mesh& mesh, bool has_face_materials);
@@ -105,10 +118,14 @@ private:
         uint32_t material = 0;
         glm::vec3 center{0.0f};
     };
-    gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_, scalar_vbo_, scale_normal_vbo_;
-    std::vector<float> scale_sigmas_;  // of the normals in scale_normal_vbo_
+    gpu::GlBuffer vbo_, ibo_, hull_normal_vbo_, object_id_vbo_, uv_vbo_;
+    struct Attribute {
+        gpu::GlBuffer buffer;
+        std::vector<float> key;
+    };
+    std::map<std::string, Attribute> attributes_;  // set_attribute
     gpu::GlVertexArray vao_;
-    std::vector<uint32_t> source_;          // mesh vertex of each stream vertex (set_vertex_scalar)
+    std::vector<uint32_t> source_;          // mesh vertex of each stream vertex (set_attribute)
     size_t stream_size_ = 0;                // vertices in the stream
     std::vector<glm::uvec2> object_parts_;  // object_parts()
     GLsizei index_count_ = 0;

@@ -26,7 +26,7 @@ struct Frame;
 enum class Resource : uint8_t {
     MeshLineData,        // the object-space lines' mesh-wide CPU data (LineExtractor)
     GpuMesh,             // the mesh's GL buffers
-    VertexScalar,        // a per-vertex scalar of this view (attribute 6)
+    ViewAttributes,      // per-vertex attributes of this view a model declares (radial curvature)
     ShadowMap,           // depth from the light (kept while the mesh and the light stay)
     Color,               // the multisampled colour, depth and stencil target
     GBuffer,             // the single-sample geometry buffer of image-space lines

@@ -187,7 +187,6 @@ Image Renderer::Impl::render(const Camera& camera, const Light& light, const Sha
         impl_->line_extractor->release_mesh_data();
         impl_->upload();
         frame.mesh = impl_->mesh.get();
-        if (frame.vertex_scalar) frame.mesh->set_vertex_scalar(*frame.vertex_scalar);
     }
     impl_->targets.color_for(options.width, options.height, options.samples, options.bit_depth);
     impl_->run(plan.passes, frame, timings);

@@ -1,21 +1,22 @@
 // `shading`: the shading model (inkshade/shading.hpp) into the cleared colour target, with the
 // surface line types it tests per fragment (render/surface_lines.hpp), the shadow map and the
 // base-colour textures, read and written in the frame's colour convention
-// (render/color_convention.hpp), and C made as the selection's BaseColorUse says.
+// (render/color_convention.hpp), and C made as the selection's BaseColorUse says. What the model
+// declares it reads (ShadingModel::inputs) is provided here for every model alike: the shadow
+// map, and the vertex attributes with their GLSL (render/shading_inputs.hpp).
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <functional>
 #include <map>
 
 #include "gpu/gl_state.hpp"
-#include "geometry/multiscale_normals.hpp"
 #include "gpu/shader_program.hpp"
 #include "inkshade/color.hpp"
 #include "render/color_convention.hpp"
 #include "render/back_faces.hpp"
 #include "render/frame.hpp"
 #include "render/mtoon_textures.hpp"
+#include "render/shading_inputs.hpp"
 #include "render/surface_lines.hpp"
 
 namespace inkshade::render {
@@ -73,29 +74,13 @@ ParamValues with_material_params(const ShadingModel& model, const ParamValues& v
     return merged;
 }
 
-// The scale normals a model with multiscale_normals reads, computed from the CPU mesh and
-// uploaded when the mesh has none for its "scales" and "sigma" yet: `scales` + 1 widths from
-// sigma x the typical edge length, doubling (the last, coarsest, is the base coat's).
-void upload_scale_normals(const Frame& frame) {
-    const ShadingModel& model = frame.model;
-    const int scales = int(value_or_default(*model.param("scales"), frame.shading.params).at(0));
-    const float sigma = value_or_default(*model.param("sigma"), frame.shading.params).at(0);
-    std::vector<float> sigmas;
-    for (int s = 0; s <= scales && sigmas.size() < GpuMesh::kMaxScaleNormals; ++s)
-        sigmas.push_back(std::ldexp(sigma * frame.edge_length, s));
-    if (frame.mesh->scale_normal_sigmas() == sigmas) return;
-    frame.mesh->set_scale_normals(geometry::multiscale_normals(frame.cpu_mesh, frame.cpu_mesh.normals, sigmas), sigmas);
-}
-
 bool param_on(const ShadingModel& model, const ParamValues& values, const char* name) {
     const ParamSpec* spec = model.param(name);
     return spec && value_or_default(*spec, values).at(0) != 0.0f;
 }
 
-// Shadow map for models that cast shadows, when their "shadows" parameter is on.
-bool casts_shadows(const Frame& frame) {
-    return frame.model.shadow_map && param_on(frame.model, frame.shading.params, "shadows");
-}
+// A model that declares the shadow map, with the parameter that switches it on.
+bool casts_shadows(const Frame& frame) { return frame.model.reads(ShadingInputKind::ShadowMap, frame.shading.params); }
 
 // The MToon textures' samplers, in the units after the base colour's (GpuMesh::draw_by_material).
 void set_mtoon_samplers(gpu::ShaderProgram& program) {
@@ -225,7 +210,7 @@ public:
         const bool rules = mesh.has_material_rules() && !model.debug_view;
         const bool alpha = rules && mesh.has_alpha_materials();
         const Variant variant{textured, mtoon_textures, base_color_only, unlit, alpha};
-        if (model.multiscale_normals) upload_scale_normals(frame);
+        provide_attributes(frame, declared_attributes(model, shading.params));
         gpu::ShaderProgram& program =
             program_for(model, shading.params, surface_lines, variant, /*outline=*/false, frame.light);
 
@@ -386,14 +371,13 @@ private:
     // outline draw (`outline`: INKSHADE_MTOON_OUTLINE) and its materials' textures
     // (`mtoon_textures`: INKSHADE_MTOON_TEXTURES), and glTF's MASK and BLEND alpha modes
     // (`alpha`: INKSHADE_MATERIAL_ALPHA; a discard, which llvmpipe's early depth test avoids).
+    // The declared vertex attributes add their declarations (render/shading_inputs.hpp).
     gpu::ShaderProgram& program_for(const ShadingModel& model, const ParamValues& values, const SurfaceLines& lines,
                                     const Variant& variant, bool outline, const Light& light) {
         std::string defines = variant.textured ? "#define INKSHADE_BASE_TEXTURE 1\n" : "";
         if (variant.mtoon_textures) defines += "#define INKSHADE_MTOON_TEXTURES 1\n";
         if (outline) defines += "#define INKSHADE_MTOON_OUTLINE 1\n";
         if (variant.base_color_only) defines += "#define INKSHADE_BASE_COLOR_ONLY 1\n";
-        if (model.radial_curvature) defines += "#define INKSHADE_RADIAL_CURVATURE 1\n";
-        if (model.multiscale_normals) defines += "#define INKSHADE_MULTISCALE_NORMALS 1\n";
         if (variant.unlit) defines += "#define INKSHADE_UNLIT 1\n";
         if (variant.alpha) defines += "#define INKSHADE_MATERIAL_ALPHA 1\n";
         if (light.type == LightType::Spot) defines += "#define INKSHADE_SPOT_LIGHT 1\n";
@@ -406,7 +390,9 @@ private:
             for (char& c : macro) c = c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
             defines += "#define " + macro + " " + std::to_string(int(v.at(0))) + "\n";
         }
-        const std::string fragment_defines = lines.defines();
+        const std::vector<DeclaredAttribute> attributes = declared_attributes(model, values);
+        defines += attribute_defines(attributes);
+        const std::string fragment_defines = lines.defines() + attribute_fragment_inputs(attributes);
         auto& p = programs_[model.name + "|" + defines + fragment_defines];
         if (!p) p = std::make_unique<gpu::ShaderProgram>(model.vertex, model.fragment, defines, fragment_defines);
         return *p;
@@ -421,7 +407,7 @@ const PassRegistration shading_pass{{
     .plan = [](const Frame& frame) -> std::optional<PassIo> {
         PassIo io{.reads = {Resource::GpuMesh}, .writes = {Resource::Color}};
         if (casts_shadows(frame)) io.reads |= {Resource::ShadowMap};
-        if (frame.model.radial_curvature) io.reads |= {Resource::VertexScalar};
+        if (reads_view_attributes(frame.model, frame.shading.params)) io.reads |= {Resource::ViewAttributes};
         return io;
     },
     .create = create_pass<ShadingPass>,

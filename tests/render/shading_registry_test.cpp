@@ -14,12 +14,14 @@ TEST(ShadingRegistry, HasClassicModelsAndDebugViews) {
 }
 
 TEST(ShadingRegistry, ShadowCastingModelsSwitchShadowsAtCompileTime) {
-    for (const ShadingModel* m : shading_models()) {
-        if (!m->shadow_map) continue;
-        const ParamSpec* p = m->param("shadows");
-        ASSERT_NE(p, nullptr) << m->name;
-        EXPECT_TRUE(p->compile_time && p->type == ParamType::Bool) << m->name;
-    }
+    for (const ShadingModel* m : shading_models())
+        for (const ShadingInput& input : m->inputs) {
+            if (input.kind != ShadingInputKind::ShadowMap) continue;
+            EXPECT_EQ(input.when, "shadows") << m->name;
+            const ParamSpec* p = m->param("shadows");
+            ASSERT_NE(p, nullptr) << m->name;
+            EXPECT_TRUE(p->compile_time && p->type == ParamType::Bool) << m->name;
+        }
 }
 
 TEST(ShadingRegistry, UnknownNameListsChoices) {

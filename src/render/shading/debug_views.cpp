@@ -25,7 +25,7 @@ static const ShadingModelRegistration kr_view{
                 "lie on kr = 0 where it grows towards the contour",
      .fragment = "debug/kr.frag",
      .debug_view = true,
-     .radial_curvature = true,
+     .inputs = {vertex_attribute_input("radial-curvature")},
      .params = {float_param("range", 0.15f, 1e-5f, 100.0f,
                             "kr x feature size (1% of the bounding-box diagonal) shown at full colour")}}};
 }  // namespace inkshade

@@ -12,7 +12,7 @@ static const ShadingModelRegistration exaggerated_model{{
     .summary = "exaggerated shading: C*(E*(1/2 + 1/2 sum k_i clamp(a n_i.l_i+1)) + A), l_i+1 = l grazing the "
                "coarser normal n_i+1 (Rusinkiewicz et al. 2006)",
     .fragment = "shading/exaggerated.frag",
-    .multiscale_normals = true,
+    .inputs = {vertex_attribute_input("multiscale-normals")},
     .params =
         {
             float_param("contrast", 6.0f, 0.1f, 100.0f,

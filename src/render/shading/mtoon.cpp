@@ -16,7 +16,7 @@ static const ShadingModelRegistration mtoon_model{{
     .name = "mtoon",
     .summary = "MToon 1.0: E*mix(S, C, linearstep(-1+toony, 1-toony, n.l+shift)*shadow) + A*C + rim",
     .fragment = "shading/mtoon.frag",
-    .shadow_map = true,
+    .inputs = {shadow_map_input("shadows"), linear_light_input("convention", "threejs")},
     .params =
         {
             color_param("shade-color", glm::vec3(0.97f, 0.81f, 0.86f),

@@ -5,7 +5,7 @@ static const ShadingModelRegistration threejs_basic_model{{
     .name = "threejs-basic",
     .summary = "three.js r187 MeshBasicMaterial, unlit: sRGB(C*color)",
     .fragment = "shading/threejs-basic.frag",
-    .linear_light = true,
+    .inputs = {linear_light_input()},
     .params = {shading::threejs::color_param()},
 }};
 }  // namespace inkshade

@@ -5,7 +5,7 @@ static const ShadingModelRegistration threejs_lambert_model{{
     .name = "threejs-lambert",
     .summary = "three.js r187 MeshLambertMaterial: sRGB(C/pi*(E*max(n.l,0) + A) + emissive)",
     .fragment = "shading/threejs-lambert.frag",
-    .linear_light = true,
+    .inputs = {linear_light_input()},
     .params = shading::threejs::lit_params(),
 }};
 }  // namespace inkshade

@@ -9,7 +9,7 @@ static const ShadingModelRegistration threejs_toon_model{{
     .summary =
         "three.js r187 MeshToonMaterial: sRGB(C/pi*(E*g(0.5*n.l + 0.5) + A) + emissive), g from the gradient map",
     .fragment = "shading/threejs-toon.frag",
-    .linear_light = true,
+    .inputs = {linear_light_input()},
     .params = shading::threejs::lit_params(
         {compile_time(bool_param("use-gradient-map", false,
                                  "shade with gradient-map (three.js gradientMap); off: three.js's default two tones")),
