@@ -282,20 +282,8 @@ Scene line_scene(PyRenderer& renderer, std::optional<std::vector<std::string>> t
     return renderer.posed(r);
 }
 
-}  // namespace
-
-PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inkshade
-    m.doc() = "Inkshade: toon/NPR shading and line drawing for triangle meshes (headless OpenGL).";
-    m.attr("__version__") = kVersion;
-    // InputError (bad files, names, values) arrives as ValueError, RuntimeError as RuntimeError.
-    py::register_exception_translator([](std::exception_ptr p) {
-        try {
-            if (p) std::rethrow_exception(p);
-        } catch (const InputError& e) {
-            PyErr_SetString(PyExc_ValueError, e.what());
-        }
-    });
-
+// Mesh and load_mesh.
+void def_mesh(py::module_& m) {
     py::class_<PyMesh>(m, "Mesh")
         .def_property_readonly("vertex_count", &Mesh::vertex_count)
         .def_property_readonly("triangle_count", &Mesh::triangle_count)
@@ -349,6 +337,10 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         "without normals gets hard edges where faces meet at more than smooth_angle degrees (180: all smooth). "
         "A glTF/VRM file is posed by animation= (name or index) at time= seconds, expression= and morph= "
         "({name: weight} or ['NAME=W', ...]), as the CLI's --animation, --time, --expression, --morph.");
+}
+
+// The names of styles, line types and shading models.
+void def_listings(py::module_& m) {
     m.def("styles", &builtin_style_names, "Built-in style names (presets and shading models).");
     m.def("line_types", [] {
         std::vector<std::string> names;
@@ -368,6 +360,10 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
         },
         "{model name: {summary, params: {name: description}}}");
 
+}
+
+// batch(): datasets as `inkshade batch` renders them.
+void def_batch(py::module_& m) {
     // Batch rendering: a manifest (CSV/JSON Lines) or models x views x styles, as `inkshade
     // batch`; progress(event_dict) is called after each job with the GIL held.
     m.def(
@@ -432,6 +428,10 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
          keyword_doc(kBatch))
             .c_str());
 
+}
+
+// Renderer: render, lines and svg of one mesh.
+void def_renderer(py::module_& m) {
     py::class_<PyRenderer>(m, "Renderer", "A headless OpenGL 4.5 renderer (EGL) holding one mesh.")
         .def(py::init<>())
         .def("set_mesh", &PyRenderer::set_mesh, py::arg("mesh"))
@@ -481,4 +481,24 @@ PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inks
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
             ("The SVG text `inkshade lines` writes. Keywords:" + keyword_doc(kPython)).c_str());
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_inkshade, m) {  // the extension inside the package python/inkshade
+    m.doc() = "Inkshade: toon/NPR shading and line drawing for triangle meshes (headless OpenGL).";
+    m.attr("__version__") = kVersion;
+    // InputError (bad files, names, values) arrives as ValueError, RuntimeError as RuntimeError.
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InputError& e) {
+            PyErr_SetString(PyExc_ValueError, e.what());
+        }
+    });
+
+    def_mesh(m);
+    def_listings(m);
+    def_batch(m);
+    def_renderer(m);
 }

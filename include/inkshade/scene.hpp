@@ -196,9 +196,6 @@ glm::ivec2 parse_image_size(const std::string& option, const std::string& text);
 glm::vec3 parse_vec3(const std::string& option, const std::string& text);            // "x,y,z"
 glm::vec4 parse_color(const std::string& option, const std::string& text);           // parse_color
 LightType parse_light_type(const std::string& option, const std::string& text);      // directional|point
-LightSource parse_light_source(const std::string& option, const std::string& text);  // style|file
-UpAxis parse_up_axis(const std::string& option, const std::string& text);            // x|y|z|-x|-y|-z
-AovSet parse_aov_list(const std::string& option, const std::string& text);           // depth,normal,... (',' or ';')
 NamedWeight parse_named_weight(const std::string& option, const std::string& text);  // NAME=W
 // "NAME=W" items separated by ',' or ';' (a manifest's morph and expression columns).
 std::vector<NamedWeight> parse_named_weights(const std::string& option, const std::string& text);

@@ -97,12 +97,9 @@ OptionSpec bind_choice(OptionSpec spec, Ref ref, std::vector<Enum> values) {
     return spec;
 }
 
-std::vector<OptionSpec> make_table() {
+// The look: style, shading model, overrides.
+void add_look(std::vector<OptionSpec>& t) {
     using K = OptionKind;
-    const std::vector<UpAxis> axes = {UpAxis::PosX, UpAxis::PosY, UpAxis::PosZ,
-                                      UpAxis::NegX, UpAxis::NegY, UpAxis::NegZ};
-    std::vector<OptionSpec> t;
-    // The look.
     t.push_back(bind({.name = "style", .kind = K::Text, .value = "NAME|FILE",
                       .help = "built-in style name or style file (.toml); see `inkshade styles`", .fronts = kScene},
                      [](auto& r) -> auto& { return r.style; }));
@@ -114,7 +111,11 @@ std::vector<OptionSpec> make_table() {
                               "(repeatable)",
                       .fronts = kScene},
                      [](auto& r) -> auto& { return r.sets; }));
-    // The image.
+}
+
+// The image: size, samples, bit depth, colour convention, background.
+void add_image(std::vector<OptionSpec>& t) {
+    using K = OptionKind;
     t.push_back(bind({.name = "size", .kind = K::Size, .value = "WxH", .help = "image size",
                       .fronts = kScene | kBatch | kPython},
                      [](auto& r) -> auto& { return r.size; }));
@@ -133,8 +134,11 @@ std::vector<OptionSpec> make_table() {
     t.push_back(bind({.name = "background", .kind = K::Color, .value = "COLOR|transparent",
                       .help = "background colour or 'transparent' (default: the style's, white)", .fronts = kScene},
                      [](auto& r) -> auto& { return r.background; }));
-    // The camera. fov, ortho and margin, then up-axis, smooth-angle, camera, lights and
-    // light-intensity: the job hash's view line in its order.
+}
+
+// Where the camera stands.
+void add_placement(std::vector<OptionSpec>& t) {
+    using K = OptionKind;
     t.push_back(bind({.name = "azimuth", .kind = K::Number, .value = "DEG",
                       .help = "camera azimuth in degrees about the up axis (0 = from +z)", .fronts = kScene | kPython},
                      [](auto& r) -> auto& { return r.camera.azimuth_degrees; }));
@@ -153,6 +157,13 @@ std::vector<OptionSpec> make_table() {
     t.push_back(bind({.name = "up", .kind = K::Vector, .value = "x,y,z", .help = "camera up vector",
                       .fronts = kScene | kPython},
                      [](auto& r) -> auto& { return r.camera.up; }));
+}
+
+// How the camera projects and frames, and what it is: the job hash's view line, in its order, through light-intensity (add_light).
+void add_projection(std::vector<OptionSpec>& t) {
+    using K = OptionKind;
+    const std::vector<UpAxis> axes = {UpAxis::PosX, UpAxis::PosY, UpAxis::PosZ,
+                                      UpAxis::NegX, UpAxis::NegY, UpAxis::NegZ};
     t.push_back(bind({.name = "fov", .kind = K::Number, .value = "DEG", .help = "vertical field of view in degrees",
                       .fronts = kScene | kBatch | kPython, .min = 0, .max = 180, .min_open = true,
                       .max_open = true, .unit = "degrees", .hash = HashUse::ViewAlways},
@@ -208,7 +219,11 @@ std::vector<OptionSpec> make_table() {
                               "lists them); without --size the image takes its aspect ratio",
                       .fronts = kScene | kPython, .hash = HashUse::ViewWhenSet},
                      [](auto& r) -> auto& { return r.file_camera; }));
-    // The light.
+}
+
+// The light.
+void add_light(std::vector<OptionSpec>& t) {
+    using K = OptionKind;
     t.push_back(bind_choice({.name = "lights", .kind = K::Choice, .value = "style|file",
                              .help = "style (the style's key light, placed by the light options) or file (the model "
                                      "file's first glTF KHR_lights_punctual light)",
@@ -253,7 +268,11 @@ std::vector<OptionSpec> make_table() {
     t.push_back(bind({.name = "base-color", .kind = K::Color, .value = "COLOR",
                       .help = "base colour C, multiplies mesh colours (default white)", .fronts = kScene | kPython},
                      [](auto& r) -> auto& { return r.base_color; }));
-    // What else a job writes, then its pose: the job hash's image line in its order.
+}
+
+// What else a job writes, then its pose: the job hash's image line in its order.
+void add_outputs_and_pose(std::vector<OptionSpec>& t) {
+    using K = OptionKind;
     OptionSpec aov = bind({.name = "aov", .kind = K::Names, .value = "NAME,...",
                       .help = "AOVs beside the image: depth, normal, id, material, mask, lines (a mask per line "
                               "type), camera (docs/aov.md)",
@@ -291,6 +310,11 @@ std::vector<OptionSpec> make_table() {
                               "repeatable)",
                       .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet, .metadata = "morphs"},
                      [](auto& r) -> auto& { return r.morphs; }));
+}
+
+std::vector<OptionSpec> make_table() {
+    std::vector<OptionSpec> t;
+    for (auto add : {add_look, add_image, add_placement, add_projection, add_light, add_outputs_and_pose}) add(t);
     return t;
 }
 

@@ -44,21 +44,10 @@ glm::vec4 parse_color(const std::string& option, const std::string& text) {
     }
 }
 
-UpAxis parse_up_axis(const std::string& option, const std::string& text) {
-    if (const std::optional<UpAxis> axis = up_axis_named(text)) return *axis;
-    throw InputError(option + ": expected x, y, z, -x, -y or -z, got " + io::quote_token(text));
-}
-
 LightType parse_light_type(const std::string& option, const std::string& text) {
     if (text == "directional") return LightType::Directional;
     if (text == "point") return LightType::Point;
     throw InputError(option + ": expected directional or point, got " + io::quote_token(text));
-}
-
-LightSource parse_light_source(const std::string& option, const std::string& text) {
-    if (text == "style") return LightSource::Style;
-    if (text == "file") return LightSource::File;
-    throw InputError(option + ": expected style or file, got " + io::quote_token(text));
 }
 
 NamedWeight parse_named_weight(const std::string& option, const std::string& text) {

@@ -233,21 +233,6 @@ AovSet aov_set(const std::string& option, const std::vector<std::string>& names)
     return set;
 }
 
-AovSet parse_aov_list(const std::string& option, const std::string& text) {
-    std::vector<std::string> names;
-    std::string item;
-    for (char c : text + ",") {
-        if (c == ',' || c == ';') {
-            const size_t b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-            if (b != std::string::npos) names.push_back(item.substr(b, e - b + 1));
-            item.clear();
-        } else {
-            item += c;
-        }
-    }
-    return aov_set(option, names);
-}
-
 OcclusionLevels parse_occlusion_levels(const std::string& text) {
     auto fail = [&]() -> OcclusionLevels {
         throw InputError("occlusion levels: expected A-B with 0 <= A <= B <= " + std::to_string(kMaxOcclusionLevel) +
