@@ -54,6 +54,70 @@ std::optional<Join> corner_join(glm::vec2 v, glm::vec2 t1, glm::vec2 t2, float r
     return Join{glm::vec4(v, a), glm::vec4(tip, b), glm::vec4(0.0f), glm::vec4(0.0f, o, r, 0.5f * std::min(1.0f, r))};
 }
 
+// One path's capsules (a segment each, and a dot for a lone point) and, with miter and bevel
+// joins, its corner polygons. Clears depth_test when the path has no depths to test.
+void add_path(const LinePath& path, const StrokeStyle& style, std::vector<Segment>& segments, std::vector<Join>& joins,
+              bool& depth_test) {
+    const bool flat_caps = style.cap != geometry::StrokeCap::Round;
+    const bool flat_joins = style.join != geometry::StrokeJoin::Round;
+    const size_t n = path.points.size();
+    if (n == 0) return;
+    if (path.depth.size() != n) depth_test = false;
+    auto radius = [&](size_t i) {
+        if (path.width.size() == n) return 0.5f * std::max(path.width[i], 0.0f);
+        float s = style.taper && path.strength.size() == n ? std::clamp(path.strength[i], 0.0f, 1.0f) : 1.0f;
+        return 0.5f * style.width * s;
+    };
+    auto depth = [&](size_t i) { return path.depth.size() == n ? path.depth[i] : 0.0f; };
+    auto color = [&](size_t i) { return path.color.size() == n ? path.color[i] : style.color; };
+    std::vector<glm::vec2> points = path.points;
+    const bool open = !path.closed && n > 1;
+    if (open && style.cap == geometry::StrokeCap::Square) {
+        // A square cap is a flat one half a width further out.
+        auto extend = [&](size_t end, size_t inner) {
+            const glm::vec2 d = points[end] - points[inner];
+            const float l = glm::length(d);
+            if (l > 0.0f) points[end] += d / l * radius(end);
+        };
+        extend(0, 1);
+        extend(n - 1, n - 2);
+    }
+    // Cumulative image-space length from the path's start, so the brush does not restart
+    // at every segment.
+    // A coherent stroke's brush is read at its parameter u, so it stays on the surface.
+    std::vector<float> arc(n, 0.0f);
+    if (path.u.size() == n)
+        arc = path.u;
+    else
+        for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + glm::length(points[i] - points[i - 1]);
+    auto add = [&](size_t a, size_t b, bool flat_a, bool flat_b) {
+        const glm::vec3 ca = color(a), cb = color(b);
+        segments.push_back(
+            {glm::vec4(points[a], points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b)),
+             glm::vec4(ca, flat_a ? 1.0f : 0.0f), glm::vec4(cb, flat_b ? 1.0f : 0.0f),
+             glm::vec2(arc[a], b == 0 && a != 0 ? arc[a] + glm::length(points[0] - points[a]) : arc[b])});
+    };
+    // Corners: with miter and bevel joins every segment ends flat at a corner (a vertex
+    // with a segment on both sides) and the corner's outer side gets its polygon.
+    const bool closed = path.closed && n > 2;
+    auto corner = [&](size_t i) { return flat_joins && (closed || (i > 0 && i + 1 < n)); };
+    if (n == 1) add(0, 0, false, false);  // a dot
+    for (size_t i = 0; i + 1 < n; ++i)
+        add(i, i + 1, (open && flat_caps && i == 0) || corner(i),
+            (open && flat_caps && i + 2 == n) || corner(i + 1));
+    if (closed) add(n - 1, 0, corner(n - 1), corner(0));
+    for (size_t i = 0; flat_joins && i < n; ++i) {
+        if (!corner(i)) continue;
+        const glm::vec2 v = points[i], in = v - points[(i + n - 1) % n], out = points[(i + 1) % n] - v;
+        if (glm::length(in) <= 0.0f || glm::length(out) <= 0.0f) continue;
+        std::optional<Join> j = corner_join(v, glm::normalize(in), glm::normalize(out), radius(i), style.join);
+        if (!j) continue;
+        j->color_depth = glm::vec4(color(i), depth(i));
+        j->arc.x = arc[i];
+        joins.push_back(*j);
+    }
+}
+
 }  // namespace
 
 StrokePass::StrokePass()
@@ -86,68 +150,9 @@ void StrokePass::draw(const std::vector<LinePath>& paths, const StrokeStyle& sty
                       int samples) {
     if (style.opacity <= 0.0f) return;
     bool depth_test = style.depth_test;
-    const bool flat_caps = style.cap != geometry::StrokeCap::Round;
-    const bool flat_joins = style.join != geometry::StrokeJoin::Round;
     std::vector<Segment> segments;
     std::vector<Join> joins;
-    for (const LinePath& path : paths) {
-        const size_t n = path.points.size();
-        if (n == 0) continue;
-        if (path.depth.size() != n) depth_test = false;
-        auto radius = [&](size_t i) {
-            if (path.width.size() == n) return 0.5f * std::max(path.width[i], 0.0f);
-            float s = style.taper && path.strength.size() == n ? std::clamp(path.strength[i], 0.0f, 1.0f) : 1.0f;
-            return 0.5f * style.width * s;
-        };
-        auto depth = [&](size_t i) { return path.depth.size() == n ? path.depth[i] : 0.0f; };
-        auto color = [&](size_t i) { return path.color.size() == n ? path.color[i] : style.color; };
-        std::vector<glm::vec2> points = path.points;
-        const bool open = !path.closed && n > 1;
-        if (open && style.cap == geometry::StrokeCap::Square) {
-            // A square cap is a flat one half a width further out.
-            auto extend = [&](size_t end, size_t inner) {
-                const glm::vec2 d = points[end] - points[inner];
-                const float l = glm::length(d);
-                if (l > 0.0f) points[end] += d / l * radius(end);
-            };
-            extend(0, 1);
-            extend(n - 1, n - 2);
-        }
-        // Cumulative image-space length from the path's start, so the brush does not restart
-        // at every segment.
-        // A coherent stroke's brush is read at its parameter u, so it stays on the surface.
-        std::vector<float> arc(n, 0.0f);
-        if (path.u.size() == n)
-            arc = path.u;
-        else
-            for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + glm::length(points[i] - points[i - 1]);
-        auto add = [&](size_t a, size_t b, bool flat_a, bool flat_b) {
-            const glm::vec3 ca = color(a), cb = color(b);
-            segments.push_back(
-                {glm::vec4(points[a], points[b]), glm::vec4(radius(a), radius(b), depth(a), depth(b)),
-                 glm::vec4(ca, flat_a ? 1.0f : 0.0f), glm::vec4(cb, flat_b ? 1.0f : 0.0f),
-                 glm::vec2(arc[a], b == 0 && a != 0 ? arc[a] + glm::length(points[0] - points[a]) : arc[b])});
-        };
-        // Corners: with miter and bevel joins every segment ends flat at a corner (a vertex
-        // with a segment on both sides) and the corner's outer side gets its polygon.
-        const bool closed = path.closed && n > 2;
-        auto corner = [&](size_t i) { return flat_joins && (closed || (i > 0 && i + 1 < n)); };
-        if (n == 1) add(0, 0, false, false);  // a dot
-        for (size_t i = 0; i + 1 < n; ++i)
-            add(i, i + 1, (open && flat_caps && i == 0) || corner(i),
-                (open && flat_caps && i + 2 == n) || corner(i + 1));
-        if (closed) add(n - 1, 0, corner(n - 1), corner(0));
-        for (size_t i = 0; flat_joins && i < n; ++i) {
-            if (!corner(i)) continue;
-            const glm::vec2 v = points[i], in = v - points[(i + n - 1) % n], out = points[(i + 1) % n] - v;
-            if (glm::length(in) <= 0.0f || glm::length(out) <= 0.0f) continue;
-            std::optional<Join> j = corner_join(v, glm::normalize(in), glm::normalize(out), radius(i), style.join);
-            if (!j) continue;
-            j->color_depth = glm::vec4(color(i), depth(i));
-            j->arc.x = arc[i];
-            joins.push_back(*j);
-        }
-    }
+    for (const LinePath& path : paths) add_path(path, style, segments, joins, depth_test);
     if (segments.empty()) return;
     glNamedBufferData(buffer_.id(), GLsizeiptr(segments.size() * sizeof(Segment)), segments.data(), GL_STREAM_DRAW);
     if (!joins.empty())
