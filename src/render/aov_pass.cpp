@@ -79,7 +79,6 @@ public:
         const int samples = std::clamp(frame.options.samples, 1, std::max(1, int(max_samples)));
         if (!targets_ || targets_->width != width || targets_->height != height || targets_->samples != samples)
             targets_ = std::make_unique<AovTargets>(width, height, samples);
-        const size_t pixels = size_t(width) * size_t(height);
         out.width = width;
         out.height = height;
 
@@ -88,84 +87,92 @@ public:
         const Camera& camera = frame.camera;
         const glm::mat4 view_proj = camera.projection(frame.aspect()) * camera.view();
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-
         if (want.contains(Aov::Depth) || want.contains(Aov::Normal) || want.contains(Aov::Id) ||
             want.contains(Aov::Material)) {
-            glBindFramebuffer(GL_FRAMEBUFFER, targets_->surface.id());
-            const gpu::DepthScope depth(GL_LESS);  // before the clear: it writes depth only with the mask on
-            const GLfloat zero[4] = {0, 0, 0, 0};
-            const GLuint no_id[4] = {0, 0, 0, 0};
-            const GLfloat far = 1.0f;
-            glClearBufferfv(GL_COLOR, 0, zero);
-            glClearBufferuiv(GL_COLOR, 1, no_id);
-            glClearBufferfv(GL_DEPTH, 0, &far);
-            if (!surface_)
-                surface_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/aov.frag");
-            gpu::ShaderProgram& p = *surface_;
-            p.use();
-            p.set("u_view_proj", view_proj);
-            p.set("u_view", camera.view());
-            p.set("u_eye", camera.eye);
-            p.set("u_view_dir", glm::normalize(camera.target - camera.eye));
-            p.set("u_orthographic", camera.orthographic ? 1 : 0);
-            // The surface the shading pass shows: back faces only where no front face is just behind.
-            draw_front_then_back(frame, p, [&] { frame.mesh->draw(); });
-
-            std::vector<float> normal_depth(pixels * 4);
-            glGetTextureImage(targets_->normal_depth.id(), 0, GL_RGBA, GL_FLOAT,
-                              GLsizei(normal_depth.size() * sizeof(float)), normal_depth.data());
-            flip_rows(normal_depth, size_t(width) * 4);
-            if (want.contains(Aov::Depth)) {
-                out.depth.resize(pixels);
-                for (size_t i = 0; i < pixels; ++i) out.depth[i] = normal_depth[4 * i + 3];
-            }
-            if (want.contains(Aov::Normal)) {
-                out.normal.resize(pixels * 3);
-                for (size_t i = 0; i < pixels; ++i)
-                    for (int c = 0; c < 3; ++c) out.normal[3 * i + size_t(c)] = normal_depth[4 * i + size_t(c)];
-            }
-            if (want.contains(Aov::Id) || want.contains(Aov::Material)) {
-                std::vector<uint32_t> ids(pixels);
-                glGetTextureImage(targets_->object_id.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                                  GLsizei(ids.size() * sizeof(uint32_t)), ids.data());
-                flip_rows(ids, size_t(width));
-                // Object ids (part x material) to the part and the material.
-                const std::vector<glm::uvec2>& parts = frame.mesh->object_parts();
-                auto part = [&](uint32_t id, int k) { return id == 0 || id > parts.size() ? 0u : parts[id - 1][k]; };
-                if (want.contains(Aov::Id)) {
-                    out.id.resize(pixels);
-                    std::transform(ids.begin(), ids.end(), out.id.begin(), [&](uint32_t id) { return part(id, 0); });
-                }
-                if (want.contains(Aov::Material)) {
-                    out.material.resize(pixels);
-                    std::transform(ids.begin(), ids.end(), out.material.begin(),
-                                   [&](uint32_t id) { return part(id, 1); });
-                }
-            }
+            draw_surface(frame, view_proj);
+            read_surface(frame, want, out);
         }
-
-        if (want.contains(Aov::Mask)) {
-            glBindFramebuffer(GL_FRAMEBUFFER, targets_->coverage_msaa.id());
-            const GLfloat zero[4] = {0, 0, 0, 0};
-            glClearBufferfv(GL_COLOR, 0, zero);
-            const gpu::DepthScope depth(std::nullopt, false);
-            const gpu::CullScope cull(std::nullopt);  // every face covers, whichever way it faces
-            if (!coverage_)
-                coverage_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/coverage.frag");
-            coverage_->use();
-            coverage_->set("u_view_proj", view_proj);
-            coverage_->set("u_back_face_push", 0.0f);
-            frame.mesh->draw();
-            glBlitNamedFramebuffer(targets_->coverage_msaa.id(), targets_->coverage_resolved.id(), 0, 0, width, height,
-                                   0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            out.mask.resize(pixels);
-            glGetTextureImage(targets_->coverage.id(), 0, GL_RED, GL_UNSIGNED_BYTE, GLsizei(out.mask.size()),
-                              out.mask.data());
-            flip_rows(out.mask, size_t(width));
-        }
+        if (want.contains(Aov::Mask)) draw_and_read_mask(frame, view_proj, out);
     }
 
 private:
+    // Depth, camera-space normal and object id of the surface the shading pass shows, at one
+    // sample a pixel: back faces only where no front face is just behind.
+    void draw_surface(Frame& frame, const glm::mat4& view_proj) {
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_->surface.id());
+        const gpu::DepthScope depth(GL_LESS);  // before the clear: it writes depth only with the mask on
+        const GLfloat zero[4] = {0, 0, 0, 0};
+        const GLuint no_id[4] = {0, 0, 0, 0};
+        const GLfloat far = 1.0f;
+        glClearBufferfv(GL_COLOR, 0, zero);
+        glClearBufferuiv(GL_COLOR, 1, no_id);
+        glClearBufferfv(GL_DEPTH, 0, &far);
+        if (!surface_) surface_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/aov.frag");
+        gpu::ShaderProgram& p = *surface_;
+        const Camera& camera = frame.camera;
+        p.use();
+        p.set("u_view_proj", view_proj);
+        p.set("u_view", camera.view());
+        p.set("u_eye", camera.eye);
+        p.set("u_view_dir", glm::normalize(camera.target - camera.eye));
+        p.set("u_orthographic", camera.orthographic ? 1 : 0);
+        draw_front_then_back(frame, p, [&] { frame.mesh->draw(); });
+    }
+
+    void read_surface(const Frame& frame, AovSet want, AovImages& out) const {
+        const size_t width = size_t(out.width), pixels = width * size_t(out.height);
+        std::vector<float> normal_depth(pixels * 4);
+        glGetTextureImage(targets_->normal_depth.id(), 0, GL_RGBA, GL_FLOAT,
+                          GLsizei(normal_depth.size() * sizeof(float)), normal_depth.data());
+        flip_rows(normal_depth, width * 4);
+        if (want.contains(Aov::Depth)) {
+            out.depth.resize(pixels);
+            for (size_t i = 0; i < pixels; ++i) out.depth[i] = normal_depth[4 * i + 3];
+        }
+        if (want.contains(Aov::Normal)) {
+            out.normal.resize(pixels * 3);
+            for (size_t i = 0; i < pixels; ++i)
+                for (int c = 0; c < 3; ++c) out.normal[3 * i + size_t(c)] = normal_depth[4 * i + size_t(c)];
+        }
+        if (!want.contains(Aov::Id) && !want.contains(Aov::Material)) return;
+        std::vector<uint32_t> ids(pixels);
+        glGetTextureImage(targets_->object_id.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                          GLsizei(ids.size() * sizeof(uint32_t)), ids.data());
+        flip_rows(ids, width);
+        // Object ids (part x material) to the part and the material.
+        const std::vector<glm::uvec2>& parts = frame.mesh->object_parts();
+        auto part = [&](uint32_t id, int k) { return id == 0 || id > parts.size() ? 0u : parts[id - 1][k]; };
+        if (want.contains(Aov::Id)) {
+            out.id.resize(pixels);
+            std::transform(ids.begin(), ids.end(), out.id.begin(), [&](uint32_t id) { return part(id, 0); });
+        }
+        if (want.contains(Aov::Material)) {
+            out.material.resize(pixels);
+            std::transform(ids.begin(), ids.end(), out.material.begin(), [&](uint32_t id) { return part(id, 1); });
+        }
+    }
+
+    // The coverage mask at the image's samples, resolved: every face covers, whichever way it faces.
+    void draw_and_read_mask(Frame& frame, const glm::mat4& view_proj, AovImages& out) {
+        const int width = out.width, height = out.height;
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_->coverage_msaa.id());
+        const GLfloat zero[4] = {0, 0, 0, 0};
+        glClearBufferfv(GL_COLOR, 0, zero);
+        const gpu::DepthScope depth(std::nullopt, false);
+        const gpu::CullScope cull(std::nullopt);
+        if (!coverage_) coverage_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/coverage.frag");
+        coverage_->use();
+        coverage_->set("u_view_proj", view_proj);
+        coverage_->set("u_back_face_push", 0.0f);
+        frame.mesh->draw();
+        glBlitNamedFramebuffer(targets_->coverage_msaa.id(), targets_->coverage_resolved.id(), 0, 0, width, height, 0,
+                               0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        out.mask.resize(size_t(width) * size_t(height));
+        glGetTextureImage(targets_->coverage.id(), 0, GL_RED, GL_UNSIGNED_BYTE, GLsizei(out.mask.size()),
+                          out.mask.data());
+        flip_rows(out.mask, size_t(width));
+    }
+
     std::unique_ptr<AovTargets> targets_;
     std::unique_ptr<gpu::ShaderProgram> surface_, coverage_;
 };

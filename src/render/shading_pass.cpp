@@ -187,6 +187,23 @@ void set_frame_uniforms(gpu::ShaderProgram& program, const Frame& frame, const A
     program.set("u_time", frame.options.time);
 }
 
+// Premultiplied clear: a transparent background resolves to alpha-weighted edges.
+void clear_frame(const glm::vec4& bg) {
+    glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
+    glClearDepth(1.0);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+// The shadow pass's map and light, for a model that casts shadows.
+void set_shadow_uniforms(gpu::ShaderProgram& program, const Frame& frame) {
+    const ShadowMap& map = *frame.targets.shadow_map;
+    map.bind(kShadowUnit);
+    program.set("u_shadow_map", int(kShadowUnit));
+    program.set("u_light_view_proj", *frame.targets.shadow_light);
+    program.set("u_shadow_texel_world", frame.bounds.diagonal() / float(map.size()));
+}
+
 class ShadingPass final : public Pass {
 public:
     void run(Frame& frame) override {
@@ -214,25 +231,14 @@ public:
         gpu::ShaderProgram& program =
             program_for(model, shading.params, surface_lines, variant, /*outline=*/false, frame.light);
 
-        const glm::vec4& bg = frame.options.background;
-        // Premultiplied clear: a transparent background resolves to alpha-weighted edges.
-        glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
-        glClearDepth(1.0);
-        glClearStencil(0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        clear_frame(frame.options.background);
         const gpu::DepthScope depth(GL_LESS);
         std::optional<gpu::CapabilityScope> multisample;
         if (frame.options.samples > 1) multisample.emplace(GL_MULTISAMPLE, true);
 
         program.use();
         set_frame_uniforms(program, frame, c, convention);
-        if (casts_shadows(frame)) {
-            const ShadowMap& map = *frame.targets.shadow_map;
-            map.bind(kShadowUnit);
-            program.set("u_shadow_map", int(kShadowUnit));
-            program.set("u_light_view_proj", *frame.targets.shadow_light);
-            program.set("u_shadow_texel_world", frame.bounds.diagonal() / float(map.size()));
-        }
+        if (casts_shadows(frame)) set_shadow_uniforms(program, frame);
         upload_params(program, model, shading.params);
         surface_lines.upload(program);
         if (textured || material_params || unlit || rules) program.set("u_base_texture", int(kBaseTextureUnit));
@@ -289,11 +295,7 @@ private:
         program.use();
         set_frame_uniforms(program, frame, c, convention);
         program.set("u_projection", frame.camera.projection(frame.aspect()));
-        if (casts_shadows(frame)) {
-            program.set("u_shadow_map", int(kShadowUnit));
-            program.set("u_light_view_proj", *frame.targets.shadow_light);
-            program.set("u_shadow_texel_world", frame.bounds.diagonal() / float(frame.targets.shadow_map->size()));
-        }
+        if (casts_shadows(frame)) set_shadow_uniforms(program, frame);  // the map is bound already; binding again is free
         upload_params(program, model, params);
         const bool rules = frame.mesh->has_material_rules() && !model.debug_view;
         if (textured || material_params || rules) program.set("u_base_texture", int(kBaseTextureUnit));
