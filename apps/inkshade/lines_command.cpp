@@ -129,12 +129,8 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
     std::optional<Renderer> renderer;
     if (image_file) renderer.emplace();
 
-    const auto load_start = std::chrono::steady_clock::now();
-    Mesh mesh = load_mesh(scene.model, scene.load_options());
-    print_mesh_warnings(mesh);
-    print_warnings(scene.apply_file_scene(mesh));
-    const double load_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
+    double load_ms = 0.0;
+    Mesh mesh = load_scene_model(scene, load_ms);
     const Camera camera = scene.frame(mesh);
 
     const size_t triangles = mesh.triangle_count();

@@ -50,12 +50,8 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     check_background(output, scene.options.background);
     const RenderOptions& options = scene.options;
-    const auto load_start = std::chrono::steady_clock::now();
-    Mesh mesh = load_mesh(scene.model, scene.load_options());
-    print_mesh_warnings(mesh);
-    print_warnings(scene.apply_file_scene(mesh));
-    const double load_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
+    double load_ms = 0.0;
+    Mesh mesh = load_scene_model(scene, load_ms);
     const BoundingBox box = mesh.bounds();
     const Camera camera = scene.frame(mesh);
     const Light light = scene.light(box, camera);
