@@ -114,6 +114,13 @@ void replace_option(SceneRequest& request, const OptionSpec& spec, const std::st
 // empty for std::monostate.
 std::string format_option(const OptionSpec& spec, const OptionValue& value);
 
+// Whether the request sets the option to something other than SceneRequest's default: what
+// the job hash and the metadata record of a ...WhenSet option, so earlier jobs keep theirs.
+bool option_is_set(const OptionSpec& spec, const SceneRequest& request);
+
+// Items separated by ',' or ';', blanks around them trimmed, empty ones left out.
+std::vector<std::string> split_option_list(const std::string& text);
+
 // The option's default in `front`'s requests, as text ("" when unset by default).
 std::string option_default(const OptionSpec& spec, unsigned front);
 

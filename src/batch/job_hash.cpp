@@ -41,13 +41,11 @@ uint64_t fnv1a(std::string_view text) {
 std::string hashed_options(const SceneRequest& r, bool view_line) {
     const HashUse always = view_line ? HashUse::ViewAlways : HashUse::None;
     const HashUse when_set = view_line ? HashUse::ViewWhenSet : HashUse::ImageWhenSet;
-    static const SceneRequest defaults;
     std::string text;
     for (const OptionSpec& spec : scene_options()) {
         if (spec.hash == HashUse::None || (spec.hash != always && spec.hash != when_set)) continue;
         const OptionValue value = spec.get(r);
-        if (spec.hash == when_set && (std::holds_alternative<std::monostate>(value) || value == spec.get(defaults)))
-            continue;
+        if (spec.hash == when_set && !option_is_set(spec, r)) continue;
         if (const auto* weights = std::get_if<std::vector<NamedWeight>>(&value)) {
             for (const NamedWeight& w : *weights) text += " " + spec.name + "=" + w.name + "=" + number(w.weight);
             continue;

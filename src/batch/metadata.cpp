@@ -100,13 +100,12 @@ Json option_json(const OptionValue& value, bool nested) {
 // The options with a metadata key: those inside an object ("view.margin") or the top-level ones,
 // in the table's order; where the job hash always writes one, always, else where it is set.
 void add_options(const SceneRequest& r, bool nested, Json& j) {
-    static const SceneRequest defaults;
     for (const OptionSpec& spec : scene_options()) {
         const size_t dot = spec.metadata.find('.');
         if (spec.metadata.empty() || (dot != std::string::npos) != nested) continue;
         const OptionValue value = spec.get(r);
         const bool always = spec.hash == HashUse::ViewAlways;
-        if (!always && (std::holds_alternative<std::monostate>(value) || value == spec.get(defaults))) continue;
+        if (!always && !option_is_set(spec, r)) continue;
         if (nested)
             j[spec.metadata.substr(0, dot)][spec.metadata.substr(dot + 1)] = option_json(value, true);
         else

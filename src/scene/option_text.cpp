@@ -6,6 +6,7 @@
 
 #include "inkshade/color.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/options.hpp"
 #include "inkshade/scene.hpp"
 #include "io/text_scanner.hpp"
 
@@ -63,16 +64,7 @@ NamedWeight parse_named_weight(const std::string& option, const std::string& tex
 
 std::vector<NamedWeight> parse_named_weights(const std::string& option, const std::string& text) {
     std::vector<NamedWeight> out;
-    std::string item;
-    for (size_t i = 0; i <= text.size(); ++i) {
-        if (i < text.size() && text[i] != ',' && text[i] != ';') {
-            item += text[i];
-            continue;
-        }
-        const size_t first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
-        if (first != std::string::npos) out.push_back(parse_named_weight(option, item.substr(first, last - first + 1)));
-        item.clear();
-    }
+    for (const std::string& item : split_option_list(text)) out.push_back(parse_named_weight(option, item));
     return out;
 }
 

@@ -64,21 +64,6 @@ double parse_number(const std::string& label, const OptionSpec& s, const std::st
     return v;
 }
 
-std::vector<std::string> split_names(const std::string& text) {
-    std::vector<std::string> names;
-    std::string item;
-    for (char c : text + ",") {
-        if (c == ',' || c == ';') {
-            const size_t b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-            if (b != std::string::npos) names.push_back(item.substr(b, e - b + 1));
-            item.clear();
-        } else {
-            item += c;
-        }
-    }
-    return names;
-}
-
 OptionValue parse_text(const OptionSpec& s, const std::string& label, const std::string& text) {
     switch (s.kind) {
         case OptionKind::Number: return io::to_float(parse_number(label, s, text));
@@ -100,7 +85,7 @@ OptionValue parse_text(const OptionSpec& s, const std::string& label, const std:
         case OptionKind::Color: return parse_color(label, text);
         case OptionKind::Size: return parse_image_size(label, text);
         case OptionKind::Names: {
-            const std::vector<std::string> names = split_names(text);
+            const std::vector<std::string> names = split_option_list(text);
             if (names.empty()) throw InputError(label + ": no name given");
             return names;
         }
@@ -208,6 +193,27 @@ std::string format_option(const OptionSpec& spec, const OptionValue& value) {
         }
     };
     return std::visit(Format{spec}, value);
+}
+
+bool option_is_set(const OptionSpec& spec, const SceneRequest& request) {
+    static const SceneRequest defaults;
+    const OptionValue value = spec.get(request);
+    return !std::holds_alternative<std::monostate>(value) && value != spec.get(defaults);
+}
+
+std::vector<std::string> split_option_list(const std::string& text) {
+    std::vector<std::string> items;
+    std::string item;
+    for (char c : text + ",") {
+        if (c == ',' || c == ';') {
+            const size_t b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+            if (b != std::string::npos) items.push_back(item.substr(b, e - b + 1));
+            item.clear();
+        } else {
+            item += c;
+        }
+    }
+    return items;
 }
 
 std::string option_default(const OptionSpec& spec, unsigned front) {
