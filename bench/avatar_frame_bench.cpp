@@ -1,8 +1,9 @@
 // One frame of the sample avatar (scripts/avatar-sample --spring-hair) in mtoon at 2 s of its
 // "sway" animation, loaded, posed and rendered (320x240, headless GL), with its ponytail's spring
 // bones simulated (120 steps) and with them off: the cost of spring bones in a frame (issue
-// criterion: at most 1.3x). The avatar is written once into /tmp and removed at exit.
-//   inkshade_bench --benchmark_filter=AvatarFrame
+// criterion: at most 1.3x); AvatarLoad the load and pose alone, where the simulation's cost is.
+// The avatar is written once into /tmp and removed at exit.
+//   inkshade_bench --benchmark_filter=Avatar
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -25,17 +26,26 @@ struct Avatar {
     ~Avatar() { std::filesystem::remove(path); }
 };
 
-void AvatarFrame(benchmark::State& state) {
-    static const Avatar avatar;
-    static inkshade::Renderer renderer;
+const Avatar& avatar() {
+    static const Avatar a;
+    return a;
+}
+
+// The frame's scene: mtoon, 320x240, "sway" at 2 s, spring bones as state.range(0) says.
+inkshade::Scene avatar_scene(const benchmark::State& state) {
     inkshade::SceneRequest request;
-    request.model = avatar.path;
+    request.model = avatar().path;
     request.style = "mtoon";
     request.size = {320, 240};
     request.animation = "sway";
     request.time = 2.0f;
     request.spring_bones = state.range(0) != 0;
-    const inkshade::Scene scene = inkshade::make_scene(request);
+    return inkshade::make_scene(request);
+}
+
+void AvatarFrame(benchmark::State& state) {
+    static inkshade::Renderer renderer;
+    const inkshade::Scene scene = avatar_scene(state);
     for (auto _ : state) {
         const inkshade::Mesh mesh = inkshade::load_mesh(scene.model, scene.load_options());
         const inkshade::Camera camera = scene.frame(mesh);
@@ -44,5 +54,11 @@ void AvatarFrame(benchmark::State& state) {
     }
 }
 BENCHMARK(AvatarFrame)->ArgName("spring_bones")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+void AvatarLoad(benchmark::State& state) {
+    const inkshade::Scene scene = avatar_scene(state);
+    for (auto _ : state) benchmark::DoNotOptimize(inkshade::load_mesh(scene.model, scene.load_options()));
+}
+BENCHMARK(AvatarLoad)->ArgName("spring_bones")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 }  // namespace
