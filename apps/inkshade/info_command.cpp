@@ -105,6 +105,7 @@ void print_pose_names(const FilePoseNames& names) {
         for (const FileExpression& e : names.expressions)
             std::printf("  '%s' (%s)\n", io::printable_name(e.name).c_str(), e.preset ? "preset" : "custom");
     }
+    if (names.spring_joints > 0) std::printf("spring bone joints:   %zu\n", names.spring_joints);
 }
 
 }  // namespace

@@ -96,6 +96,7 @@ struct SceneRequest {
     // name, in order.
     std::string animation;
     std::vector<NamedWeight> expressions, morphs;
+    bool spring_bones = true;  // VRM spring bones simulated to `time` (Pose::spring_bones)
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
     // case), for render_scene's AovImages overload and write_aov_files.
@@ -119,6 +120,7 @@ struct Scene {
     float time = 0.0f;
     std::string animation;  // the model's pose (load_options), as the request gives it
     std::vector<NamedWeight> expressions, morphs;
+    bool spring_bones = true;
     // Area in the three.js convention (a scene file, a threejs-* model, mtoon's threejs
     // convention): normals computed for a file without them as three.js computes them.
     NormalWeighting normal_weighting = NormalWeighting::Angle;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "inkshade/io.hpp"
 #include "io/gltf_accessors.hpp"
@@ -34,7 +35,7 @@ public:
              FileTransform file_transform, std::vector<std::string>& warnings);
 
     // The node's local transform: the file's, with the animation's translation, rotation and
-    // scale where it sets them.
+    // scale where it sets them, and the spring bones' rotation where a joint turns it.
     glm::dmat4 local(size_t node) const;
 
     // Deforms one primitive of the mesh node `node` instances, in place: its morph targets with
@@ -44,8 +45,10 @@ public:
     void deform(size_t node, const tinygltf::Primitive& primitive, std::vector<float>& positions,
                 std::vector<float>& normals, const std::string& where) const;
 
-private:
+    // The node's world transform: its parents' local transforms and its own.
     glm::dmat4 world(size_t node) const;
+
+private:
     const std::vector<glm::dmat4>& joint_matrices(int skin) const;
 
     const tinygltf::Model& model_;
@@ -55,6 +58,7 @@ private:
     std::vector<AnimatedNode> animated_;       // empty: no animation
     std::vector<std::vector<float>> weights_;  // morph weights per node (empty: none)
     std::vector<int> parent_;                  // -1: a root
+    std::vector<std::optional<glm::dquat>> spring_;  // rotations spring bones give (empty: none)
     mutable std::vector<std::optional<glm::dmat4>> world_;
     mutable std::map<int, std::vector<glm::dmat4>> joint_matrices_;
 };

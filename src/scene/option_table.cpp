@@ -312,6 +312,13 @@ void add_outputs_and_pose(std::vector<OptionSpec>& t) {
                               "repeatable)",
                       .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet, .metadata = "morphs"},
                      [](auto& r) -> auto& { return r.morphs; }));
+    t.push_back(bind_choice({.name = "spring-bones", .kind = K::Choice, .value = "on|off",
+                             .help = "on: a VRM model's spring bones (hair, cloth) swing from its pose at time 0 "
+                                     "to --time under gravity and --animation, in 1/60 s steps as three-vrm moves "
+                                     "them; off: they keep the file's pose",
+                             .fronts = kScene | kBatch | kPython, .choices = {"on", "off"},
+                             .hash = HashUse::ImageWhenSet, .metadata = "spring_bones"},
+                            [](auto& r) -> auto& { return r.spring_bones; }, std::vector<bool>{true, false}));
 }
 
 std::vector<OptionSpec> make_table() {

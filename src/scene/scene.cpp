@@ -338,6 +338,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.animation = r.animation;
     scene.expressions = r.expressions;
     scene.morphs = r.morphs;
+    scene.spring_bones = r.spring_bones;
     scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
     // The three.js convention: a scene file's, the threejs-* models (unlit ones too), mtoon's
     // threejs convention.
@@ -354,7 +355,11 @@ Scene make_scene(const SceneRequest& r) {
 LoadOptions Scene::load_options() const {
     return LoadOptions{.smooth_angle = smooth_angle,
                        .normal_weighting = normal_weighting,
-                       .pose = {.animation = animation, .time = time, .expressions = expressions, .morphs = morphs}};
+                       .pose = {.animation = animation,
+                                .time = time,
+                                .expressions = expressions,
+                                .morphs = morphs,
+                                .spring_bones = spring_bones}};
 }
 
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }
