@@ -1,0 +1,105 @@
+"""The cases the reference test renders in Inkshade and in three-vrm: each writes its input files
+into a folder and says how each side renders them.
+
+A case is a dict: name, size (w, h), kind "vrm" (a VRM file: camera 0, the file's light) or
+"scene" (a three.js scene JSON with an MToonMaterial), and file (the name in the folder)."""
+import json
+import math
+import os
+
+import vrm_writer as vw
+
+SIZE = (256, 256)
+
+# A perspective and an orthographic camera looking at the origin, and the three glTF lights.
+PERSPECTIVE = {"type": "perspective", "yfov": 0.62, "eye": [0.9, 1.0, 3.4], "target": [0, 0, 0]}
+ORTHOGRAPHIC = {"type": "orthographic", "ymag": 1.0, "eye": [2.4, 1.6, 2.6], "target": [0, 0, 0]}
+DIRECTIONAL = {"type": "directional", "intensity": 3.0, "color": [1.0, 0.95, 0.9],
+               "eye": [2.6, 1.8, 0.2], "target": [0, 0, 0]}
+POINT = {"type": "point", "intensity": 15.0, "range": 6.0, "color": [0.95, 1.0, 0.9],
+         "eye": [1.4, 1.6, 1.9], "target": [0, 0, 0]}
+SPOT = {"type": "spot", "intensity": 40.0, "inner": 0.08, "outer": 0.2, "color": [1.0, 1.0, 1.0],
+        "eye": [0.6, 2.6, 2.4], "target": [0.1, 0.0, 0.0]}
+
+# VRMC_materials_mtoon values: a lit and a shade colour, a narrow toon band, a rim half lit.
+MTOON = {"baseColorFactor": [0.9, 0.45, 0.25], "shadeColorFactor": [0.25, 0.15, 0.45],
+         "shadingToonyFactor": 0.85, "shadingShiftFactor": -0.1, "giEqualizationFactor": 0.9,
+         "parametricRimColorFactor": [0.3, 0.4, 0.6], "parametricRimFresnelPowerFactor": 3.0,
+         "parametricRimLiftFactor": 0.05, "rimLightingMixFactor": 0.5,
+         "outlineWidthMode": "none", "outlineWidthFactor": 0.0, "outlineColorFactor": [0.1, 0.05, 0.2],
+         "outlineLightingMixFactor": 1.0}
+
+# glTF sampler enums (glTF 2.0 section 5.26).
+NEAREST, LINEAR, REPEAT, CLAMP = 9728, 9729, 10497, 33071
+
+
+def checker(x, y):
+    """16x16 texels: 2-texel checks of cream and teal, a red texel column at the right edge so
+    the wrap mode shows where u passes 1."""
+    if x == 15:
+        return (200, 30, 30)
+    return (240, 230, 200) if (x // 2 + y // 2) % 2 == 0 else (40, 120, 130)
+
+
+def textured_sphere():
+    """u runs 0..3 around the sphere, passing 1 (where the red column is) at the front right."""
+    return vw.sphere(u_scale=3.0, phase=-math.pi)
+
+
+def _vrm_case(name, mesh, camera, light, mtoon=None, texture=None, vrm0=None):
+    def write(folder):
+        vw.write_vrm(os.path.join(folder, name + ".vrm"), mesh(), mtoon, camera, light, SIZE, texture, vrm0)
+    return {"name": name, "kind": "vrm", "file": name + ".vrm", "size": SIZE, "write": write}
+
+
+def _texture(sampler):
+    return {"png": vw.png(16, 16, checker), "sampler": sampler}
+
+
+def _outline(mode, width):
+    return dict(MTOON, outlineWidthMode=mode, outlineWidthFactor=width, outlineLightingMixFactor=0.5)
+
+
+# VRM 0.x MToon properties (three-vrm's VRMMaterialsV0CompatPlugin ports them to MToon 1.0).
+VRM0 = {"floatProperties": {"_ShadeToony": 0.9, "_ShadeShift": 0.0, "_RimFresnelPower": 2.0, "_RimLift": 0.1,
+                            "_RimLightingMix": 0.5, "_OutlineWidthMode": 1, "_OutlineWidth": 1.5,
+                            "_OutlineColorMode": 1, "_OutlineLightingMix": 0.5, "_IndirectLightIntensity": 0.1},
+        "vectorProperties": {"_Color": [0.85, 0.8, 0.95, 1.0], "_ShadeColor": [0.45, 0.3, 0.6, 1.0],
+                             "_RimColor": [0.2, 0.25, 0.3, 1.0], "_OutlineColor": [0.15, 0.1, 0.2, 1.0],
+                             "_EmissionColor": [0, 0, 0, 1]}}
+
+
+def _scene_case(name):
+    """A three.js scene JSON: MToonMaterial with only `color`, a directional and an ambient light."""
+    scene = {"mesh": name + ".glb",
+             "material": {"type": "MToonMaterial", "color": [0.8, 0.55, 0.35]},
+             "lights": [{"type": "AmbientLight", "color": [0.4, 0.45, 0.5], "intensity": 1.0},
+                        {"type": "DirectionalLight", "color": [1, 1, 1], "intensity": 2.5,
+                         "position": [2.6, 1.8, 0.2], "target": [0, 0, 0]}],
+             "camera": {"type": "PerspectiveCamera", "fov": 36, "near": 0.1, "far": 100,
+                        "position": [0.9, 1.0, 3.4], "target": [0, 0, 0]},
+             "background": "transparent", "size": list(SIZE)}
+
+    def write(folder):
+        vw.write_glb(os.path.join(folder, name + ".glb"), vw.blob())
+        with open(os.path.join(folder, name + ".json"), "w") as f:
+            json.dump(scene, f, indent=1)
+    return {"name": name, "kind": "scene", "file": name + ".json", "size": SIZE, "write": write}
+
+
+CASES = [
+    _vrm_case("directional_perspective", vw.sphere, PERSPECTIVE, DIRECTIONAL, MTOON),
+    _vrm_case("point_perspective", vw.torus_knot, PERSPECTIVE, POINT, MTOON),
+    _vrm_case("spot_orthographic", vw.blob, ORTHOGRAPHIC, SPOT, MTOON),
+    _vrm_case("directional_orthographic", vw.torus_knot, ORTHOGRAPHIC, DIRECTIONAL, MTOON),
+    _vrm_case("texture_nearest_repeat", textured_sphere, PERSPECTIVE, DIRECTIONAL,
+              dict(MTOON, baseColorFactor=[1, 1, 1]),
+              _texture({"magFilter": NEAREST, "minFilter": NEAREST, "wrapS": REPEAT, "wrapT": REPEAT})),
+    _vrm_case("texture_linear_clamp", textured_sphere, PERSPECTIVE, DIRECTIONAL,
+              dict(MTOON, baseColorFactor=[1, 1, 1]),
+              _texture({"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": CLAMP, "wrapT": CLAMP})),
+    _vrm_case("outline_world", vw.torus_knot, PERSPECTIVE, DIRECTIONAL, _outline("worldCoordinates", 0.02)),
+    _vrm_case("outline_screen", vw.torus_knot, PERSPECTIVE, DIRECTIONAL, _outline("screenCoordinates", 0.01)),
+    _vrm_case("vrm0_outline_world", vw.blob, PERSPECTIVE, DIRECTIONAL, vrm0=VRM0),
+    _scene_case("scene_mtoon_color_only"),
+]
