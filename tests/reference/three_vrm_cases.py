@@ -46,14 +46,30 @@ def textured_sphere():
     return vw.sphere(u_scale=3.0, phase=-math.pi)
 
 
-def _vrm_case(name, mesh, camera, light, mtoon=None, texture=None, vrm0=None):
+def _vrm_case(name, mesh, camera, light, mtoon=None, textures=None, vrm0=None, size=SIZE, node=None):
     def write(folder):
-        vw.write_vrm(os.path.join(folder, name + ".vrm"), mesh(), mtoon, camera, light, SIZE, texture, vrm0)
-    return {"name": name, "kind": "vrm", "file": name + ".vrm", "size": SIZE, "write": write}
+        made = {slot: {"png": vw.png(16, 16, texel), "sampler": sampler} for slot, (texel, sampler) in (textures or {}).items()}
+        vw.write_vrm(os.path.join(folder, name + ".vrm"), mesh(), mtoon, camera, light, size, made, vrm0, node)
+    return {"name": name, "kind": "vrm", "file": name + ".vrm", "size": size, "write": write}
 
 
-def _texture(sampler):
-    return {"png": vw.png(16, 16, checker), "sampler": sampler}
+def _smooth(f):
+    """A 16x16 texel(x, y) from f(u, v) -> (r, g, b) in 0..1 at the texel centres."""
+    return lambda x, y: tuple(int(round(255 * min(1.0, max(0.0, c)))) for c in f((x + 0.5) / 16, (y + 0.5) / 16))
+
+
+def _bumps(u, v):
+    """A tangent-space normal map of soft bumps (glTF: +y up the image, encoded 0.5 + 0.5 n)."""
+    du, dv = 0.9 * math.sin(8 * math.pi * u), -0.9 * math.sin(4 * math.pi * v)
+    ln = math.sqrt(1 + du * du + dv * dv)
+    return (0.5 - 0.5 * du / ln, 0.5 - 0.5 * dv / ln, 0.5 + 0.5 / ln)
+
+
+SMOOTH = {"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": REPEAT, "wrapT": REPEAT}
+MAPS = {"normal": (_smooth(_bumps), SMOOTH),
+        "matcap": (_smooth(lambda u, v: (0.6 * math.exp(-((u - 0.35) ** 2 + (v - 0.3) ** 2) / 0.02),) * 3), SMOOTH),
+        "emissive": (_smooth(lambda u, v: (0.0, 0.5 * max(0.0, math.sin(2 * math.pi * v)) ** 8, 0.2 * u)), SMOOTH),
+        "shadeMultiply": (_smooth(lambda u, v: (1.0, 0.5 + 0.5 * v, 1.0 - 0.5 * u)), SMOOTH)}
 
 
 def _outline(mode, width):
@@ -91,13 +107,20 @@ CASES = [
     _vrm_case("directional_perspective", vw.sphere, PERSPECTIVE, DIRECTIONAL, MTOON),
     _vrm_case("point_perspective", vw.torus_knot, PERSPECTIVE, POINT, MTOON),
     _vrm_case("spot_orthographic", vw.blob, ORTHOGRAPHIC, SPOT, MTOON),
+    # A wide image (the camera's aspectRatio is the image's) and a turned, unevenly scaled mesh
+    # node (normals through the inverse transpose).
+    _vrm_case("directional_wide_scaled_node", vw.blob, PERSPECTIVE, DIRECTIONAL, MTOON, size=(320, 200),
+              node={"rotation": [0.0, 0.3826834, 0.0, 0.9238795], "scale": [1.3, 0.8, 1.0]}),
     _vrm_case("directional_orthographic", vw.torus_knot, ORTHOGRAPHIC, DIRECTIONAL, MTOON),
     _vrm_case("texture_nearest_repeat", textured_sphere, PERSPECTIVE, DIRECTIONAL,
               dict(MTOON, baseColorFactor=[1, 1, 1]),
-              _texture({"magFilter": NEAREST, "minFilter": NEAREST, "wrapS": REPEAT, "wrapT": REPEAT})),
+              {"base": (checker, {"magFilter": NEAREST, "minFilter": NEAREST, "wrapS": REPEAT, "wrapT": REPEAT})}),
     _vrm_case("texture_linear_clamp", textured_sphere, PERSPECTIVE, DIRECTIONAL,
               dict(MTOON, baseColorFactor=[1, 1, 1]),
-              _texture({"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": CLAMP, "wrapT": CLAMP})),
+              {"base": (checker, {"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": CLAMP, "wrapT": CLAMP})}),
+    # MToon's maps: a normal map, a matcap, an emissive and a shade multiply texture (LINEAR, no mipmaps).
+    _vrm_case("maps_normal_matcap_emissive", vw.sphere, PERSPECTIVE, DIRECTIONAL,
+              dict(MTOON, emissiveFactor=[1, 1, 1], matcapFactor=[1, 1, 1]), MAPS),
     _vrm_case("outline_world", vw.torus_knot, PERSPECTIVE, DIRECTIONAL, _outline("worldCoordinates", 0.02)),
     _vrm_case("outline_screen", vw.torus_knot, PERSPECTIVE, DIRECTIONAL, _outline("screenCoordinates", 0.01)),
     _vrm_case("vrm0_outline_world", vw.blob, PERSPECTIVE, DIRECTIONAL, vrm0=VRM0),

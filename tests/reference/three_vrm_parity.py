@@ -129,8 +129,14 @@ def render_reference(chromium, cases_dir, cases, out, timeout, ready):
     browser = subprocess.Popen([chromium] + CHROMIUM_FLAGS + ["--user-data-dir=" + profile, url],
                                stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
     try:
-        if not results.done.wait(timeout):
-            results.error = "Chromium gave no answer in %d s (see %s)" % (timeout, log.name)
+        deadline = time.monotonic() + timeout
+        while not results.done.wait(0.25):
+            if browser.poll() is not None:
+                results.error = "Chromium exited (status %d) before the page was done; see %s" % (browser.returncode, log.name)
+                break
+            if time.monotonic() > deadline:
+                results.error = "Chromium gave no answer in %d s; see %s" % (timeout, log.name)
+                break
     finally:
         browser.terminate()
         try:

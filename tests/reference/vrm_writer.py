@@ -185,13 +185,36 @@ _META1 = {"name": "Inkshade reference case", "version": "1", "authors": ["Inksha
           "commercialUsage": "corporation", "allowRedistribution": True, "modification": "allowModification"}
 
 
-def write_vrm(path, mesh, mtoon, camera, light, size, texture=None, vrm0=None, mesh_node=None):
+# Where a texture slot goes: the glTF material's own textures, or VRMC_materials_mtoon's.
+_GLTF_SLOTS = {"normal": "normalTexture", "emissive": "emissiveTexture"}
+_MTOON_SLOTS = {"matcap": "matcapTexture", "shadeMultiply": "shadeMultiplyTexture",
+                "rimMultiply": "rimMultiplyTexture", "shadingShift": "shadingShiftTexture"}
+
+
+def _add_textures(g, doc, textures):
+    """Images, samplers and textures for {slot: {"png": bytes, "sampler": dict or None}}; returns
+    {slot: texture index}."""
+    index = {}
+    for slot, tex in textures.items():
+        doc.setdefault("images", []).append({"bufferView": g.view(tex["png"]), "mimeType": "image/png"})
+        entry = {"source": len(doc["images"]) - 1}
+        if tex.get("sampler") is not None:
+            doc.setdefault("samplers", []).append(tex["sampler"])
+            entry["sampler"] = len(doc["samplers"]) - 1
+        doc.setdefault("textures", []).append(entry)
+        index[slot] = len(doc["textures"]) - 1
+    return index
+
+
+def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, mesh_node=None):
     """Writes a GLB: `mesh` with one material, the camera node and the light node.
 
-    mtoon: VRMC_materials_mtoon fields plus "baseColorFactor" (VRM 1.0), or None with `vrm0` the
-    materialProperties entry (VRM 0.x: floatProperties, vectorProperties; its textureProperties
-    _MainTex is filled in). camera/light: dicts for _camera/_light plus "eye", "target".
-    texture: {"png": bytes, "sampler": glTF sampler dict or None}. size: (width, height)."""
+    mtoon: VRMC_materials_mtoon fields plus the glTF material's "baseColorFactor" and optional
+    "emissiveFactor" (VRM 1.0), or None with `vrm0` the materialProperties entry (VRM 0.x:
+    floatProperties, vectorProperties; a "base" texture becomes _MainTex). camera/light: dicts for
+    _camera/_light plus "eye", "target". textures: {slot: {"png": bytes, "sampler": glTF sampler
+    or None}}, slots "base", "normal", "emissive", "matcap", "shadeMultiply", "rimMultiply",
+    "shadingShift". mesh_node: extra glTF node fields (rotation, scale). size: (width, height)."""
     g = _Glb()
     prim = {"attributes": {"POSITION": g.floats(mesh.p, "VEC3", True), "NORMAL": g.floats(mesh.n, "VEC3"),
                            "TEXCOORD_0": g.floats(mesh.uv, "VEC2")}, "indices": g.indices(mesh.t), "material": 0}
@@ -206,17 +229,20 @@ def write_vrm(path, mesh, mtoon, camera, light, size, texture=None, vrm0=None, m
                       "extensions": {"KHR_lights_punctual": {"light": 0}}}],
            "scenes": [{"nodes": [0, 1, 2]}], "scene": 0}
     material = {"name": "surface", "pbrMetallicRoughness": {"metallicFactor": 0}}
-    if texture is not None:
-        doc["images"] = [{"bufferView": g.view(texture["png"]), "mimeType": "image/png"}]
-        doc["textures"] = [{"source": 0}]
-        if texture.get("sampler") is not None:
-            doc["samplers"] = [texture["sampler"]]
-            doc["textures"][0]["sampler"] = 0
+    index = _add_textures(g, doc, textures or {})
     if vrm0 is None:
         ext = dict(mtoon)
         material["pbrMetallicRoughness"]["baseColorFactor"] = ext.pop("baseColorFactor") + [1]
-        if texture is not None:
-            material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+        if "emissiveFactor" in ext:
+            material["emissiveFactor"] = ext.pop("emissiveFactor")
+        if "base" in index:
+            material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": index["base"]}
+        for slot, key in _GLTF_SLOTS.items():
+            if slot in index:
+                material[key] = {"index": index[slot]}
+        for slot, key in _MTOON_SLOTS.items():
+            if slot in index:
+                ext[key] = {"index": index[slot]}
         material["extensions"] = {"VRMC_materials_mtoon": dict({"specVersion": "1.0"}, **ext)}
         doc["extensionsUsed"] += ["VRMC_vrm", "VRMC_materials_mtoon"]
         doc["extensions"]["VRMC_vrm"] = {"specVersion": "1.0", "meta": _META1}
@@ -224,8 +250,8 @@ def write_vrm(path, mesh, mtoon, camera, light, size, texture=None, vrm0=None, m
         props = {"name": "surface", "shader": "VRM/MToon", "renderQueue": 2000, "keywordMap": {},
                  "tagMap": {"RenderType": "Opaque"}, "textureProperties": {}}
         props.update(vrm0)
-        if texture is not None:
-            props["textureProperties"] = {"_MainTex": 0}
+        if "base" in index:
+            props["textureProperties"] = {"_MainTex": index["base"]}
         doc["extensionsUsed"] += ["VRM"]
         doc["extensions"]["VRM"] = {"exporterVersion": "Inkshade", "specVersion": "0.0",
                                     "meta": {"title": "Inkshade reference case", "version": "1"},
