@@ -53,8 +53,9 @@ std::optional<glm::mat3> vrm0_main_texture_transform(const tinygltf::Value& vect
     const double offset_t = element(vector_properties, "_MainTex", 1, 0.0);
     const double scale_s = element(vector_properties, "_MainTex", 2, 1.0);
     const double scale_t = element(vector_properties, "_MainTex", 3, 1.0);
-    // JavaScript's % keeps the dividend's sign, as std::fmod does.
-    return uv_transform(offset_s, std::fmod(scale_t * (1.0 - offset_t), 1.0), 0.0, scale_s, scale_t);
+    // three-vrm 3.5.5 VRMMaterialsV0CompatPlugin._portTextureTransform: offset[1] = 1 - scale[1]
+    // - offset[1] (Unity's t runs up the image, glTF's down it).
+    return uv_transform(offset_s, 1.0 - scale_t - offset_t, 0.0, scale_s, scale_t);
 }
 
 }  // namespace inkshade::io

@@ -27,8 +27,7 @@ std::optional<glm::mat3> khr_texture_transform(const tinygltf::Value& transform)
 
 // VRM 0.x: a material's vectorProperties._MainTex, [offset s, offset t, scale s, scale t] as
 // three-vrm reads it, ported to KHR_texture_transform as its VRMMaterialsV0CompatPlugin does
-// (offset t becomes (scale t · (1 − offset t)) mod 1, the sign kept as JavaScript's %); nullopt
-// without one.
+// (offset t becomes 1 − scale t − offset t); nullopt without one.
 std::optional<glm::mat3> vrm0_main_texture_transform(const tinygltf::Value& vector_properties);
 
 }  // namespace inkshade::io

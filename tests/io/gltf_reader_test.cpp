@@ -507,7 +507,8 @@ TEST(GltfReader, TextureTransformsAreReadAsThreeJsAppliesThem) {
     for (const std::string& w : m.warnings) EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;
 
     // VRM 0.x: _MainTex [offset s, offset t, scale s, scale t] ported as three-vrm ports it
-    // (offset t' = (scale t (1 - offset t)) mod 1), for every texture but the matcap.
+    // (three-vrm 3.5.5 _portTextureTransform: offset t' = 1 - scale t - offset t), for every
+    // texture but the matcap.
     GltfBuilder v0 = textured_quad();
     nlohmann::json props = vrm0_material_properties();
     props[0]["vectorProperties"]["_MainTex"] = {0.25, 0.1, 2, 3};
@@ -515,7 +516,7 @@ TEST(GltfReader, TextureTransformsAreReadAsThreeJsAppliesThem) {
     v0.doc["extensions"]["VRM"] = {{"materialProperties", props}};
     const Mesh old = load_mesh(dir.write("old.vrm", v0.glb()));
     const Material& o = old.materials[0];
-    const glm::vec2 want = three_uv(st, 0.25f, std::fmod(3.0f * 0.9f, 1.0f), 0.0f, 2, 3);
+    const glm::vec2 want = three_uv(st, 0.25f, 1.0f - 3.0f - 0.1f, 0.0f, 2, 3);
     for (const char* key : {"base-color-texture", "shade-multiply-texture", "emissive-texture"}) {
         ASSERT_TRUE(o.uv_transforms.count(key)) << key;
         expect_near2(apply(o.uv_transforms.at(key), st), want, 1e-5f);

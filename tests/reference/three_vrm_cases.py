@@ -124,5 +124,11 @@ CASES = [
     _vrm_case("outline_world", vw.torus_knot, PERSPECTIVE, DIRECTIONAL, _outline("worldCoordinates", 0.02)),
     _vrm_case("outline_screen", vw.torus_knot, PERSPECTIVE, DIRECTIONAL, _outline("screenCoordinates", 0.01)),
     _vrm_case("vrm0_outline_world", vw.blob, PERSPECTIVE, DIRECTIONAL, vrm0=VRM0),
+    # VRM 0.x _MainTex offset and scale ([offset s, offset t, scale s, scale t]), which three-vrm
+    # ports to KHR_texture_transform with t turned over.
+    _vrm_case("vrm0_texture_offset_scale", textured_sphere, PERSPECTIVE, DIRECTIONAL,
+              vrm0=dict(VRM0, vectorProperties=dict(VRM0["vectorProperties"], _Color=[1, 1, 1, 1],
+                                                     _MainTex=[0.25, 0.1, 2.0, 1.5])),
+              textures={"base": (checker, {"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": REPEAT, "wrapT": REPEAT})}),
     _scene_case("scene_mtoon_color_only"),
 ]
