@@ -30,9 +30,9 @@ glm::mat3 uv_transform(double offset_s, double offset_t, double rotation, double
     const double c = std::cos(rotation), s = std::sin(rotation);
     glm::mat3 m(1.0f);  // m[column][row]
     m[0][0] = float(scale_s * c);
-    m[1][0] = float(scale_s * s);
+    m[1][0] = float(scale_t * s);
     m[2][0] = float(offset_s);
-    m[0][1] = float(-scale_t * s);
+    m[0][1] = float(-scale_s * s);
     m[1][1] = float(scale_t * c);
     m[2][1] = float(offset_t);
     return m;

@@ -475,10 +475,13 @@ TEST(GltfReader, VrmOneMapsEmissionAndUvAnimationAreRead) {
     EXPECT_FLOAT_EQ(d.at("uv-animation-rotation-speed")[0], 0.0f);
 }
 
-// KHR_texture_transform as three.js's GLTFLoader and Texture.matrix apply it: rotate, scale,
-// then offset, s' = sx (cos r s + sin r t) + ox, t' = sy (-sin r s + cos r t) + oy.
+// KHR_texture_transform as three.js r187's GLTFLoader.extendTexture sets the texture's matrix
+// when there is a rotation (the extension's T R S: scale, rotate, then offset; setUvTransform,
+// which rotates first, gives the same matrix without one):
+// s' = cos r sx s + sin r sy t + ox, t' = -sin r sx s + cos r sy t + oy.
 glm::vec2 three_uv(glm::vec2 st, float ox, float oy, float r, float sx, float sy) {
-    return {sx * (std::cos(r) * st.x + std::sin(r) * st.y) + ox, sy * (-std::sin(r) * st.x + std::cos(r) * st.y) + oy};
+    return {std::cos(r) * sx * st.x + std::sin(r) * sy * st.y + ox,
+            -std::sin(r) * sx * st.x + std::cos(r) * sy * st.y + oy};
 }
 glm::vec2 apply(const glm::mat3& m, glm::vec2 st) { return glm::vec2(m * glm::vec3(st, 1.0f)); }
 void expect_near2(glm::vec2 a, glm::vec2 b, float eps) { expect_near(glm::vec3(a, 0.0f), glm::vec3(b, 0.0f), eps); }

@@ -1,5 +1,6 @@
 """The cases the reference test renders in Inkshade and in three-vrm: each writes its input files
-into a folder and says how each side renders them.
+into a folder and says how each side renders them. A VRM case's textures are
+{slot: (texel(x, y), glTF sampler or None[, KHR_texture_transform])}, 16x16 texels.
 
 A case is a dict: name, size (w, h), kind "vrm" (a VRM file: camera 0, the file's light) or
 "scene" (a three.js scene JSON with an MToonMaterial), and file (the name in the folder)."""
@@ -48,7 +49,8 @@ def textured_sphere():
 
 def _vrm_case(name, mesh, camera, light, mtoon=None, textures=None, vrm0=None, size=SIZE, node=None):
     def write(folder):
-        made = {slot: {"png": vw.png(16, 16, texel), "sampler": sampler} for slot, (texel, sampler) in (textures or {}).items()}
+        made = {slot: {"png": vw.png(16, 16, spec[0]), "sampler": spec[1], "transform": spec[2] if len(spec) > 2 else None}
+                for slot, spec in (textures or {}).items()}
         vw.write_vrm(os.path.join(folder, name + ".vrm"), mesh(), mtoon, camera, light, size, made, vrm0, node)
     return {"name": name, "kind": "vrm", "file": name + ".vrm", "size": size, "write": write}
 
@@ -118,6 +120,11 @@ CASES = [
     _vrm_case("texture_linear_clamp", textured_sphere, PERSPECTIVE, DIRECTIONAL,
               dict(MTOON, baseColorFactor=[1, 1, 1]),
               {"base": (checker, {"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": CLAMP, "wrapT": CLAMP})}),
+    # KHR_texture_transform with a rotation and an uneven scale, where the extension's order
+    # (scale first) and three.js's setUvTransform (rotation first) differ.
+    _vrm_case("texture_transform_rotated", textured_sphere, PERSPECTIVE, DIRECTIONAL, dict(MTOON, baseColorFactor=[1, 1, 1]),
+              {"base": (checker, {"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": REPEAT, "wrapT": REPEAT},
+                        {"offset": [0.2, 0.3], "rotation": 0.4, "scale": [1.5, 2.0]})}),
     # MToon's maps: a normal map, a matcap, an emissive and a shade multiply texture (LINEAR, no mipmaps).
     _vrm_case("maps_normal_matcap_emissive", vw.sphere, PERSPECTIVE, DIRECTIONAL,
               dict(MTOON, emissiveFactor=[1, 1, 1], matcapFactor=[1, 1, 1]), MAPS),

@@ -192,8 +192,8 @@ _MTOON_SLOTS = {"matcap": "matcapTexture", "shadeMultiply": "shadeMultiplyTextur
 
 
 def _add_textures(g, doc, textures):
-    """Images, samplers and textures for {slot: {"png": bytes, "sampler": dict or None}}; returns
-    {slot: texture index}."""
+    """Images, samplers and textures for {slot: {"png": bytes, "sampler": dict or None,
+    "transform": KHR_texture_transform or None}}; returns {slot: glTF textureInfo}."""
     index = {}
     for slot, tex in textures.items():
         doc.setdefault("images", []).append({"bufferView": g.view(tex["png"]), "mimeType": "image/png"})
@@ -202,7 +202,10 @@ def _add_textures(g, doc, textures):
             doc.setdefault("samplers", []).append(tex["sampler"])
             entry["sampler"] = len(doc["samplers"]) - 1
         doc.setdefault("textures", []).append(entry)
-        index[slot] = len(doc["textures"]) - 1
+        index[slot] = {"index": len(doc["textures"]) - 1}
+        if tex.get("transform") is not None:
+            index[slot]["extensions"] = {"KHR_texture_transform": tex["transform"]}
+            doc["extensionsUsed"].append("KHR_texture_transform")
     return index
 
 
@@ -213,7 +216,7 @@ def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, 
     "emissiveFactor" (VRM 1.0), or None with `vrm0` the materialProperties entry (VRM 0.x:
     floatProperties, vectorProperties; a "base" texture becomes _MainTex). camera/light: dicts for
     _camera/_light plus "eye", "target". textures: {slot: {"png": bytes, "sampler": glTF sampler
-    or None}}, slots "base", "normal", "emissive", "matcap", "shadeMultiply", "rimMultiply",
+    or None, "transform": KHR_texture_transform or None}}, slots "base", "normal", "emissive", "matcap", "shadeMultiply", "rimMultiply",
     "shadingShift". mesh_node: extra glTF node fields (rotation, scale). size: (width, height)."""
     g = _Glb()
     prim = {"attributes": {"POSITION": g.floats(mesh.p, "VEC3", True), "NORMAL": g.floats(mesh.n, "VEC3"),
@@ -236,13 +239,13 @@ def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, 
         if "emissiveFactor" in ext:
             material["emissiveFactor"] = ext.pop("emissiveFactor")
         if "base" in index:
-            material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": index["base"]}
+            material["pbrMetallicRoughness"]["baseColorTexture"] = index["base"]
         for slot, key in _GLTF_SLOTS.items():
             if slot in index:
-                material[key] = {"index": index[slot]}
+                material[key] = index[slot]
         for slot, key in _MTOON_SLOTS.items():
             if slot in index:
-                ext[key] = {"index": index[slot]}
+                ext[key] = index[slot]
         material["extensions"] = {"VRMC_materials_mtoon": dict({"specVersion": "1.0"}, **ext)}
         doc["extensionsUsed"] += ["VRMC_vrm", "VRMC_materials_mtoon"]
         doc["extensions"]["VRMC_vrm"] = {"specVersion": "1.0", "meta": _META1}
@@ -251,7 +254,7 @@ def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, 
                  "tagMap": {"RenderType": "Opaque"}, "textureProperties": {}}
         props.update(vrm0)
         if "base" in index:
-            props["textureProperties"] = {"_MainTex": index["base"]}
+            props["textureProperties"] = {"_MainTex": index["base"]["index"]}
         doc["extensionsUsed"] += ["VRM"]
         doc["extensions"]["VRM"] = {"exporterVersion": "Inkshade", "specVersion": "0.0",
                                     "meta": {"title": "Inkshade reference case", "version": "1"},
