@@ -47,11 +47,11 @@ def textured_sphere():
     return vw.sphere(u_scale=3.0, phase=-math.pi)
 
 
-def _vrm_case(name, mesh, camera, light, mtoon=None, textures=None, vrm0=None, size=SIZE, node=None):
+def _vrm_case(name, mesh, camera, light, mtoon=None, textures=None, vrm0=None, size=SIZE, node=None, material=None):
     def write(folder):
         made = {slot: {"png": vw.png(16, 16, spec[0]), "sampler": spec[1], "transform": spec[2] if len(spec) > 2 else None}
                 for slot, spec in (textures or {}).items()}
-        vw.write_vrm(os.path.join(folder, name + ".vrm"), mesh(), mtoon, camera, light, size, made, vrm0, node)
+        vw.write_vrm(os.path.join(folder, name + ".vrm"), mesh(), mtoon, camera, light, size, made, vrm0, node, material)
     return {"name": name, "kind": "vrm", "file": name + ".vrm", "size": size, "write": write}
 
 
@@ -125,6 +125,11 @@ CASES = [
     _vrm_case("texture_transform_rotated", textured_sphere, PERSPECTIVE, DIRECTIONAL, dict(MTOON, baseColorFactor=[1, 1, 1]),
               {"base": (checker, {"magFilter": LINEAR, "minFilter": LINEAR, "wrapS": REPEAT, "wrapT": REPEAT},
                         {"offset": [0.2, 0.3], "rotation": 0.4, "scale": [1.5, 2.0]})}),
+    # alphaMode MASK on a double-sided material: holes cut by the texture's alpha show the inside,
+    # lit with the normal turned (three.js's DoubleSide).
+    _vrm_case("alpha_mask_double_sided", vw.sphere, PERSPECTIVE, DIRECTIONAL, MTOON,
+              {"base": (lambda x, y: (255, 255, 255, 255 if (x // 4 + y // 4) % 2 else 0), SMOOTH)},
+              material={"alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True}),
     # MToon's maps: a normal map, a matcap, an emissive and a shade multiply texture (LINEAR, no mipmaps).
     _vrm_case("maps_normal_matcap_emissive", vw.sphere, PERSPECTIVE, DIRECTIONAL,
               dict(MTOON, emissiveFactor=[1, 1, 1], matcapFactor=[1, 1, 1]), MAPS),

@@ -17,6 +17,9 @@ function loader() {
 
 async function vrmScene(c) {
   const gltf = await loader().loadAsync('/cases/' + c.file);
+  // What VRM.update(delta) does for the materials every frame: MToonMaterial.update uploads
+  // uniforms it keeps no other way (alphaTest among them) and moves the UV animation (time 0).
+  for (const m of gltf.userData.vrmMToonMaterials ?? []) m.update(0);
   const scene = new THREE.Scene();
   scene.add(gltf.scene);
   return { scene, camera: gltf.cameras[0] };
@@ -28,6 +31,7 @@ async function jsonScene(c, width, height) {
   const desc = await (await fetch('/cases/' + c.file)).json();
   const gltf = await loader().loadAsync('/cases/' + desc.mesh);
   const material = new MToonMaterial({ color: colour(desc.material.color) });
+  material.update(0);
   gltf.scene.traverse((o) => { if (o.isMesh) o.material = material; });
   const scene = new THREE.Scene();
   scene.add(gltf.scene);

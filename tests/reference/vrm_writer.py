@@ -13,8 +13,9 @@ import png_file
 
 
 def png(width, height, texel):
-    """An RGB PNG's bytes, texel(x, y) -> (r, g, b), row 0 at the top."""
-    return png_file.encode(width, height, bytes(c for y in range(height) for x in range(width) for c in texel(x, y)), 3)
+    """An RGB or RGBA PNG's bytes, texel(x, y) -> (r, g, b) or (r, g, b, a), row 0 at the top."""
+    channels = len(texel(0, 0))
+    return png_file.encode(width, height, bytes(c for y in range(height) for x in range(width) for c in texel(x, y)), channels)
 
 
 class Mesh:
@@ -209,7 +210,7 @@ def _add_textures(g, doc, textures):
     return index
 
 
-def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, mesh_node=None):
+def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, mesh_node=None, gltf_material=None):
     """Writes a GLB: `mesh` with one material, the camera node and the light node.
 
     mtoon: VRMC_materials_mtoon fields plus the glTF material's "baseColorFactor" and optional
@@ -217,7 +218,8 @@ def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, 
     floatProperties, vectorProperties; a "base" texture becomes _MainTex). camera/light: dicts for
     _camera/_light plus "eye", "target". textures: {slot: {"png": bytes, "sampler": glTF sampler
     or None, "transform": KHR_texture_transform or None}}, slots "base", "normal", "emissive", "matcap", "shadeMultiply", "rimMultiply",
-    "shadingShift". mesh_node: extra glTF node fields (rotation, scale). size: (width, height)."""
+    "shadingShift". mesh_node: extra glTF node fields (rotation, scale); gltf_material: extra glTF
+    material fields (alphaMode, alphaCutoff, doubleSided). size: (width, height)."""
     g = _Glb()
     prim = {"attributes": {"POSITION": g.floats(mesh.p, "VEC3", True), "NORMAL": g.floats(mesh.n, "VEC3"),
                            "TEXCOORD_0": g.floats(mesh.uv, "VEC2")}, "indices": g.indices(mesh.t), "material": 0}
@@ -231,7 +233,7 @@ def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, 
                      {"translation": light["eye"], "rotation": look_at(light["eye"], light["target"]),
                       "extensions": {"KHR_lights_punctual": {"light": 0}}}],
            "scenes": [{"nodes": [0, 1, 2]}], "scene": 0}
-    material = {"name": "surface", "pbrMetallicRoughness": {"metallicFactor": 0}}
+    material = dict({"name": "surface", "pbrMetallicRoughness": {"metallicFactor": 0}}, **(gltf_material or {}))
     index = _add_textures(g, doc, textures or {})
     if vrm0 is None:
         ext = dict(mtoon)
