@@ -196,26 +196,21 @@ def compare(ours, theirs):
     return objects, off, worst, diff
 
 
-def main():
+def parse_args():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--inkshade", required=True)
     parser.add_argument("--out", required=True, help="folder for the cases' files and pictures")
     parser.add_argument("--timeout", type=int, default=50, help="seconds Chromium may take for all cases")
     parser.add_argument("--interim", action="store_true", help="render VRMs with the interim mtoon flags")
     parser.add_argument("--only", help="comma-separated case names")
-    args = parser.parse_args()
+    return parser.parse_args()
 
-    missing = [p for p in NEEDED if not os.path.isfile(os.path.join(MODULES, p))]
-    chromium = find_chromium()
-    if missing or not chromium:
-        fail("%s missing; run scripts/setup" % ("Chromium" if not chromium else "tests/reference/node_modules/" + missing[0]))
-    cases = three_vrm_cases.CASES
-    if args.only:
-        cases = [c for c in cases if c["name"] in args.only.split(",")]
-    os.makedirs(args.out, exist_ok=True)
+
+def render_both(args, chromium, cases):
+    """Writes the cases, renders them on both sides at once; returns (Inkshade errors, Results)."""
     cases_dir = os.path.join(args.out, "cases")
     os.makedirs(cases_dir, exist_ok=True)
-    start, ready = time.monotonic(), threading.Event()
+    ready = threading.Event()
     with concurrent.futures.ThreadPoolExecutor(1) as pool:
         reference = pool.submit(render_reference, chromium, cases_dir, cases, args.out, args.timeout, ready)
         try:
@@ -224,37 +219,55 @@ def main():
         finally:
             ready.set()
         errors = render_inkshade(args, cases, cases_dir)
-        theirs = reference.result()
+        return errors, reference.result()
+
+
+def judge(out, name, error, reference):
+    """(table line, whether the case is within the tolerance); writes the pictures."""
+    if error:
+        return "%-28s inkshade failed: %s" % (name, error.splitlines()[-1]), False
+    if reference is None:
+        return "%-28s three-vrm drew nothing" % name, False
+    w, h, pixels = reference
+    png_file.write(os.path.join(out, name + ".three-vrm.png"), w, h, pixels)
+    ours = png_file.read_rgba(os.path.join(out, name + ".inkshade.png"))
+    if ours[:2] != (w, h):
+        return "%-28s sizes differ: %dx%d vs %dx%d" % (name, ours[0], ours[1], w, h), False
+    objects, off, worst, diff = compare(ours, (w, h, pixels))
+    png_file.write(os.path.join(out, name + ".diff.png"), w, h, diff)
+    share = off / objects if objects else 1.0
+    return "%-28s %9d %7.2f%% %6d" % (name, objects, 100 * share, worst), share <= PASS_FRACTION
+
+
+def main():
+    args = parse_args()
+    missing = [p for p in NEEDED if not os.path.isfile(os.path.join(MODULES, p))]
+    chromium = find_chromium()
+    if missing or not chromium:
+        fail("%s missing; run scripts/setup" % ("Chromium" if not chromium else "tests/reference/node_modules/" + missing[0]))
+    cases = three_vrm_cases.CASES
+    if args.only:
+        cases = [c for c in cases if c["name"] in args.only.split(",")]
+    os.makedirs(args.out, exist_ok=True)
+    start = time.monotonic()
+    errors, theirs = render_both(args, chromium, cases)
     if theirs.error:
-        fail("three-vrm page: " + theirs.error.splitlines()[0] if theirs.error.strip() else "three-vrm page failed")
+        fail("three-vrm page: " + (theirs.error.strip().splitlines() or ["failed"])[0])
 
     print("%-28s %9s %8s %6s" % ("case", "object px", "% off", "max"))
-    failed = []
+    failed, pending = [], three_vrm_cases.PENDING
     for c in cases:
-        name = c["name"]
-        if errors.get(name):
-            print("%-28s inkshade failed: %s" % (name, errors[name].splitlines()[-1]))
-            failed.append(name)
-            continue
-        if name not in theirs.images:
-            print("%-28s three-vrm drew nothing" % name)
-            failed.append(name)
-            continue
-        w, h, pixels = theirs.images[name]
-        png_file.write(os.path.join(args.out, name + ".three-vrm.png"), w, h, pixels)
-        ours_image = png_file.read_rgba(os.path.join(args.out, name + ".inkshade.png"))
-        if ours_image[:2] != (w, h):
-            print("%-28s sizes differ: %dx%d vs %dx%d" % (name, ours_image[0], ours_image[1], w, h))
-            failed.append(name)
-            continue
-        objects, off, worst, diff = compare(ours_image, (w, h, pixels))
-        png_file.write(os.path.join(args.out, name + ".diff.png"), w, h, diff)
-        share = off / objects if objects else 1.0
-        print("%-28s %9d %7.2f%% %6d%s" % (name, objects, 100 * share, worst, "" if share <= PASS_FRACTION else "  FAIL"))
-        if share > PASS_FRACTION:
-            failed.append(name)
-    print("%d of %d cases within %d/255 on all but %.1f %% of their pixels; %.1f s; pictures in %s"
-          % (len(cases) - len(failed), len(cases), TOLERANCE, 100 * PASS_FRACTION, time.monotonic() - start, args.out))
+        line, ok = judge(args.out, c["name"], errors.get(c["name"]), theirs.images.get(c["name"]))
+        if c["name"] in pending:
+            # A known difference waits for its fix; once fixed, the case must leave PENDING.
+            line += "  pending: " + pending[c["name"]] if not ok else "  PASSES: remove it from PENDING"
+            ok = not ok
+        print(line if ok else line + ("" if "PENDING" in line else "  FAIL"))
+        if not ok:
+            failed.append(c["name"])
+    print("%d of %d cases as expected (within %d/255 on all but %.1f %% of their pixels, or pending); "
+          "%.1f s; pictures in %s" % (len(cases) - len(failed), len(cases), TOLERANCE, 100 * PASS_FRACTION,
+                                      time.monotonic() - start, args.out))
     if theirs.log.strip():
         print("three-vrm console errors:\n" + theirs.log)
     return 1 if failed else 0
