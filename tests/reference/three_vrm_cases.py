@@ -47,6 +47,13 @@ def textured_sphere():
     return vw.sphere(u_scale=3.0, phase=-math.pi)
 
 
+def coloured_sphere():
+    """The sphere with linear vertex colours (COLOR_0) that vary over it."""
+    mesh = vw.sphere()
+    mesh.colors = [(0.5 + 0.5 * p[0], 0.6, 0.5 + 0.5 * p[1]) for p in mesh.p]
+    return mesh
+
+
 def _vrm_case(name, mesh, camera, light, mtoon=None, textures=None, vrm0=None, size=SIZE, node=None, material=None):
     def write(folder):
         made = {slot: {"png": vw.png(16, 16, spec[0]), "sampler": spec[1], "transform": spec[2] if len(spec) > 2 else None}
@@ -130,6 +137,8 @@ CASES = [
     _vrm_case("alpha_mask_double_sided", vw.sphere, PERSPECTIVE, DIRECTIONAL, MTOON,
               {"base": (lambda x, y: (255, 255, 255, 255 if (x // 4 + y // 4) % 2 else 0), SMOOTH)},
               material={"alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True}),
+    # COLOR_0 on an MToon mesh: three-vrm's MToonMaterial ignores it (ignoreVertexColor true).
+    _vrm_case("vertex_colors", coloured_sphere, PERSPECTIVE, DIRECTIONAL, MTOON),
     # MToon's maps: a normal map, a matcap, an emissive and a shade multiply texture (LINEAR, no mipmaps).
     _vrm_case("maps_normal_matcap_emissive", vw.sphere, PERSPECTIVE, DIRECTIONAL,
               dict(MTOON, emissiveFactor=[1, 1, 1], matcapFactor=[1, 1, 1]), MAPS),
@@ -155,5 +164,6 @@ PENDING = {
     "outline_screen": "outline lighting normal; screenCoordinates width as three-vrm 3.5.5's mtoon.vert",
     "vrm0_outline_world": "outline lighting normal",
     "vrm0_texture_offset_scale": "outline lighting normal",
+    "vertex_colors": "Inkshade multiplies the base colour by COLOR_0; three-vrm's MToonMaterial ignores it",
     "scene_mtoon_color_only": "MToonMaterial's defaults in scene JSON (shadeColorFactor 0, rim mix 1, power 5)",
 }

@@ -19,10 +19,11 @@ def png(width, height, texel):
 
 
 class Mesh:
-    """Positions, unit normals, uvs and counter-clockwise triangles."""
+    """Positions, unit normals, uvs, counter-clockwise triangles and optional linear vertex
+    colours (written as COLOR_0)."""
 
-    def __init__(self, p, n, uv, t):
-        self.p, self.n, self.uv, self.t = p, n, uv, t
+    def __init__(self, p, n, uv, t, colors=None):
+        self.p, self.n, self.uv, self.t, self.colors = p, n, uv, t, colors
 
 
 def _grid(rows, cols, point, u_scale=1.0):
@@ -223,6 +224,8 @@ def write_vrm(path, mesh, mtoon, camera, light, size, textures=None, vrm0=None, 
     g = _Glb()
     prim = {"attributes": {"POSITION": g.floats(mesh.p, "VEC3", True), "NORMAL": g.floats(mesh.n, "VEC3"),
                            "TEXCOORD_0": g.floats(mesh.uv, "VEC2")}, "indices": g.indices(mesh.t), "material": 0}
+    if getattr(mesh, "colors", None):
+        prim["attributes"]["COLOR_0"] = g.floats(mesh.colors, "VEC3")
     doc = {"asset": {"version": "2.0", "generator": "Inkshade tests/reference/vrm_writer.py"},
            "extensionsUsed": ["KHR_lights_punctual"],
            "extensions": {"KHR_lights_punctual": {"lights": [_light(light)]}},
