@@ -221,6 +221,9 @@ public:
         if (!request.time && !loaded.animation.empty()) request.time = loaded.time;
         if (request.expressions.empty()) request.expressions = loaded.expressions;
         if (request.morphs.empty()) request.morphs = loaded.morphs;
+        // Without a look, the mesh file's default (vrm for MToon files), as the CLI's.
+        if (request.style.empty() && request.shading.empty() && !request.style_data)
+            request.style = default_style_name(mesh_.path);
         Scene scene = make_scene(request);
         const Pose pose = scene.load_options().pose;
         if (extractor_ && !same_pose(pose, loaded)) {
@@ -448,11 +451,12 @@ void def_renderer(py::module_& m) {
         if (!background.is_none()) request.background = to_color("background", background, true);
         return r.render(r.posed(request));
             },
-            py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
+            py::arg("style") = "", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
             py::arg("aov") = std::vector<std::string>{},
             ("RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
-             "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
+             "render` writes for the same options (style '': the mesh file's default, vrm for a file with MToon "
+             "materials, else lambert); `lines` adds line types to the style, as `inkshade render "
              "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, camera) a dict instead: "
              "'image', one array per AOV ('lines-TYPE' per line type) and 'camera' (docs/aov.md). Keywords:" +
              keyword_doc(kPython))

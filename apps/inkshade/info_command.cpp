@@ -79,6 +79,7 @@ void print_lights(const Mesh& mesh) {
         if (l.type != FileLightType::Point) std::printf(", shining %s", vec3_text(p.forward).c_str());
         std::printf("\n");
     }
+    for (const std::string& unusable : mesh.unusable_lights) std::printf("  not usable: %s\n", unusable.c_str());
 }
 
 // The names --animation, --morph and --expression take (glTF/VRM), one a line; a kind the file

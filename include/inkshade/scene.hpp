@@ -39,10 +39,16 @@ struct OcclusionLevels {
 // InputError else.
 OcclusionLevels parse_occlusion_levels(const std::string& text);
 
+// The style a request without a look takes for `model`: "vrm" (three-vrm's look) for a glTF,
+// GLB or VRM file with MToon materials (VRMC_vrm, VRM 0.x or VRMC_materials_mtoon), read from
+// the file's JSON; "lambert" for everything else.
+std::string default_style_name(const std::string& model);
+
 struct SceneRequest {
     std::string model;  // mesh file or builtin:NAME (load_mesh)
     // The look: a style (built-in name or .toml file) or a shading model with its default
-    // parameters; at most one of the two. Neither: `style_data` when given, else lambert.
+    // parameters; at most one of the two. Neither: `style_data` when given, else the model's
+    // default_style_name.
     std::string style;
     std::string shading;
     // A style given as data (a three.js scene's material, lights and background). With `style`

@@ -101,10 +101,12 @@ OptionSpec bind_choice(OptionSpec spec, Ref ref, std::vector<Enum> values) {
 void add_look(std::vector<OptionSpec>& t) {
     using K = OptionKind;
     t.push_back(bind({.name = "style", .kind = K::Text, .value = "NAME|FILE",
-                      .help = "built-in style name or style file (.toml); see `inkshade styles`", .fronts = kScene},
+                      .help = "built-in style name or style file (.toml); see `inkshade styles`; default vrm for a file "
+                              "with MToon materials (VRM), else lambert",
+                      .fronts = kScene},
                      [](auto& r) -> auto& { return r.style; }));
     t.push_back(bind({.name = "shading", .kind = K::Text, .value = "NAME",
-                      .help = "shading model with its default parameters (default lambert)", .fronts = kScene},
+                      .help = "shading model with its default parameters", .fronts = kScene},
                      [](auto& r) -> auto& { return r.shading; }));
     t.push_back(bind({.name = "set", .kind = K::Overrides, .value = "[MODEL.]PARAM=VALUE",
                       .help = "parameter override [model.]param=value, or TYPE.param=value for a line type "

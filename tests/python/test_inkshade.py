@@ -479,10 +479,25 @@ class PoseTest(unittest.TestCase):
 
     def cli_png(self, *options):
         png = os.path.join(self.tmp.name, "cli.png")
-        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", *options, "-o", png],
+        # --style lambert: the avatar is a VRM, whose default look is vrm (Python's too without a style)
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--style", "lambert", "--size", "64x48", *options,
+                                 "-o", png],
                                 capture_output=True, text=True)
         self.assertEqual(result.returncode, 0, result.stderr)
         return read_png(png)
+
+    def test_render_without_a_style_takes_the_files_default_look(self):
+        # A VRM file's default look is the vrm style, in Python as in `inkshade render FILE`.
+        r = inkshade.Renderer()
+        r.set_mesh(inkshade.load_mesh(self.model))
+        png = os.path.join(self.tmp.name, "plain.png")
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", "-o", png],
+                                capture_output=True, text=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        plain = r.render(size=(64, 48))
+        np.testing.assert_array_equal(plain, read_png(png))
+        np.testing.assert_array_equal(plain, r.render("vrm", size=(64, 48)))
+        self.assertFalse(np.array_equal(plain, r.render("lambert", size=(64, 48))))
 
     def test_render_keywords_are_the_clis_options(self):
         r = inkshade.Renderer()
