@@ -157,13 +157,5 @@ CASES = [
 # Cases that differ from three-vrm for a known reason being fixed, with the reason. The test
 # passes while they fail and fails once one passes, so that it leaves this list.
 PENDING = {
-    "texture_nearest_repeat": "glTF sampler filters and wrap modes",
-    "texture_linear_clamp": "glTF sampler filters and wrap modes",
-    "texture_transform_rotated": "mipmaps only when the sampler's min filter asks (silhouette texels)",
-    "outline_world": "outline lighting normal",
-    "outline_screen": "outline lighting normal; screenCoordinates width as three-vrm 3.5.5's mtoon.vert",
-    "vrm0_outline_world": "outline lighting normal",
-    "vrm0_texture_offset_scale": "outline lighting normal",
     "vertex_colors": "Inkshade multiplies the base colour by COLOR_0; three-vrm's MToonMaterial ignores it",
-    "scene_mtoon_color_only": "MToonMaterial's defaults in scene JSON (shadeColorFactor 0, rim mix 1, power 5)",
 }

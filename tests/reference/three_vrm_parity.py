@@ -34,9 +34,6 @@ TOLERANCE = 3  # levels of 255 a channel may differ by
 PASS_FRACTION = 0.005  # of the object pixels that may be off
 # Inkshade draws a VRM's MToon materials as three-vrm does with the file's camera and light.
 INKSHADE_VRM = ["--camera", "0", "--lights", "file"]
-# Until `render FILE.vrm` alone draws what three-vrm draws, the flags that make it do so.
-INKSHADE_INTERIM = ["--style", "mtoon", "--set", "convention=threejs", "--set", "shadows=false",
-                    "--ambient", "0,0,0"]
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                   "--disable-quic", "--no-first-run", "--disable-background-networking",
                   "--disable-component-update", "--disable-sync", "--disable-dev-shm-usage",
@@ -150,20 +147,20 @@ def render_reference(chromium, cases_dir, cases, out, timeout, ready):
     return results
 
 
-def inkshade_command(inkshade, case, cases_dir, target, interim):
+def inkshade_command(inkshade, case, cases_dir, target):
     w, h = case["size"]
     common = ["--samples", "1", "--size", "%dx%d" % (w, h), "--background", "transparent", "-o", target]
     source = os.path.join(cases_dir, case["file"])
     if case["kind"] == "scene":
         return [inkshade, "render", "--scene", source] + common
-    return [inkshade, "render", source] + INKSHADE_VRM + (INKSHADE_INTERIM if interim else []) + common
+    return [inkshade, "render", source] + INKSHADE_VRM + common
 
 
 def render_inkshade(args, cases, cases_dir):
     """Runs the Inkshade renders two at a time; returns {name: error message or None}."""
     def one(case):
         target = os.path.join(args.out, case["name"] + ".inkshade.png")
-        command = inkshade_command(args.inkshade, case, cases_dir, target, args.interim)
+        command = inkshade_command(args.inkshade, case, cases_dir, target)
         run = subprocess.run(command, capture_output=True, text=True)
         return case["name"], (run.stderr.strip() or "exit %d" % run.returncode) if run.returncode else None
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
@@ -201,7 +198,6 @@ def parse_args():
     parser.add_argument("--inkshade", required=True)
     parser.add_argument("--out", required=True, help="folder for the cases' files and pictures")
     parser.add_argument("--timeout", type=int, default=50, help="seconds Chromium may take for all cases")
-    parser.add_argument("--interim", action="store_true", help="render VRMs with the interim mtoon flags")
     parser.add_argument("--only", help="comma-separated case names")
     return parser.parse_args()
 
