@@ -30,9 +30,9 @@ glm::mat3 uv_transform(double offset_s, double offset_t, double rotation, double
     const double c = std::cos(rotation), s = std::sin(rotation);
     glm::mat3 m(1.0f);  // m[column][row]
     m[0][0] = float(scale_s * c);
-    m[1][0] = float(scale_s * s);
+    m[1][0] = float(scale_t * s);
     m[2][0] = float(offset_s);
-    m[0][1] = float(-scale_t * s);
+    m[0][1] = float(-scale_s * s);
     m[1][1] = float(scale_t * c);
     m[2][1] = float(offset_t);
     return m;
@@ -53,8 +53,9 @@ std::optional<glm::mat3> vrm0_main_texture_transform(const tinygltf::Value& vect
     const double offset_t = element(vector_properties, "_MainTex", 1, 0.0);
     const double scale_s = element(vector_properties, "_MainTex", 2, 1.0);
     const double scale_t = element(vector_properties, "_MainTex", 3, 1.0);
-    // JavaScript's % keeps the dividend's sign, as std::fmod does.
-    return uv_transform(offset_s, std::fmod(scale_t * (1.0 - offset_t), 1.0), 0.0, scale_s, scale_t);
+    // three-vrm 3.5.5 VRMMaterialsV0CompatPlugin._portTextureTransform: offset[1] = 1 - scale[1]
+    // - offset[1] (Unity's t runs up the image, glTF's down it).
+    return uv_transform(offset_s, 1.0 - scale_t - offset_t, 0.0, scale_s, scale_t);
 }
 
 }  // namespace inkshade::io

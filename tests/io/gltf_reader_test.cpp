@@ -475,10 +475,13 @@ TEST(GltfReader, VrmOneMapsEmissionAndUvAnimationAreRead) {
     EXPECT_FLOAT_EQ(d.at("uv-animation-rotation-speed")[0], 0.0f);
 }
 
-// KHR_texture_transform as three.js's GLTFLoader and Texture.matrix apply it: rotate, scale,
-// then offset, s' = sx (cos r s + sin r t) + ox, t' = sy (-sin r s + cos r t) + oy.
+// KHR_texture_transform as three.js r187's GLTFLoader.extendTexture sets the texture's matrix
+// when there is a rotation (the extension's T R S: scale, rotate, then offset; setUvTransform,
+// which rotates first, gives the same matrix without one):
+// s' = cos r sx s + sin r sy t + ox, t' = -sin r sx s + cos r sy t + oy.
 glm::vec2 three_uv(glm::vec2 st, float ox, float oy, float r, float sx, float sy) {
-    return {sx * (std::cos(r) * st.x + std::sin(r) * st.y) + ox, sy * (-std::sin(r) * st.x + std::cos(r) * st.y) + oy};
+    return {std::cos(r) * sx * st.x + std::sin(r) * sy * st.y + ox,
+            -std::sin(r) * sx * st.x + std::cos(r) * sy * st.y + oy};
 }
 glm::vec2 apply(const glm::mat3& m, glm::vec2 st) { return glm::vec2(m * glm::vec3(st, 1.0f)); }
 void expect_near2(glm::vec2 a, glm::vec2 b, float eps) { expect_near(glm::vec3(a, 0.0f), glm::vec3(b, 0.0f), eps); }
@@ -507,7 +510,8 @@ TEST(GltfReader, TextureTransformsAreReadAsThreeJsAppliesThem) {
     for (const std::string& w : m.warnings) EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;
 
     // VRM 0.x: _MainTex [offset s, offset t, scale s, scale t] ported as three-vrm ports it
-    // (offset t' = (scale t (1 - offset t)) mod 1), for every texture but the matcap.
+    // (three-vrm 3.5.5 _portTextureTransform: offset t' = 1 - scale t - offset t), for every
+    // texture but the matcap.
     GltfBuilder v0 = textured_quad();
     nlohmann::json props = vrm0_material_properties();
     props[0]["vectorProperties"]["_MainTex"] = {0.25, 0.1, 2, 3};
@@ -515,7 +519,7 @@ TEST(GltfReader, TextureTransformsAreReadAsThreeJsAppliesThem) {
     v0.doc["extensions"]["VRM"] = {{"materialProperties", props}};
     const Mesh old = load_mesh(dir.write("old.vrm", v0.glb()));
     const Material& o = old.materials[0];
-    const glm::vec2 want = three_uv(st, 0.25f, std::fmod(3.0f * 0.9f, 1.0f), 0.0f, 2, 3);
+    const glm::vec2 want = three_uv(st, 0.25f, 1.0f - 3.0f - 0.1f, 0.0f, 2, 3);
     for (const char* key : {"base-color-texture", "shade-multiply-texture", "emissive-texture"}) {
         ASSERT_TRUE(o.uv_transforms.count(key)) << key;
         expect_near2(apply(o.uv_transforms.at(key), st), want, 1e-5f);

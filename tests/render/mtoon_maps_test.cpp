@@ -349,8 +349,8 @@ TEST(MtoonMaps, UvAnimationScrollsTheTexturesBySpeedTimesTime) {
         [&](const glm::vec3& p) { return texture_pixel(*tex, animated(st_of(p), a, 1.0f)); }, "scrolled");
 }
 
-// KHR_texture_transform on the base colour texture (Material::uv_transforms): three.js's
-// setUvTransform (rotate, then scale, then offset) applied to the animated uv, here with a
+// KHR_texture_transform on the base colour texture (Material::uv_transforms): the matrix
+// GLTFLoader gives three-vrm (scale, rotate, then offset) applied to the animated uv, here with a
 // scroll at time 1 so the order shows.
 TEST(MtoonMaps, TextureTransformMovesTheAnimatedUvAsThreeJs) {
     const auto tex = waves(0.3f);
