@@ -64,6 +64,9 @@ void GltfMeshBuilder::add_primitive(const tinygltf::Primitive& prim, const GltfI
 
     const uint32_t material = materials_.index(prim.material);
     const glm::vec3 base_colour = mesh_.materials[material].diffuse;
+    // three-vrm's MToonMaterial leaves COLOR_0 out (ignoreVertexColor, true by default and never
+    // changed by its loaders): an MToon material's vertices take its colour alone.
+    if (!mesh_.materials[material].mtoon.empty()) attrs.colours.clear();
     append_positions_and_normals(pos, attrs.normals, n, transform);
     append_uvs_and_colours(attrs, base, n, base_colour);
     for (const glm::uvec3& t : tris) {

@@ -157,5 +157,4 @@ CASES = [
 # Cases that differ from three-vrm for a known reason being fixed, with the reason. The test
 # passes while they fail and fails once one passes, so that it leaves this list.
 PENDING = {
-    "vertex_colors": "Inkshade multiplies the base colour by COLOR_0; three-vrm's MToonMaterial ignores it",
 }
