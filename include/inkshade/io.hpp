@@ -20,7 +20,8 @@ struct NamedWeight {
 // then morph weights by name; skins deform the mesh on the CPU, so every later stage sees the
 // posed triangles. The default is the file as it is (its rest pose and default weights).
 struct Pose {
-    // A glTF animation, by name or index; empty = none.
+    // A glTF animation, by name or index, or a VRM animation file (a path ending in .vrma,
+    // retargeted to a VRM avatar's humanoid); empty = none.
     std::string animation;
     // Seconds into the animation, clamped to its keyframes' range.
     float time = 0.0f;
@@ -57,6 +58,19 @@ struct LoadOptions {
 // The result is indexed, validated (indices in range, finite coordinates) and has normals.
 // Problems that do not stop the load (a texture that cannot be read) are in Mesh::warnings.
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
+
+// A node of a glTF/VRM file in a pose (posed_nodes).
+struct PosedNode {
+    std::string name;                  // the node's name ("" when it has none)
+    std::string human_bone;            // its VRM humanoid bone ("" when none)
+    glm::vec3 position{0.0f};          // world position
+    std::vector<float> morph_weights;  // its mesh's morph target weights (empty: none)
+};
+
+// Every node of a glTF/VRM file (.gltf, .glb, .vrm), in file order, posed as load_mesh poses
+// it: to check a pose against another tool's (the tests compare three-vrm's). Throws
+// InputError as load_mesh does.
+std::vector<PosedNode> posed_nodes(const std::string& path, const Pose& pose);
 
 // Every file extension load_mesh reads, space-separated: ".obj .stl .ply .off .gltf .glb .vrm"
 // and, when built with assimp, the other formats it has importers for.
