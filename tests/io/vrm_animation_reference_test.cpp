@@ -76,8 +76,8 @@ void compare(const std::string& avatar, const Pose& pose, const nlohmann::json& 
 }
 
 void check_against_three_vrm(bool v0, const std::string& clip_name, const std::vector<NamedWeight>& expressions,
-                             const char* label) {
-    const std::string avatar = write_file(v0 ? "rig0.vrm" : "rig1.vrm", rig_avatar(v0).glb());
+                             const char* label, bool other_look_at = false) {
+    const std::string avatar = write_file(v0 ? "rig0.vrm" : "rig1.vrm", rig_avatar(v0, other_look_at).glb());
     const std::string clip = clip_name.empty() ? "-" : write_file(clip_name, rig_animation().glb());
     std::string args;
     for (const NamedWeight& e : expressions) args += " " + e.name + "=" + std::to_string(e.weight);
@@ -98,6 +98,12 @@ TEST(VrmAnimationReference, Vrm1AvatarMatchesThreeVrm) {
 
 TEST(VrmAnimationReference, Vrm0AvatarMatchesThreeVrm) {
     check_against_three_vrm(true, "clip.vrma", {}, "VRM 0.x avatar, .vrma");
+}
+
+// The other look-at types: VRM 1.0 expression (lookUp ... lookRight), VRM 0.x bone (eyes facing -z).
+TEST(VrmAnimationReference, OtherLookAtTypesMatchThreeVrm) {
+    check_against_three_vrm(false, "clip.vrma", {{"lookLeft", 1.0f}}, "VRM 1.0 avatar, expression look-at", true);
+    check_against_three_vrm(true, "clip.vrma", {}, "VRM 0.x avatar, bone look-at", true);
 }
 
 TEST(VrmAnimationReference, ConstraintsWithoutAnimationMatchThreeVrm) {

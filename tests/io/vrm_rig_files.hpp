@@ -160,8 +160,9 @@ inline void add_constraints(GltfBuilder& g, const std::map<std::string, int>& bo
                    {{"source", bones.at("spine")}, {"weight", 1.0}});
 }
 
-// The avatar: VRM 1.0 (bone look-at with range maps) or VRM 0.x (facing -z, BlendShape look-at).
-inline GltfBuilder rig_avatar(bool v0) {
+// The avatar: VRM 1.0 (bone look-at with range maps) or VRM 0.x (facing -z, BlendShape look-at),
+// or with `other_look_at` the other type of look-at.
+inline GltfBuilder rig_avatar(bool v0, bool other_look_at = false) {
     GltfBuilder g;
     const glm::dmat4 root_world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 0.05));
     const int root = g.node({{"name", "Armature"}, {"translation", {0, 0, 0.05}}});
@@ -185,7 +186,7 @@ inline GltfBuilder rig_avatar(bool v0) {
             {"humanoid", {{"humanBones", human}}},
             {"expressions", {{"preset", preset}, {"custom", custom}}},
             {"lookAt",
-             {{"type", "bone"},
+             {{"type", other_look_at ? "expression" : "bone"},
               {"offsetFromHeadBone", {0, 0.06, 0}},
               {"rangeMapHorizontalInner", {{"inputMaxValue", 60}, {"outputScale", 20}}},
               {"rangeMapHorizontalOuter", {{"inputMaxValue", 45}, {"outputScale", 30}}},
@@ -216,7 +217,7 @@ inline GltfBuilder rig_avatar(bool v0) {
                                   {"firstPerson",
                                    {{"firstPersonBone", bones.at("head")},
                                     {"firstPersonBoneOffset", {{"x", 0}, {"y", 0.06}, {"z", 0}}},
-                                    {"lookAtTypeName", "BlendShape"},
+                                    {"lookAtTypeName", other_look_at ? "Bone" : "BlendShape"},
                                     {"lookAtHorizontalInner", degree_map(90, 1)},
                                     {"lookAtHorizontalOuter", degree_map(40, 0.8)},
                                     {"lookAtVerticalDown", degree_map(30, 0.9)},
