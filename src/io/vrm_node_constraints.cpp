@@ -14,6 +14,8 @@ namespace inkshade::io {
 
 namespace {
 
+constexpr size_t kMaxChain = 1024;
+
 const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
     static const tinygltf::Value none;
     return object.IsObject() && object.Has(key) ? object.Get(key) : none;
@@ -143,8 +145,11 @@ std::vector<size_t> vrm_node_constraint_order(const std::vector<VrmNodeConstrain
         for (int at = node; at >= 0 && chain.size() <= parent.size(); at = parent[size_t(at)]) chain.push_back(at);
         return chain;
     };
-    std::function<void(size_t)> process = [&](size_t i) {
+    std::function<void(size_t, size_t)> process = [&](size_t i, size_t depth) {
         if (state[i] == 2) return;
+        if (depth > kMaxChain)  // a bound on the recursion, far above any avatar's
+            throw InputError(path, "VRMC_node_constraint: constraints depend on each other more than " +
+                                       std::to_string(kMaxChain) + " deep");
         if (state[i] == 1)
             throw InputError(path, "VRMC_node_constraint: circular dependency (the constraint on node " +
                                        std::to_string(constraints[i].destination) + " depends on itself)");
@@ -156,12 +161,12 @@ std::vector<size_t> vrm_node_constraint_order(const std::vector<VrmNodeConstrain
         for (int d : depends) {
             const std::vector<int> chain = with_ancestors(d);
             for (auto it = chain.rbegin(); it != chain.rend(); ++it)  // from the root, as three-vrm
-                for (size_t j : on_node[size_t(*it)]) process(j);
+                for (size_t j : on_node[size_t(*it)]) process(j, depth + 1);
         }
         state[i] = 2;
         order.push_back(i);
     };
-    for (size_t i = 0; i < constraints.size(); ++i) process(i);
+    for (size_t i = 0; i < constraints.size(); ++i) process(i, 0);
     return order;
 }
 

@@ -228,6 +228,10 @@ TEST(VrmNodeConstraints, DependenciesComeFirstAndCyclesAreErrors) {
     EXPECT_THROW(io::vrm_node_constraint_order(list, {-1, 0, -1}, "f"), InputError);
     list = {{K::Roll, 1, 1, {1, 0, 0}, 1.0}};  // its own source
     EXPECT_THROW(io::vrm_node_constraint_order(list, parent, "f"), InputError);
+    // A chain of 5000 constraints, each reading the next: an error, not a stack overflow.
+    list.clear();
+    for (int i = 0; i < 5000; ++i) list.push_back({K::Rotation, i, i + 1, {1, 0, 0}, 1.0});
+    EXPECT_THROW(io::vrm_node_constraint_order(list, std::vector<int>(5001, -1), "f"), InputError);
 }
 
 // Loading `avatar` with `clip` is one InputError whose message contains `expected`.
