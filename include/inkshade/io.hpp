@@ -59,17 +59,17 @@ struct LoadOptions {
 // Problems that do not stop the load (a texture that cannot be read) are in Mesh::warnings.
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 
-// A node of a glTF/VRM file in a pose (posed_nodes).
+// A node of a glTF/VRM file and where a pose puts it (world space, the file's units).
 struct PosedNode {
-    std::string name;                  // the node's name ("" when it has none)
+    std::string name;
+    glm::dvec3 position{0.0};
     std::string human_bone;            // its VRM humanoid bone ("" when none)
-    glm::vec3 position{0.0f};          // world position
-    std::vector<float> morph_weights;  // its mesh's morph target weights (empty: none)
+    std::vector<float> morph_weights;  // its mesh's morph target weights in the pose (empty: none)
 };
 
-// Every node of a glTF/VRM file (.gltf, .glb, .vrm), in file order, posed as load_mesh poses
-// it: to check a pose against another tool's (the tests compare three-vrm's). Throws
-// InputError as load_mesh does.
+// Every node of a glTF, GLB or VRM file, in file order, placed as load_mesh places them in
+// `pose` (animation, VRM animation, look-at, node constraints): for comparing a pose with other
+// tools' (three-vrm's). Throws InputError as load_mesh does.
 std::vector<PosedNode> posed_nodes(const std::string& path, const Pose& pose);
 
 // Every file extension load_mesh reads, space-separated: ".obj .stl .ply .off .gltf .glb .vrm"

@@ -47,7 +47,7 @@ public:
     void deform(size_t node, const tinygltf::Primitive& primitive, std::vector<float>& positions,
                 std::vector<float>& normals, const std::string& where) const;
 
-    // The node's world matrix in this pose.
+    // The node's world transform: its parents' local transforms and its own.
     glm::dmat4 world(size_t node) const override;
     // The morph weights of the node's mesh in this pose (empty: none).
     const std::vector<float>& morph_weights(size_t node) const { return weights_[node]; }

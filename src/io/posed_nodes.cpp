@@ -1,4 +1,4 @@
-// posed_nodes (inkshade/io.hpp): the nodes of a glTF/VRM file in a pose, as read_gltf poses them.
+// posed_nodes (inkshade/io.hpp): the nodes of a glTF/VRM file where GltfPose puts them.
 #include <fstream>  // as in gltf_reader.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
 
 #include "io/tiny_gltf_config.hpp"
@@ -22,7 +22,7 @@ std::vector<PosedNode> posed_nodes(const std::string& path, const Pose& pose) {
     std::vector<PosedNode> out(model.nodes.size());
     for (size_t i = 0; i < out.size(); ++i) {
         out[i].name = model.nodes[i].name;
-        out[i].position = glm::vec3(posed.world(i)[3]);
+        out[i].position = glm::dvec3(posed.world(i)[3]);
         out[i].morph_weights = posed.morph_weights(i);
     }
     try {

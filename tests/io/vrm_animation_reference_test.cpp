@@ -62,7 +62,7 @@ void compare(const std::string& avatar, const Pose& pose, const nlohmann::json& 
         SCOPED_TRACE("node " + std::to_string(i) + " '" + ours[i].name + "' at t = " + std::to_string(pose.time));
         EXPECT_EQ(ours[i].name, t["name"].get<std::string>());
         const glm::dvec3 p(t["position"][0], t["position"][1], t["position"][2]);
-        const double d = glm::length(glm::dvec3(ours[i].position) - p);
+        const double d = glm::length(ours[i].position - p);
         max.position = std::max(max.position, d);
         EXPECT_LT(d, kPositionTolerance) << "ours " << ours[i].position.x << " " << ours[i].position.y << " "
                                          << ours[i].position.z << ", three-vrm " << p.x << " " << p.y << " " << p.z;

@@ -59,14 +59,14 @@ GltfBuilder one_bone_clip(const std::string& bone, const glm::dquat& rotation,
     return g;
 }
 
-glm::vec3 node_position(const std::vector<PosedNode>& nodes, const std::string& name) {
+glm::dvec3 node_position(const std::vector<PosedNode>& nodes, const std::string& name) {
     for (const PosedNode& n : nodes)
         if (n.name == name) return n.position;
     ADD_FAILURE() << "no node " << name;
-    return glm::vec3(0.0f);
+    return glm::dvec3(0.0);
 }
 
-void expect_near(glm::vec3 a, glm::dvec3 b, double tolerance = 1e-5) {
+void expect_near(glm::dvec3 a, glm::dvec3 b, double tolerance = 1e-5) {
     EXPECT_NEAR(a.x, b.x, tolerance);
     EXPECT_NEAR(a.y, b.y, tolerance);
     EXPECT_NEAR(a.z, b.z, tolerance);
