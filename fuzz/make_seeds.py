@@ -259,6 +259,54 @@ def vrm0():
     return g
 
 
+def posed():
+    """What the pose code reads: a strip skinned to two joints (JOINTS_0, WEIGHTS_0,
+    inverseBindMatrices), a named morph target bound by a VRM 1.0 expression, an animation of
+    rotation (LINEAR), translation (STEP) and weights (CUBICSPLINE), a camera, a spot and a point
+    light, a sampler and a KHR_texture_transform."""
+    g = textured_quad()
+    pos = g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0, 1, 2, 0], "VEC3", 3)
+    joints = g.accessor(g.view(bytes([0, 1, 0, 0] * 2 + [0, 1, 0, 0] * 2 + [1, 0, 0, 0] * 2)), 5121, 6, "VEC4")
+    weights = g.floats([1, 0, 0, 0] * 2 + [0.5, 0.5, 0, 0] * 2 + [1, 0, 0, 0] * 2, "VEC4", 4)
+    morph = g.floats([0, 0, 0.5] * 6, "VEC3", 3)
+    idx = g.u16([0, 1, 2, 1, 3, 2, 2, 3, 4, 3, 5, 4])
+    strip = g.mesh({"POSITION": pos, "JOINTS_0": joints, "WEIGHTS_0": weights}, idx, 0)
+    g.doc["meshes"][strip]["primitives"][0]["targets"] = [{"POSITION": morph}]
+    g.doc["meshes"][strip]["extras"] = {"targetNames": ["smile"]}
+    ibm = g.floats([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1], "MAT4", 16)
+    upper = g.node({"name": "upper", "translation": [0, 1, 0]})
+    lower = g.node({"name": "lower", "children": [upper]})
+    body = g.node({"name": "body", "mesh": strip, "skin": 0})
+    g.doc["skins"] = [{"joints": [lower, upper], "inverseBindMatrices": ibm, "skeleton": lower}]
+    times = g.floats([0, 1, 2], "SCALAR", 1)
+    turns = g.floats([0, 0, 0, 1, 0, 0, 0.3827, 0.9239, 0, 0, 0.7071, 0.7071], "VEC4", 4)
+    hops = g.floats([0, 0, 0, 0, 0.5, 0, 0, 0, 0], "VEC3", 3)
+    cubic = g.floats([0, 0, 0, 0, 1, 0, 0, 0, 0], "SCALAR", 1)
+    g.doc["animations"] = [{"name": "wave", "samplers": [
+        {"input": times, "output": turns},
+        {"input": times, "output": hops, "interpolation": "STEP"},
+        {"input": times, "output": cubic, "interpolation": "CUBICSPLINE"}], "channels": [
+        {"sampler": 0, "target": {"node": upper, "path": "rotation"}},
+        {"sampler": 1, "target": {"node": lower, "path": "translation"}},
+        {"sampler": 2, "target": {"node": body, "path": "weights"}}]}]
+    g.doc["samplers"] = [{"magFilter": 9728, "minFilter": 9986, "wrapS": 33071, "wrapT": 33648}]
+    g.doc["textures"][0]["sampler"] = 0
+    g.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+        "KHR_texture_transform": {"offset": [0.5, 0], "rotation": 0.3, "scale": [2, 2], "texCoord": 0}}
+    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1, "zfar": 100}}]
+    g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "spot", "name": "key", "intensity": 20, "range": 9, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.6}},
+        {"type": "point", "name": "fill", "color": [1, 0.5, 0.2]}]},
+        "VRMC_vrm": {"specVersion": "1.0", "expressions": {"preset": {
+            "happy": {"morphTargetBinds": [{"node": body, "index": 0, "weight": 1}], "overrideBlink": "block"}},
+            "custom": {"smirk": {"morphTargetBinds": [{"node": body, "index": 0, "weight": 0.5}], "isBinary": True}}}}}
+    g.doc["extensionsUsed"] = ["KHR_lights_punctual", "KHR_texture_transform", "VRMC_vrm"]
+    cam = g.node({"camera": 0, "translation": [0, 1, 4]})
+    lights = [g.node({"extensions": {"KHR_lights_punctual": {"light": i}}, "translation": [0, 3, 3]}) for i in (0, 1)]
+    g.doc["scenes"][0]["nodes"] += [lower, body, cam] + lights
+    return g
+
+
 def write_gltf():
     # Byte 0 picks the extension in fuzz_gltf (even: .gltf, odd: .glb).
     write("gltf", "quad_embedded.gltf", b"\0" + textured_quad(False).gltf())
@@ -268,6 +316,10 @@ def write_gltf():
     write("gltf", "hierarchy.glb", b"\1" + hierarchy().glb())
     write("gltf", "hierarchy.gltf", b"\0" + hierarchy().gltf())
     write("gltf", "vrm0.glb", b"\1" + vrm0().glb())
+    # Byte 0's other bits pose the file (fuzz_pose): 117 = glb, pose 58 (the animation at 3.75 s,
+    # the morph at 1.5, the expression at 0.5); 82 = gltf, pose 41 (no animation, the morph at 1.25).
+    write("gltf", "posed.glb", bytes([117]) + posed().glb())
+    write("gltf", "posed.gltf", bytes([82]) + posed().gltf())
 
 
 # --- styles ---------------------------------------------------------------------------------

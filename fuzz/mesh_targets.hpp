@@ -60,12 +60,35 @@ inline void ply_input(std::string_view data) {
     load_checked(path, mesh);
 }
 
-// glTF 2.0 JSON and GLB: byte 0 picks the extension (even: .gltf, odd: .glb; the reader also
-// decides by content); the rest is cut at "\n#%%\n" into the file and b.bin next to it (for
-// "uri": "b.bin" buffers and images).
+// The pose `choice` (1..127) picks among the names a loaded glTF/VRM file's pose takes: an
+// animation (or none) at a time of 0..5.5 s, the first morph target at a weight of -1..2.75 and
+// the first expression at 0, 0.5 or 1; the file is loaded again in it, so that animation
+// sampling, skinning, morph targets and VRM expression binds see the fuzzer's bytes.
+inline Pose fuzz_pose(const FilePoseNames& names, unsigned choice) {
+    Pose pose;
+    if (!names.animations.empty()) {
+        const size_t a = choice % (names.animations.size() + 1);
+        if (a < names.animations.size()) {
+            const std::string& name = names.animations[a].name;
+            pose.animation = name.empty() ? std::to_string(a) : name;
+            pose.time = float((choice * 7) % 23) * 0.25f;
+        }
+    }
+    if (!names.morph_targets.empty() && (choice & 8))
+        pose.morphs.push_back({names.morph_targets.front(), float(choice % 16) * 0.25f - 1.0f});
+    if (!names.expressions.empty() && (choice & 16))
+        pose.expressions.push_back({names.expressions.front().name, float(choice % 3) * 0.5f});
+    return pose;
+}
+
+// glTF 2.0 JSON and GLB: byte 0's lowest bit picks the extension (even: .gltf, odd: .glb; the
+// reader also decides by content), its other bits a pose (fuzz_pose; 0: the rest pose only); the
+// rest is cut at "\n#%%\n" into the file and b.bin next to it (for "uri": "b.bin" buffers and
+// images).
 inline void gltf_input(std::string_view data) {
     if (data.empty()) return;
-    const char* name = static_cast<unsigned char>(data[0]) % 2 == 0 ? "input.gltf" : "input.glb";
+    const unsigned byte0 = static_cast<unsigned char>(data[0]);
+    const char* name = byte0 % 2 == 0 ? "input.gltf" : "input.glb";
     const auto parts = split(data.substr(1), kPartMarker, 2);
     const std::string path = write_file(name, parts[0]);
     if (parts.size() > 1)
@@ -73,7 +96,17 @@ inline void gltf_input(std::string_view data) {
     else
         remove_file("b.bin");
     Mesh mesh;
-    load_checked(path, mesh);
+    if (!load_checked(path, mesh) || byte0 / 2 == 0 || mesh.pose_names.empty()) return;
+    LoadOptions posed;
+    posed.pose = fuzz_pose(mesh.pose_names, byte0 / 2);
+    if (posed.pose.is_rest()) return;
+    try {
+        mesh = load_mesh(path, posed);
+    } catch (const InputError& e) {
+        check_error(e, path);
+        return;
+    }
+    check_mesh(mesh);
 }
 
 // The mesh pipeline after loading, on whatever a loader accepts: welding and normals (load_mesh),

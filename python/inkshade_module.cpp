@@ -44,10 +44,15 @@ struct PyMesh : Mesh {
     LoadOptions load;
 };
 
-// Whether two poses give the same mesh: the time matters only to an animation.
-bool same_pose(const Pose& a, const Pose& b) {
+// Whether the time moves a mesh loaded in `pose`: by its animation or its spring bones.
+bool time_moves(const Pose& pose, const Mesh& mesh) {
+    return !pose.animation.empty() || (pose.spring_bones && mesh.pose_names.spring_joints > 0);
+}
+
+// Whether two poses give the same mesh (`mesh` loaded in `b`).
+bool same_pose(const Pose& a, const Pose& b, const Mesh& mesh) {
     return a.animation == b.animation && a.expressions == b.expressions && a.morphs == b.morphs &&
-           (a.animation.empty() || a.time == b.time);
+           a.spring_bones == b.spring_bones && (!time_moves(a, mesh) || a.time == b.time);
 }
 
 // A colour keyword: a string as the CLI takes it ("#ff8800", "0.2,0.4,0.6", "white") or a
@@ -218,12 +223,15 @@ public:
     Scene posed(SceneRequest request) {
         const Pose& loaded = mesh_.load.pose;
         if (request.animation.empty()) request.animation = loaded.animation;
-        if (!request.time && !loaded.animation.empty()) request.time = loaded.time;
+        if (!request.time && time_moves(loaded, mesh_)) request.time = loaded.time;
         if (request.expressions.empty()) request.expressions = loaded.expressions;
         if (request.morphs.empty()) request.morphs = loaded.morphs;
+        // Without a look, the mesh file's default (vrm for MToon files), as the CLI's.
+        if (request.style.empty() && request.shading.empty() && !request.style_data)
+            request.style = default_style_name(mesh_.path);
         Scene scene = make_scene(request);
         const Pose pose = scene.load_options().pose;
-        if (extractor_ && !same_pose(pose, loaded)) {
+        if (extractor_ && !same_pose(pose, loaded, mesh_)) {
             if (mesh_.path.empty()) throw InputError("this mesh cannot be posed: load it with load_mesh(path)");
             PyMesh again;
             again.load = mesh_.load;
@@ -320,9 +328,9 @@ void def_mesh(py::module_& m) {
         [](const std::string& path, float smooth_angle, const py::kwargs& kwargs) {
         for (const auto& item : kwargs) {
             const std::string key = py::str(item.first);
-            if (key != "time" && key != "animation" && key != "morph" && key != "expression")
+            if (key != "time" && key != "animation" && key != "morph" && key != "expression" && key != "spring_bones")
                 throw InputError("unknown keyword '" + key +
-                                 "' (expected smooth_angle, time, animation, morph, expression)");
+                                 "' (expected smooth_angle, time, animation, morph, expression, spring_bones)");
         }
         SceneRequest request = request_of("", {}, kwargs, {});  // checked as every front end checks it
         request.smooth_angle = smooth_angle;
@@ -336,7 +344,8 @@ void def_mesh(py::module_& m) {
         "Loads OBJ/STL/PLY/OFF/glTF/GLB/VRM or builtin:NAME (sphere, torus, torus-knot, teapot). A file "
         "without normals gets hard edges where faces meet at more than smooth_angle degrees (180: all smooth). "
         "A glTF/VRM file is posed by animation= (name or index) at time= seconds, expression= and morph= "
-        "({name: weight} or ['NAME=W', ...]), as the CLI's --animation, --time, --expression, --morph.");
+        "({name: weight} or ['NAME=W', ...]), as the CLI's --animation, --time, --expression, --morph; "
+        "spring_bones='off' keeps a VRM's spring bones in the file's pose.");
 }
 
 // The names of styles, line types and shading models.
@@ -448,11 +457,12 @@ void def_renderer(py::module_& m) {
         if (!background.is_none()) request.background = to_color("background", background, true);
         return r.render(r.posed(request));
             },
-            py::arg("style") = "lambert", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
+            py::arg("style") = "", py::arg("set") = std::vector<std::string>{}, py::arg("samples") = 4,
             py::arg("background") = py::none(), py::arg("lines") = std::vector<std::string>{},
             py::arg("aov") = std::vector<std::string>{},
             ("RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
-             "render` writes for the same options; `lines` adds line types to the style, as `inkshade render "
+             "render` writes for the same options (style '': the mesh file's default, vrm for a file with MToon "
+             "materials, else lambert); `lines` adds line types to the style, as `inkshade render "
              "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, camera) a dict instead: "
              "'image', one array per AOV ('lines-TYPE' per line type) and 'camera' (docs/aov.md). Keywords:" +
              keyword_doc(kPython))

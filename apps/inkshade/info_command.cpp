@@ -79,6 +79,7 @@ void print_lights(const Mesh& mesh) {
         if (l.type != FileLightType::Point) std::printf(", shining %s", vec3_text(p.forward).c_str());
         std::printf("\n");
     }
+    for (const std::string& unusable : mesh.unusable_lights) std::printf("  not usable: %s\n", unusable.c_str());
 }
 
 // The names --animation, --morph and --expression take (glTF/VRM), one a line; a kind the file
@@ -104,6 +105,7 @@ void print_pose_names(const FilePoseNames& names) {
         for (const FileExpression& e : names.expressions)
             std::printf("  '%s' (%s)\n", io::printable_name(e.name).c_str(), e.preset ? "preset" : "custom");
     }
+    if (names.spring_joints > 0) std::printf("spring bone joints:   %zu\n", names.spring_joints);
 }
 
 }  // namespace

@@ -65,7 +65,10 @@ struct FilePoseNames {
     std::vector<FileAnimation> animations;   // in file order
     std::vector<std::string> morph_targets;  // mesh.extras.targetNames, each name once, in file order
     std::vector<FileExpression> expressions;
-    bool empty() const { return animations.empty() && morph_targets.empty() && expressions.empty(); }
+    size_t spring_joints = 0;  // VRM spring bone joints (they move with the time)
+    bool empty() const {
+        return animations.empty() && morph_targets.empty() && expressions.empty() && spring_joints == 0;
+    }
 };
 
 }  // namespace inkshade

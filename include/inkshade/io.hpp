@@ -30,7 +30,12 @@ struct Pose {
     std::vector<NamedWeight> expressions;
     // Morph target weights by name (mesh.extras.targetNames), in order; the last one wins.
     std::vector<NamedWeight> morphs;
+    // VRM spring bones (VRMC_springBone, VRM 0.x secondary animation) simulated from the file's
+    // pose at t = 0 to `time` in 1/60 s steps, as three-vrm moves them; off: the joints keep the
+    // file's (or the animation's) rotations.
+    bool spring_bones = true;
 
+    // Whether nothing but the file's own pose is asked for (`time` alone moves only spring bones).
     bool is_rest() const { return animation.empty() && expressions.empty() && morphs.empty(); }
     bool operator==(const Pose&) const = default;
 };
@@ -68,8 +73,8 @@ struct PosedNode {
 };
 
 // Every node of a glTF, GLB or VRM file, in file order, placed as load_mesh places them in
-// `pose` (animation, VRM animation, look-at, node constraints): for comparing a pose with other
-// tools' (three-vrm's). Throws InputError as load_mesh does.
+// `pose` (animation, VRM animation, look-at, node constraints, spring bones): for comparing a
+// pose with other tools' (three-vrm's). Throws InputError as load_mesh does.
 std::vector<PosedNode> posed_nodes(const std::string& path, const Pose& pose);
 
 // Every file extension load_mesh reads, space-separated: ".obj .stl .ply .off .gltf .glb .vrm"

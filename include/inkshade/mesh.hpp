@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,12 +23,31 @@ namespace inkshade {
 // Orientation: rows are stored top row of the image first (as in the file and inkshade::Image),
 // while Mesh::uvs follow the OBJ/OpenGL convention (v = 0 at the BOTTOM of the image), so
 // texel row = (1 - v) * height. Uploaded as is with glTexImage2D (row 0 at t = 0), sample at
-// vec2(u, 1 - v). Wrapping: repeat (the glTF sampler default and OBJ's).
+// vec2(u, 1 - v). Sampling: `sampler` (a glTF texture's sampler, as three.js's GLTFLoader sets it).
+
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+enum class TextureFilter { Nearest, Linear };
+
+// How a texture is read (glTF 2.0 section 5.26 samplers). The default is Inkshade's for files
+// that say nothing (OBJ, PLY): repeat, trilinear, anisotropic where the driver has it. A glTF
+// texture takes its sampler's values with three.js's defaults for the absent ones (magnify
+// linear, minify linear between linear mip levels, repeat) and, as three.js, no anisotropy.
+struct TextureSampler {
+    TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
+    TextureFilter mag = TextureFilter::Linear;
+    TextureFilter min = TextureFilter::Linear;  // within a mip level
+    // Between mip levels; none: level 0 only (glTF minFilter NEAREST or LINEAR).
+    std::optional<TextureFilter> mipmap = TextureFilter::Linear;
+    bool anisotropic = true;
+    bool operator==(const TextureSampler&) const = default;
+};
+
 struct Texture {
     std::string source;  // file path, or "FILE#image N" for an image embedded in a glTF/GLB
     int width = 0;
     int height = 0;
     std::vector<uint8_t> rgba;  // width * height * 4 bytes, row-major, top row first
+    TextureSampler sampler;
 };
 
 // glTF 2.0 section 3.9.4 alpha modes: alpha ignored (OPAQUE), a cut-out where alpha is below
@@ -125,6 +145,10 @@ struct Mesh {
     // coordinates of `positions`.
     std::vector<FileCamera> cameras;
     std::vector<FileLight> lights;
+    // The file's lights that cannot be used, each "light 'NAME' PROBLEM" (a spot light whose
+    // inner cone exceeds its outer one, ...): `--lights file` reports them (an error when no
+    // light is left), `inkshade info` lists them; otherwise they are of no concern.
+    std::vector<std::string> unusable_lights;
     FilePoseNames pose_names;  // what the file's animations, morph targets and expressions are called
 
     bool has_hard_edges() const { return !triangles.empty() && shading_normal_ids.size() == triangles.size(); }

@@ -39,10 +39,16 @@ struct OcclusionLevels {
 // InputError else.
 OcclusionLevels parse_occlusion_levels(const std::string& text);
 
+// The style a request without a look takes for `model`: "vrm" (three-vrm's look) for a glTF,
+// GLB or VRM file with MToon materials (VRMC_vrm, VRM 0.x or VRMC_materials_mtoon), read from
+// the file's JSON; "lambert" for everything else.
+std::string default_style_name(const std::string& model);
+
 struct SceneRequest {
     std::string model;  // mesh file or builtin:NAME (load_mesh)
     // The look: a style (built-in name or .toml file) or a shading model with its default
-    // parameters; at most one of the two. Neither: `style_data` when given, else lambert.
+    // parameters; at most one of the two. Neither: `style_data` when given, else the model's
+    // default_style_name.
     std::string style;
     std::string shading;
     // A style given as data (a three.js scene's material, lights and background). With `style`
@@ -90,6 +96,7 @@ struct SceneRequest {
     // name, in order.
     std::string animation;
     std::vector<NamedWeight> expressions, morphs;
+    bool spring_bones = true;  // VRM spring bones simulated to `time` (Pose::spring_bones)
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
     // case), for render_scene's AovImages overload and write_aov_files.
@@ -113,6 +120,7 @@ struct Scene {
     float time = 0.0f;
     std::string animation;  // the model's pose (load_options), as the request gives it
     std::vector<NamedWeight> expressions, morphs;
+    bool spring_bones = true;
     // Area in the three.js convention (a scene file, a threejs-* model, mtoon's threejs
     // convention): normals computed for a file without them as three.js computes them.
     NormalWeighting normal_weighting = NormalWeighting::Angle;

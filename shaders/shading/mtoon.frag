@@ -39,8 +39,9 @@
 // glTF's up-the-image one: n = normalize(T * x * scale - B * y * scale + N * z), (x, y, z) the
 // texel * 2 - 1. The shadow's bias keeps the geometric normal.
 // INKSHADE_MTOON_OUTLINE: the outline draw (vertex stage: shading/mtoon_outline.glsl), shaded as
-// three-vrm shades it: the same formula with the back face's normal negated (mtoon.frag's
-// `normal *= -1.0` under OUTLINE, which a normal map replaces), then
+// three-vrm shades it: the same formula with the outward normal (three.js negates a BackSide
+// material's normal, mtoon.frag's `normal *= -1.0` under OUTLINE turns it back; a normal map
+// replaces it, on the inward frame), then
 // out = outline-color * mix(1, direct + gi + rim + emit, outline-lighting-mix).
 #define INKSHADE_TEXTURE_UV 1  // texture_uv() below: the UV animation
 #include "common/surface.glsl"
@@ -137,14 +138,18 @@ float linearstep(float a, float b, float x) { return clamp((x - a) / max(b - a, 
 
 void shade() {
     Surface s = surface();
-    // The normal the tangent frame is built on: three-vrm's before its outline negation (the
-    // outline material is BackSide, its normals as interpolated), and which side it shows.
+    // The normal the tangent frame is built on, and the one shaded. The outline material is
+    // BackSide, so three.js's vertex stage negates its normal (FLIP_SIDED); three-vrm's
+    // `normal *= -1.0` turns it back: the outline is lit with the outward normal, while a normal
+    // map's frame is built on the inward one (normal_fragment_maps comes after the negation).
     vec3 raw = normalize(v_world_normal);
 #ifdef INKSHADE_MTOON_OUTLINE
-    vec3 frame_n = raw;
-    s.n = -raw;
+    vec3 frame_n = -raw;
+    float face = 1.0;  // BackSide, not DoubleSide: the frame is not turned
+    s.n = raw;
 #else
     vec3 frame_n = s.n;
+    float face = dot(frame_n, raw) < 0.0 ? -1.0 : 1.0;  // a DoubleSide back face's frame turns
 #endif
     vec3 geometric_n = s.n;
     vec3 shade_color = u_shade_color;
@@ -154,7 +159,7 @@ void shade() {
     vec2 uv = texture_uv();
     // three-vrm's normal map replaces the normal, the outline's negated one too.
     if (u_normal_texture_on == 1)
-        s.n = normal_mapped(frame_n, dot(frame_n, raw) < 0.0 ? -1.0 : 1.0, s.p,
+        s.n = normal_mapped(frame_n, face, s.p,
                             transformed(u_normal_texture_uv_transform, uv));
     shade_color *= texture(u_shade_multiply_texture, transformed(u_shade_multiply_texture_uv_transform, uv)).rgb;
     shift += texture(u_shading_shift_texture, transformed(u_shading_shift_texture_uv_transform, uv)).r *

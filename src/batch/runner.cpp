@@ -161,7 +161,8 @@ private:
                 .pose = {.animation = o.animation,
                          .time = o.time.value_or(0.0f),
                          .expressions = o.expressions,
-                         .morphs = o.morphs}};
+                         .morphs = o.morphs,
+                         .spring_bones = o.spring_bones}};
             if (groups_.empty() || groups_.back().model != job.model ||
                 groups_.back().load.smooth_angle != load.smooth_angle ||
                 groups_.back().load.normal_weighting != load.normal_weighting ||

@@ -1,9 +1,9 @@
 // A base-colour texture on the GPU, readable two ways (inkshade::Texture's bytes are sRGB): as
 // stored (a GL_RGBA8 view, byte / 255) or decoded to linear light (the GL_SRGB8_ALPHA8 storage),
 // chosen per draw by the frame's colour convention (render/color_convention.hpp,
-// docs/shading.md). Both share one full mip chain, built in linear light; trilinear filtering
-// plus anisotropy up to 16 where the driver has it (not on llvmpipe: base_texture.cpp), repeat
-// wrap (glTF's default and OBJ's).
+// docs/shading.md). Both share one full mip chain, built in linear light, read as the texture's
+// sampler says (wrap, filters; anisotropy up to 16 where the sampler asks for it and the driver
+// has it, not on llvmpipe: base_texture.cpp).
 #pragma once
 #include <epoxy/gl.h>
 
@@ -33,7 +33,7 @@ public:
     }
 
 private:
-    BaseTexture(int width, int height, const uint8_t* rgba);
+    BaseTexture(int width, int height, const uint8_t* rgba, const TextureSampler& sampler);
     GlTexture srgb_;        // the storage, GL_SRGB8_ALPHA8: sampling decodes
     GlTextureView stored_;  // the same texels as GL_RGBA8: sampling reads the bytes
 };

@@ -155,9 +155,7 @@ void add_gltf_lights(const tinygltf::Model& model, const std::vector<PlacedNode>
         FileLight l;
         l.name = label(g.name, node.name, "light", size_t(index));
         l.placement = placement(placed.transform);
-        const auto skip = [&](const std::string& problem) {
-            mesh.warnings.push_back(path + ": light '" + l.name + "' " + problem + "; ignored");
-        };
+        const auto skip = [&](const std::string& problem) { mesh.unusable_lights.push_back("light '" + l.name + "' " + problem); };
         if (!usable(l.placement)) {
             skip("is placed out of range (beyond 1e15)");
             continue;

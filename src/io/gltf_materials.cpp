@@ -81,6 +81,35 @@ std::string shader_of(const tinygltf::Value& props) {
                : std::string();
 }
 
+// A glTF sampler as three.js's GLTFLoader reads it (WEBGL_FILTERS, WEBGL_WRAPPINGS): absent or
+// unknown values are magnify LINEAR, minify LINEAR_MIPMAP_LINEAR, wrap REPEAT; texture.anisotropy
+// stays three.js's 1. Null: a texture without a sampler.
+TextureSampler gltf_sampler(const tinygltf::Sampler* s) {
+    TextureSampler out;
+    out.anisotropic = false;
+    if (!s) return out;
+    auto wrap = [](int mode) {
+        if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::ClampToEdge;
+        if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::MirroredRepeat;
+        return TextureWrap::Repeat;
+    };
+    out.wrap_s = wrap(s->wrapS);
+    out.wrap_t = wrap(s->wrapT);
+    if (s->magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.mag = TextureFilter::Nearest;
+    switch (s->minFilter) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST: out.min = TextureFilter::Nearest; out.mipmap.reset(); break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR: out.mipmap.reset(); break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+            out.min = TextureFilter::Nearest;
+            out.mipmap = TextureFilter::Nearest;
+            break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: out.mipmap = TextureFilter::Nearest; break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: out.min = TextureFilter::Nearest; break;
+        default: break;  // LINEAR_MIPMAP_LINEAR, absent, unknown
+    }
+    return out;
+}
+
 }  // namespace
 
 GltfMaterialTable::GltfMaterialTable(const tinygltf::Model& model, const GltfAccessorReader& reader,
@@ -242,8 +271,24 @@ std::shared_ptr<const Texture> GltfMaterialTable::texture_of(int texture, const 
     if (!tried_[size_t(image)]) {
         tried_[size_t(image)] = 1;
         images_[size_t(image)] = decode_image(size_t(image));
+        if (images_[size_t(image)]) {  // glTF's sampling without a sampler (section 5.26, three.js's defaults)
+            auto t = std::make_shared<Texture>(*images_[size_t(image)]);
+            t->sampler = gltf_sampler(nullptr);
+            images_[size_t(image)] = std::move(t);
+        }
     }
-    return images_[size_t(image)];
+    const std::shared_ptr<const Texture>& decoded = images_[size_t(image)];
+    const int s = model_.textures[size_t(texture)].sampler;
+    if (!decoded || s < 0 || size_t(s) >= model_.samplers.size()) return decoded;
+    const TextureSampler sampler = gltf_sampler(&model_.samplers[size_t(s)]);
+    if (sampler == decoded->sampler) return decoded;
+    std::shared_ptr<const Texture>& copy = sampled_[{size_t(image), s}];
+    if (!copy) {
+        auto t = std::make_shared<Texture>(*decoded);
+        t->sampler = sampler;
+        copy = std::move(t);
+    }
+    return copy;
 }
 
 std::shared_ptr<const Texture> GltfMaterialTable::decode_image(size_t i) {

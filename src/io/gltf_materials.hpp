@@ -55,6 +55,8 @@ private:
     Material build(size_t i);
     // A VRM material's MToon values, and its textures decoded.
     void add_mtoon(const VrmMaterial& vrm, Material& m);
+    // The glTF texture's image with its sampler (three.js's GLTFLoader values), decoded once per
+    // image and copied only for a sampler other than glTF's default.
     std::shared_ptr<const Texture> texture_of(int texture, const std::string& material);
     std::shared_ptr<const Texture> decode_image(size_t i);
 
@@ -64,6 +66,7 @@ private:
     Mesh& mesh_;
     std::vector<std::shared_ptr<const Texture>> images_;
     std::vector<char> tried_;
+    std::map<std::pair<size_t, int>, std::shared_ptr<const Texture>> sampled_;  // (image, sampler)
     std::vector<uint32_t> index_;  // glTF material (last slot: default) -> Mesh material
     const tinygltf::Value* v0_ = nullptr;
     std::map<double, int> queue_plain_, queue_z_;  // v0_queue_maps

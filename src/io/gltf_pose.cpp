@@ -7,10 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/gtx/matrix_decompose.hpp>
 
 #include "inkshade/error.hpp"
 #include "io/gltf_morph_targets.hpp"
@@ -20,6 +18,7 @@
 #include "io/vrm_animation_pose.hpp"
 #include "io/vrm_expressions.hpp"
 #include "io/vrm_node_constraints.hpp"
+#include "io/vrm_spring_pose.hpp"
 
 namespace inkshade::io {
 
@@ -92,6 +91,9 @@ GltfPose::GltfPose(const tinygltf::Model& model, const std::string& path, const 
     const std::vector<VrmNodeConstraint> constraints = read_vrm_node_constraints(model, path, warnings);
     if (!constraints.empty())
         apply_vrm_node_constraints(constraints, vrm_node_constraint_order(constraints, parent_, path), rest(), *this);
+    // Spring bones after the node constraints, as VRM.update runs them.
+    spring_ = pose_spring_bones(model, path, pose, reader, file_transform, parent_, warnings);
+    world_.assign(world_.size(), std::nullopt);  // the constraints' worlds predate the springs
 }
 
 const GltfRestPose& GltfPose::rest() const {
@@ -119,29 +121,21 @@ void GltfPose::set_translation(size_t node, const glm::dvec3& t) {
 glm::dmat4 GltfPose::local(size_t index) const {
     const tinygltf::Node& node = model_.nodes[index];
     const glm::dmat4 file = file_transform_(node, index, path_);
-    if (animated_.empty()) return file;
-    const AnimatedNode& a = animated_[index];
-    if (!a.translation && !a.rotation && !a.scale) return file;
+    static const AnimatedNode still;
+    const AnimatedNode& a = animated_.empty() ? still : animated_[index];
+    const bool sprung = index < spring_.size() && spring_[index];
+    if (!a.translation && !a.rotation && !a.scale && !sprung) return file;
     // The node's own T, R and S, each replaced where the animation sets it (section 3.11: an
-    // animated node has no matrix; a file that gives one anyway has it decomposed, as three.js does).
-    glm::dvec3 t(0.0), s(1.0);
-    glm::dquat r(1.0, 0.0, 0.0, 0.0);
-    if (!node.matrix.empty()) {
-        glm::dvec3 skew;
-        glm::dvec4 perspective;
-        glm::decompose(file, s, r, t, skew, perspective);
-    } else {
-        if (node.translation.size() == 3) t = glm::make_vec3(node.translation.data());
-        if (node.rotation.size() == 4)
-            r = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-        if (node.scale.size() == 3) s = glm::make_vec3(node.scale.data());
-    }
-    if (a.translation) t = *a.translation;
-    if (a.rotation) r = *a.rotation;
-    if (a.scale) s = *a.scale;
-    const double len = glm::length(r);
-    return glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(len > 0.0 ? r / len : glm::dquat(1.0, 0.0, 0.0, 0.0)) *
-           glm::scale(glm::dmat4(1.0), s);
+    // animated node has no matrix; a file that gives one anyway has it decomposed, as three.js
+    // does), the rotation by a spring bone's where a joint turns the node.
+    NodeTrs n = file_node_trs(node, file);
+    if (a.translation) n.t = *a.translation;
+    if (a.rotation) n.r = *a.rotation;
+    if (a.scale) n.s = *a.scale;
+    if (sprung) n.r = *spring_[index];
+    const double len = glm::length(n.r);
+    return glm::translate(glm::dmat4(1.0), n.t) *
+           glm::mat4_cast(len > 0.0 ? n.r / len : glm::dquat(1.0, 0.0, 0.0, 0.0)) * glm::scale(glm::dmat4(1.0), n.s);
 }
 
 glm::dmat4 GltfPose::world(size_t index) const {

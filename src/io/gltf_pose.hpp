@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "inkshade/io.hpp"
 #include "io/gltf_accessors.hpp"
@@ -37,7 +38,7 @@ public:
              FileTransform file_transform, std::vector<std::string>& warnings);
 
     // The node's local transform: the file's, with the animation's translation, rotation and
-    // scale where it sets them.
+    // scale where it sets them, and the spring bones' rotation where a joint turns it.
     glm::dmat4 local(size_t node) const;
 
     // Deforms one primitive of the mesh node `node` instances, in place: its morph targets with
@@ -68,6 +69,7 @@ private:
     std::vector<std::vector<float>> weights_;  // morph weights per node (empty: none)
     std::vector<int> parent_;                  // -1: a root
     mutable std::optional<GltfRestPose> rest_;
+    std::vector<std::optional<glm::dquat>> spring_;  // rotations spring bones give (empty: none)
     mutable std::vector<std::optional<glm::dmat4>> world_;
     mutable std::map<int, std::vector<glm::dmat4>> joint_matrices_;
 };

@@ -9,6 +9,7 @@
 #include "inkshade/error.hpp"
 #include "io/gltf_morph_targets.hpp"
 #include "io/vrm_expressions.hpp"
+#include "io/vrm_spring_bones.hpp"
 
 namespace inkshade::io {
 
@@ -48,6 +49,10 @@ FilePoseNames read_gltf_pose_names(const tinygltf::Model& model, const std::stri
     std::vector<std::string> ignored;  // the pose already gave these warnings
     for (const VrmExpression& e : read_vrm_expressions(model, path, ignored))
         names.expressions.push_back({e.name, is_vrm_preset(e.name)});
+    try {  // bad spring bones are the pose's error (GltfPose), not this listing's
+        names.spring_joints = read_vrm_spring_bones(model, path, ignored).joints.size();
+    } catch (const InputError&) {
+    }
     return names;
 }
 

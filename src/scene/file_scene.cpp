@@ -152,9 +152,12 @@ std::vector<std::string> Scene::apply_file_scene(const Mesh& mesh) {
         }
     }
     if (lights == LightSource::File) {
-        if (mesh.lights.empty())
-            throw InputError(option_name(names, "lights") + " file: " + file +
-                             " has no lights (glTF KHR_lights_punctual)");
+        const std::string option = option_name(names, "lights") + " file: " + file;
+        // One line for the problem: the unusable light itself when it was the only one.
+        if (mesh.lights.empty() && !mesh.unusable_lights.empty())
+            throw InputError(option + ": " + mesh.unusable_lights.front());
+        if (mesh.lights.empty()) throw InputError(option + " has no lights (glTF KHR_lights_punctual)");
+        for (const std::string& unusable : mesh.unusable_lights) warnings.push_back(file + ": " + unusable + "; ignored");
         file_light = mesh.lights.front();
         if (mesh.lights.size() > 1)
             warnings.push_back(file + ": " + std::to_string(mesh.lights.size()) +

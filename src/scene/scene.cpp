@@ -12,6 +12,7 @@
 #include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/options.hpp"
+#include "io/mtoon_detection.hpp"
 #include "scene/file_scene.hpp"
 #include "scene/option_name.hpp"
 
@@ -26,6 +27,8 @@ void check_color(const std::optional<glm::vec4>& c, const char* option, OptionNa
             throw InputError(option_name(names, option) + ": components must be in [0, 1]");
 }
 
+constexpr float kMaxMorphWeight = 1000.0f;
+
 // The pose's values; the names are the model file's, checked when it loads.
 void check_pose(const SceneRequest& r) {
     for (const auto& [list, option] : {std::pair{&r.expressions, "expression"}, std::pair{&r.morphs, "morph"}})
@@ -35,6 +38,12 @@ void check_pose(const SceneRequest& r) {
             if (list == &r.expressions && !(w.weight >= 0.0f && w.weight <= 1.0f))
                 throw InputError(option_name(r.names, option) + ": " + w.name +
                                  ": expression weights are in [0, 1], got " + (std::ostringstream() << w.weight).str());
+            // Morph weights are 0..1 in use; a thousand times a target's offsets is already far
+            // outside any model, and a larger weight would only fail later on a vertex.
+            if (list == &r.morphs && !(std::abs(w.weight) <= kMaxMorphWeight))
+                throw InputError(option_name(r.names, option) + ": " + w.name + ": morph weights are in [-" +
+                                 std::to_string(int(kMaxMorphWeight)) + ", " + std::to_string(int(kMaxMorphWeight)) +
+                                 "], got " + (std::ostringstream() << w.weight).str());
         }
 }
 
@@ -45,7 +54,7 @@ Style named_style(const SceneRequest& r) {
                          " are alternatives: use one (a style names its shading model)");
     if (r.style_data && r.style.empty() && r.shading.empty()) return *r.style_data;
     Style s = !r.shading.empty() ? shading_model_style(r.shading)  // the model's defaults, not a preset's
-                                 : load_style(r.style.empty() ? "lambert" : r.style);
+                                 : load_style(r.style.empty() ? default_style_name(r.model) : r.style);
     if (const auto& data = r.style_data) {
         // A scene's lights and background stay the scene's whatever the look.
         s.light_color = data->light_color;
@@ -217,6 +226,11 @@ AovSet parse_aovs(const SceneRequest& r) {
 
 }  // namespace
 
+std::string default_style_name(const std::string& model) {
+    // A file with MToon materials is authored for three-vrm's look (docs/mtoon.md, "One command").
+    return io::uses_mtoon_materials(model) ? "vrm" : "lambert";
+}
+
 AovSet aov_set(const std::string& option, const std::vector<std::string>& names) {
     AovSet set;
     for (const std::string& name : names) {
@@ -324,6 +338,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.animation = r.animation;
     scene.expressions = r.expressions;
     scene.morphs = r.morphs;
+    scene.spring_bones = r.spring_bones;
     scene.camera.up_axis = r.camera.up_axis.value_or(scene.style.up_axis.value_or(UpAxis::PosY));
     // The three.js convention: a scene file's, the threejs-* models (unlit ones too), mtoon's
     // threejs convention.
@@ -340,7 +355,11 @@ Scene make_scene(const SceneRequest& r) {
 LoadOptions Scene::load_options() const {
     return LoadOptions{.smooth_angle = smooth_angle,
                        .normal_weighting = normal_weighting,
-                       .pose = {.animation = animation, .time = time, .expressions = expressions, .morphs = morphs}};
+                       .pose = {.animation = animation,
+                                .time = time,
+                                .expressions = expressions,
+                                .morphs = morphs,
+                                .spring_bones = spring_bones}};
 }
 
 Camera Scene::frame(const BoundingBox& box) const { return frame(box, float(options.width) / float(options.height)); }

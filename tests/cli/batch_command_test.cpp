@@ -421,7 +421,8 @@ TEST_F(BatchCommand, PosePerJobGivesTheRenderCommandsImage) {
         SCOPED_TRACE(t);
         const std::string stem = out() + "/t" + t + "/lambert/az000_el00";
         const std::string expression = std::string(t) == "2" ? " --expression happy=1" : "";
-        const auto cli = run_cli("render " + model + " --animation wave --morph blink=0.5 --time " + t + expression +
+        const auto cli = run_cli("render " + model + " --style lambert --animation wave --morph blink=0.5 --time " + t +
+                                 expression +
                                  " --size 96x96 --azimuth 0 --elevation 0 -o " + dir_.file("r.png"));
         ASSERT_EQ(cli.status, 0) << cli.err;
         EXPECT_EQ(slurp(stem + ".png"), slurp(dir_.file("r.png")));

@@ -180,6 +180,23 @@ TEST(GltfSceneCli, MissingCameraOrLightIsExit2WithOneLine) {
     r = run_cli("render '" + bare + "' --lights file -o '" + dir.file("a.png") + "'");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err, "inkshade: --lights file: " + bare + " has no lights (glTF KHR_lights_punctual)\n");
+    {
+        // A spot light whose inner cone exceeds its outer one, the file's only light: one line
+        // naming the cone, not a warning and then "has no lights".
+        GltfBuilder g;
+        const int mesh = g.mesh({{"POSITION", g.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3)}});
+        g.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+            {{"type", "spot"}, {"name", "Wide"}, {"spot", {{"innerConeAngle", 0.7}, {"outerConeAngle", 0.5}}}}};
+        g.scene({g.node({{"mesh", mesh}}), g.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}})});
+        const std::string cone = dir.write("cone.glb", g.glb());
+        r = run_cli("render '" + cone + "' --lights file -o '" + dir.file("a.png") + "'");
+        EXPECT_EQ(r.status, 2);
+        EXPECT_EQ(r.err, "inkshade: --lights file: " + cone +
+                             ": light 'Wide' has cone angles 0.7, 0.5 (need 0 <= inner < outer <= pi/2)\n");
+        r = run_cli("render '" + cone + "' -o '" + dir.file("a.png") + "'");  // its lights unused: no concern
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err, "");
+    }
     r = run_cli("render '" + model + "' --camera Persp --fov 20 -o '" + dir.file("a.png") + "'");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err, "inkshade: --camera and --fov are alternatives: the file's camera places and projects the view\n");

@@ -29,6 +29,8 @@ TEST(PosingCli, BadPosesAreOneLineErrors) {
     expect_one_line_error("render " + path + " --morph happy=x" + out, "--morph: expected NAME=WEIGHT, got 'happy=x'");
     expect_one_line_error("render " + path + " --morph hapy=1" + out,
                           "no morph target 'hapy' (did you mean 'happy'?); its morph targets: 'happy', 'blink'");
+    expect_one_line_error("render " + path + " --morph happy=1e30" + out,
+                          "--morph: happy: morph weights are in [-1000, 1000], got 1e+30");
     expect_one_line_error("render " + path + " --expression happy=2" + out,
                           "--expression: happy: expression weights are in [0, 1], got 2");
     expect_one_line_error("render " + path + " --expression sorrow=1" + out,

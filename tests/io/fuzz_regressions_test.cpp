@@ -35,6 +35,30 @@ TEST(FuzzRegressions, ReplayStl) { replay("stl", fuzz::stl_input); }
 TEST(FuzzRegressions, ReplayPly) { replay("ply", fuzz::ply_input); }
 TEST(FuzzRegressions, ReplayOff) { replay("off", fuzz::off_input); }
 TEST(FuzzRegressions, ReplayGltf) { replay("gltf", fuzz::gltf_input); }
+// The posed seed reaches the pose code through fuzz_gltf's harness: byte 0 picks the animation
+// at a time, the morph target and the expression (fuzz_pose), and the posed load moves vertices.
+TEST(FuzzRegressions, PosedSeedIsPosedByTheHarness) {
+    std::ifstream in(std::string(INKSHADE_SOURCE_DIR) + "/fuzz/corpus/gltf/posed.glb", std::ios::binary);
+    const std::string seed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(seed.size(), 1u);
+    TempDir dir;
+    const std::string path = dir.write("posed.glb", seed.substr(1));
+    const Mesh rest = load_mesh(path);
+    ASSERT_EQ(rest.pose_names.animations.size(), 1u);
+    const Pose pose = fuzz::fuzz_pose(rest.pose_names, static_cast<unsigned char>(seed[0]) / 2);
+    EXPECT_EQ(pose.animation, "wave");
+    EXPECT_FLOAT_EQ(pose.time, 3.75f);
+    ASSERT_EQ(pose.morphs.size(), 1u);
+    EXPECT_EQ(pose.morphs[0].name, "smile");
+    ASSERT_EQ(pose.expressions.size(), 1u);
+    EXPECT_EQ(pose.expressions[0].name, "happy");
+    const Mesh posed = load_mesh(path, LoadOptions{.pose = pose});
+    ASSERT_EQ(posed.positions.size(), rest.positions.size());
+    EXPECT_NE(posed.positions, rest.positions);
+    EXPECT_EQ(posed.lights.size(), 2u);
+    EXPECT_EQ(posed.cameras.size(), 1u);
+}
+
 TEST(FuzzRegressions, ReplayMeshPipeline) { replay("mesh_pipeline", fuzz::mesh_pipeline_input); }
 
 std::shared_ptr<const Texture> decode_texture_for_test(const std::string& bytes, std::string& problem) {

@@ -151,7 +151,9 @@ TEST(GltfLights, PunctualLightsAreReadWithTheirNodes) {
     expect_near(c.placement.forward, {-1, 0, 0});  // -z turned 90 degrees about +y
 }
 
-TEST(GltfLights, BadLightIsAWarningAndLeftOut) {
+// An unusable light is listed (for --lights file and info), not warned about: a render that
+// does not use the file's lights has no concern with it.
+TEST(GltfLights, BadLightIsListedAsUnusableAndLeftOut) {
     TempDir dir;
     GltfBuilder g = with_triangle();
     g.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
@@ -163,10 +165,10 @@ TEST(GltfLights, BadLightIsAWarningAndLeftOut) {
     g.scene({0, 1, 2, 3});
     const Mesh m = io::read_gltf(dir.write("bad.glb", g.glb()));
     EXPECT_TRUE(m.lights.empty());
-    EXPECT_TRUE(has_warning(m,
-                            "light 'Wide' has cone angles 0.6, 0.5 (need 0 <= inner < outer <= pi/2); "
-                            "ignored"));
-    EXPECT_TRUE(has_warning(m, "light 'Panel' has type 'area' (directional, point or spot); ignored"));
+    EXPECT_EQ(m.unusable_lights,
+              (std::vector<std::string>{"light 'Wide' has cone angles 0.6, 0.5 (need 0 <= inner < outer <= pi/2)",
+                                        "light 'Panel' has type 'area' (directional, point or spot)"}));
+    EXPECT_FALSE(has_warning(m, "light 'Wide'"));
     EXPECT_TRUE(has_warning(m, "node 3 refers to light 9 but the file has 2; ignored"));
 }
 

@@ -479,10 +479,25 @@ class PoseTest(unittest.TestCase):
 
     def cli_png(self, *options):
         png = os.path.join(self.tmp.name, "cli.png")
-        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", *options, "-o", png],
+        # --style lambert: the avatar is a VRM, whose default look is vrm (Python's too without a style)
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--style", "lambert", "--size", "64x48", *options,
+                                 "-o", png],
                                 capture_output=True, text=True)
         self.assertEqual(result.returncode, 0, result.stderr)
         return read_png(png)
+
+    def test_render_without_a_style_takes_the_files_default_look(self):
+        # A VRM file's default look is the vrm style, in Python as in `inkshade render FILE`.
+        r = inkshade.Renderer()
+        r.set_mesh(inkshade.load_mesh(self.model))
+        png = os.path.join(self.tmp.name, "plain.png")
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", "-o", png],
+                                capture_output=True, text=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        plain = r.render(size=(64, 48))
+        np.testing.assert_array_equal(plain, read_png(png))
+        np.testing.assert_array_equal(plain, r.render("vrm", size=(64, 48)))
+        self.assertFalse(np.array_equal(plain, r.render("lambert", size=(64, 48))))
 
     def test_render_keywords_are_the_clis_options(self):
         r = inkshade.Renderer()
@@ -531,6 +546,57 @@ class PoseTest(unittest.TestCase):
         for stem, t in (("t1", "1"), ("t2", "2")):  # t2 takes the default time
             np.testing.assert_array_equal(read_png(os.path.join(out, stem, "lambert", "az035_el20.png")),
                                           self.cli_png("--animation", "spin", "--time", t))
+
+
+class SpringBonesTest(unittest.TestCase):
+    """spring_bones= and the time on render, load_mesh and batch, as the CLI's --spring-bones and
+    --time: the sample avatar's ponytail (scripts/avatar-sample --spring-hair)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.model = os.path.join(cls.tmp.name, "ponytail.vrm")
+        script = os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "avatar-sample")
+        subprocess.run(["python3", script, "--spring-hair", cls.model], check=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def cli_png(self, *options):
+        png = os.path.join(self.tmp.name, "cli.png")
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", "--azimuth", "115", *options,
+                                 "-o", png], capture_output=True, text=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        return read_png(png)
+
+    def test_render_and_load_mesh_take_spring_bones_and_the_time(self):
+        r = inkshade.Renderer()
+        r.set_mesh(inkshade.load_mesh(self.model))
+        swung = r.render("lambert", size=(64, 48), azimuth=115, animation="sway", time=2.0)
+        np.testing.assert_array_equal(swung, self.cli_png("--animation", "sway", "--time", "2"))
+        rigid = r.render("lambert", size=(64, 48), azimuth=115, animation="sway", time=2.0, spring_bones="off")
+        np.testing.assert_array_equal(rigid, self.cli_png("--animation", "sway", "--time", "2", "--spring-bones", "off"))
+        self.assertFalse(np.array_equal(swung, rigid))
+        # The time alone lets the ponytail fall under gravity.
+        r.set_mesh(inkshade.load_mesh(self.model, time=1.0))
+        fallen = r.render("lambert", size=(64, 48), azimuth=115)
+        np.testing.assert_array_equal(fallen, self.cli_png("--time", "1"))
+        self.assertFalse(np.array_equal(fallen, self.cli_png()))
+        with self.assertRaisesRegex(ValueError, "spring_bones: expected on or off"):
+            r.render("lambert", spring_bones="maybe")
+
+    def test_batch_column(self):
+        manifest = os.path.join(self.tmp.name, "springs.csv")
+        with open(manifest, "w") as f:
+            f.write("model,name,spring-bones\n" + self.model + ",on,on\n" + self.model + ",off,off\n")
+        out = os.path.join(self.tmp.name, "springs")
+        summary = inkshade.batch(out, manifest=manifest, size=(64, 48), views="115:20", animation="sway", time=2.0)
+        self.assertEqual(summary["done"], 2, summary["failures"])
+        for stem in ("on", "off"):
+            np.testing.assert_array_equal(read_png(os.path.join(out, stem, "lambert", "az115_el20.png")),
+                                          self.cli_png("--elevation", "20", "--animation", "sway", "--time", "2",
+                                                       "--spring-bones", stem))
 
 
 if __name__ == "__main__":

@@ -1,9 +1,10 @@
-// mtoon's outline against three-vrm 3.x's mtoon.vert (OUTLINE): on the unit sphere the ring runs
+// mtoon's outline against three-vrm 3.5.5's mtoon.vert (OUTLINE): on the unit sphere the ring runs
 // from the silhouette to the farthest image point of a back face moved out as three-vrm moves
-// it, evaluated here on the CPU (worldCoordinates: p + width * n; screenCoordinates: clip.xy +=
-// 2 * width * normalize(clip-space normal.xy), x scaled by P[0][0] / P[1][1]), within 1 px, under
-// orthographic and perspective cameras; its colour is outlineColorFactor * mix(1, lit colour,
-// outlineLightingMixFactor); a material's own outline values draw it per material.
+// it, evaluated here on the CPU (worldCoordinates: p + width * n; screenCoordinates
+// (OUTLINE_WIDTH_SCREEN): p + width * n * vViewPosition.z / projectionMatrix[1].y), within 1 px,
+// under orthographic and perspective cameras; its colour is outlineColorFactor * mix(1, lit
+// colour, outlineLightingMixFactor), lit with the outward normal; a material's own outline values
+// draw it per material.
 #include <cmath>
 
 #include "render/render_fixture.hpp"
@@ -43,16 +44,13 @@ Image render_sphere(const Camera& camera, const ShadingSelection& s, int size, c
     return r.render(camera, frontal_light(), s, o);
 }
 
-// three-vrm's outline vertex (mtoon.vert) for the unit sphere's point p (normal p), in clip space.
+// three-vrm's outline vertex (mtoon.vert) for the unit sphere's point p (normal p), in clip space:
+// the offset outlineWidthFactor * n, times the view depth over P[1][1] in screen coordinates.
 glm::vec4 outline_clip(const Camera& c, Mode mode, float width, const glm::vec3& p) {
     const glm::mat4 proj = c.projection(1.0f), vp = proj * c.view();
-    if (mode == Mode::World) return vp * glm::vec4(p + width * p, 1.0f);
-    glm::vec4 clip = vp * glm::vec4(p, 1.0f);
-    glm::vec2 m = glm::normalize(glm::vec2(vp * glm::vec4(p, 0.0f)));
-    m.x *= proj[0][0] / proj[1][1];
-    clip.x += 2.0f * width * m.x;
-    clip.y += 2.0f * width * m.y;
-    return clip;
+    float offset = width;
+    if (mode == Mode::Screen) offset *= -(c.view() * glm::vec4(p, 1.0f)).z / proj[1][1];
+    return vp * glm::vec4(p + offset * p, 1.0f);
 }
 
 // The outer edge of the ring in pixels: the farthest image point of a back face's vertex moved
@@ -89,43 +87,84 @@ TEST(MtoonOutline, WorldCoordinatesRingIsTheSilhouetteOfTheGrownSphere) {
     }
 }
 
-// A fraction of the image height at clip w = 1: width * H pixels under an orthographic camera,
-// width * H / w under a perspective one (three-vrm moves clip.xy without the factor w).
-TEST(MtoonOutline, ScreenCoordinatesRingIsWidthTimesHeightOverClipW) {
+// three-vrm 3.5.5 scales the offset by the view depth over P[1][1]: a perspective ring is
+// width * H / 2 pixels at any distance; an orthographic one width * depth * H / 2, wider with depth.
+TEST(MtoonOutline, ScreenCoordinatesRingFollowsThreeVrmsDepthScale) {
     const int size = 256;
-    {
-        const float width = 0.03f;
-        const Camera cam = ortho_camera();
+    for (float distance : {4.0f, 8.0f}) {
+        const float width = 0.02f;
+        Camera cam = ortho_camera();
+        cam.eye = {0, 0, distance};
+        cam.far_plane = 20.0f;
         const float inner = silhouette_radius(cam, size), outer = outline_outer_radius(cam, Mode::Screen, width, size);
-        EXPECT_NEAR(outer - inner, width * float(size), 0.05f);
-        expect_ring(render_sphere(cam, green_with_outline(Mode::Screen, width), size), inner, outer, "orthographic");
+        // The silhouette circle lies at the sphere's centre depth.
+        EXPECT_NEAR(outer - inner, width * distance * float(size) / 2.0f, 0.05f);
+        expect_ring(render_sphere(cam, green_with_outline(Mode::Screen, width), size), inner, outer,
+                    "orthographic at " + std::to_string(distance));
     }
-    {
-        const float width = 0.15f;
-        const Camera cam = perspective(5.0f);
+    for (float distance : {5.0f, 9.0f}) {
+        const float width = 0.1f;
+        const Camera cam = perspective(distance);
         const float inner = silhouette_radius(cam, size), outer = outline_outer_radius(cam, Mode::Screen, width, size);
-        const float w_silhouette = (25.0f - 1.0f) / 5.0f;  // view depth of the silhouette circle
-        EXPECT_NEAR(outer - inner, width * float(size) / w_silhouette, 0.3f);
-        expect_ring(render_sphere(cam, green_with_outline(Mode::Screen, width), size), inner, outer, "perspective");
+        // The offset's depth grows with the distance as the projection shrinks it: about w H / 2.
+        EXPECT_NEAR(outer - inner, width * float(size) / 2.0f, 0.1f * width * float(size));
+        expect_ring(render_sphere(cam, green_with_outline(Mode::Screen, width), size), inner, outer,
+                    "perspective at " + std::to_string(distance));
     }
 }
 
-// A non-square image: the clip-space move's x is scaled by 1 / aspect, so the ring is as wide
-// left and right as up and down.
+// A non-square image: the offset is along the normal in the world, so the ring is as wide left
+// and right as up and down.
 TEST(MtoonOutline, ScreenCoordinatesRingIsRoundInAWideImage) {
-    const float width = 0.04f;
+    const float width = 0.02f;
     Renderer& r = shared_renderer();
     r.set_mesh(fine_sphere());
     RenderOptions o;
     o.width = 384;
     o.height = 256;
-    const Image img = r.render(ortho_camera(), frontal_light(), green_with_outline(Mode::Screen, width), o);
+    const Camera cam = ortho_camera();
+    const Image img = r.render(cam, frontal_light(), green_with_outline(Mode::Screen, width), o);
     const glm::vec2 centre(192.0f, 128.0f);
-    const float inner = 256.0f / ortho_camera().ortho_height;
+    const float inner = 256.0f / cam.ortho_height;
+    const float depth = glm::length(cam.eye - cam.target);
     for (float a : {0.0f, 0.5f * kPi, kPi, 1.5f * kPi}) {
         const Ring ring = ring_along(img, centre, a + 0.01f);
-        EXPECT_NEAR(ring.outer - ring.inner, width * 256.0f, 1.0f) << "angle " << a;
+        EXPECT_NEAR(ring.outer - ring.inner, width * depth * 256.0f / 2.0f, 1.0f) << "angle " << a;
         EXPECT_NEAR(ring.inner, inner, 1.0f) << "angle " << a;
+    }
+}
+
+// three.js negates a BackSide material's normal and three-vrm's outline negates it back: the
+// ring is lit with the outward normal. A light from +x (across the view) lights the ring's right
+// side (n.l = 1: the lit colour) and shades its left side (n.l = -1: the shade colour).
+TEST(MtoonOutline, RingIsLitWithTheOutwardNormal) {
+    const int size = 256;
+    const float width = 0.08f;
+    const glm::vec3 C(0.8f, 0.6f, 0.4f), S(0.1f, 0.2f, 0.5f);
+    Renderer& r = shared_renderer();
+    r.set_mesh(fine_sphere());
+    RenderOptions o;
+    o.width = o.height = size;
+    Light light = directional_light({1, 0, 0}, glm::vec3(1), glm::vec3(0));
+    light.intensity = kPi;  // E / pi = 1
+    ShadingSelection s;
+    s.model = "mtoon";
+    s.base_color = C;
+    s.params = {{"shadows", {0}},
+                {"shade-color", {S.r, S.g, S.b}},
+                {"outline-width-mode", {float(Mode::World)}},
+                {"outline-width", {width}},
+                {"outline-color", {1, 1, 1}},
+                {"outline-lighting-mix", {1}}};
+    const Image img = r.render(ortho_camera(), light, s, o);
+    const float middle = silhouette_radius(ortho_camera(), size) + 0.5f * width * float(size) / 2.5f;
+    for (float a : {-0.3f, 0.0f, 0.3f}) {
+        const int y = int(128.0f + middle * std::sin(a));
+        const int right = int(128.0f + middle * std::cos(a)), left = int(128.0f - middle * std::cos(a));
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(int(img.pixel(right, y)[k]), to_byte(reference_srgb(C[k])), 1) << "right, angle " << a;
+            EXPECT_NEAR(int(img.pixel(left, y)[k]), to_byte(reference_srgb(S[k])), 1) << "left, angle " << a;
+        }
     }
 }
 

@@ -94,15 +94,17 @@ TEST(Mtoon, ThreejsConventionMatchesFormulaWithOneOverPiAndSrgb) {
     EXPECT_GE(compare_sphere(p, false), 50);
 }
 
-// three-vrm 3.5's MToonMaterial uniforms' initial values, in its threejs convention.
+// three-vrm 3.5.5's MToonMaterial uniforms' initial values (its constructor's `uniforms`:
+// shadeColorFactor Color(0, 0, 0), parametricRimFresnelPowerFactor 5, rimLightingMixFactor 1),
+// in its threejs convention; a scene file's MToonMaterial takes them for omitted fields.
 TEST(Mtoon, DefaultsAreMToonMaterials) {
     const ShadingModel& m = shading_model("mtoon");
     EXPECT_EQ(m.param("shading-toony")->default_value, ParamValue{0.9f});
     EXPECT_EQ(m.param("shading-shift")->default_value, ParamValue{0.0f});
-    EXPECT_EQ(m.param("rim-fresnel-power")->default_value, ParamValue{1.0f});
-    EXPECT_EQ(m.param("shade-color")->default_value, (ParamValue{0.97f, 0.81f, 0.86f}));
+    EXPECT_EQ(m.param("rim-fresnel-power")->default_value, ParamValue{5.0f});
+    EXPECT_EQ(m.param("shade-color")->default_value, (ParamValue{0, 0, 0}));
     EXPECT_EQ(m.param("rim-color")->default_value, (ParamValue{0, 0, 0}));
-    EXPECT_EQ(m.param("rim-lighting-mix")->default_value, ParamValue{0.0f});
+    EXPECT_EQ(m.param("rim-lighting-mix")->default_value, ParamValue{1.0f});
     EXPECT_EQ(m.param("rim-lift")->default_value, ParamValue{0.0f});
     EXPECT_EQ(m.param("convention")->choices.at(size_t(m.param("convention")->default_value.at(0))), "threejs");
 }

@@ -1,10 +1,10 @@
 #include "inkshade/shading.hpp"
 
 namespace inkshade {
-// Defaults are three-vrm 3.5's MToonMaterial's (its uniforms' initial values, linear colours),
+// Defaults are three-vrm 3.5.5's MToonMaterial's (its uniforms' initial values, linear colours),
 // so `--shading mtoon` renders what `new MToonMaterial()` renders on three.js r187: shade colour
-// (0.97, 0.81, 0.86), shift 0, toony 0.9, rim colour 0, fresnel power 1, lift 0, rim lighting
-// mix 0, no outline (width 0, colour black, lighting mix 1), no emission (black, intensity 1),
+// black, shift 0, toony 0.9, rim colour black, fresnel power 5, lift 0, rim lighting mix 1,
+// no outline (width 0, colour black, lighting mix 1), no emission (black, intensity 1),
 // normal scale 1, shading shift texture scale 1, no UV animation (speeds 0), and the threejs
 // convention (1/pi light units, sRGB output). A VRM file's materials
 // carry the VRMC_materials_mtoon specification's defaults instead (io/gltf_reader.cpp).
@@ -19,18 +19,18 @@ static const ShadingModelRegistration mtoon_model{{
     .inputs = {shadow_map_input("shadows"), linear_light_input("convention", "threejs")},
     .params =
         {
-            color_param("shade-color", glm::vec3(0.97f, 0.81f, 0.86f),
+            color_param("shade-color", glm::vec3(0.0f),
                         "shade colour S, linear (MToon shadeColorFactor)"),
             float_param("shading-shift", 0.0f, -1.0f, 1.0f,
                         "shift added to n.l before the toon step (MToon shadingShiftFactor)"),
             float_param("shading-toony", 0.9f, 0.0f, 1.0f,
                         "toony-ness: 1 = hard terminator, 0 = smooth (MToon shadingToonyFactor)"),
             color_param("rim-color", glm::vec3(0.0f), "rim colour (MToon parametricRimColorFactor; black = no rim)"),
-            float_param("rim-fresnel-power", 1.0f, 0.0f, 100.0f,
+            float_param("rim-fresnel-power", 5.0f, 0.0f, 100.0f,
                         "rim exponent on 1 - n.v (MToon parametricRimFresnelPowerFactor)"),
             float_param("rim-lift", 0.0f, 0.0f, 1.0f,
                         "added to 1 - n.v before the power (MToon parametricRimLiftFactor)"),
-            float_param("rim-lighting-mix", 0.0f, 0.0f, 1.0f,
+            float_param("rim-lighting-mix", 1.0f, 0.0f, 1.0f,
                         "0: rim unlit, 1: rim scaled by E + A (MToon rimLightingMixFactor)"),
             color_param("matcap-color", glm::vec3(1.0f),
                         "matcap texture factor, linear (MToon matcapFactor; the texture comes with a VRM material)"),
