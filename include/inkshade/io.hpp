@@ -20,7 +20,8 @@ struct NamedWeight {
 // then morph weights by name; skins deform the mesh on the CPU, so every later stage sees the
 // posed triangles. The default is the file as it is (its rest pose and default weights).
 struct Pose {
-    // A glTF animation, by name or index; empty = none.
+    // A glTF animation, by name or index, or a VRM animation file (a path ending in .vrma,
+    // retargeted to a VRM avatar's humanoid); empty = none.
     std::string animation;
     // Seconds into the animation, clamped to its keyframes' range.
     float time = 0.0f;
@@ -67,11 +68,13 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 struct PosedNode {
     std::string name;
     glm::dvec3 position{0.0};
+    std::string human_bone;            // its VRM humanoid bone ("" when none)
+    std::vector<float> morph_weights;  // its mesh's morph target weights in the pose (empty: none)
 };
 
 // Every node of a glTF, GLB or VRM file, in file order, placed as load_mesh places them in
-// `pose` (animation, spring bones): for comparing a pose with other tools' (three-vrm's).
-// Throws InputError as load_mesh does.
+// `pose` (animation, VRM animation, look-at, node constraints, spring bones): for comparing a
+// pose with other tools' (three-vrm's). Throws InputError as load_mesh does.
 std::vector<PosedNode> posed_nodes(const std::string& path, const Pose& pose);
 
 // Every file extension load_mesh reads, space-separated: ".obj .stl .ply .off .gltf .glb .vrm"

@@ -1,10 +1,13 @@
 // The job hash of batch metadata (inkshade/batch.hpp): resume renders a job again exactly
 // when something that decides its files changed.
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "inkshade/batch.hpp"
 #include "inkshade/options.hpp"
+#include "io/vrm_animation.hpp"
 
 namespace inkshade {
 
@@ -56,6 +59,18 @@ std::string hashed_options(const SceneRequest& r, bool view_line) {
     return text;
 }
 
+// " animation-file=HASH" for a .vrma animation: its bytes decide the pose as the model's do
+// (unreadable: "-", and the render reports why).
+std::string animation_file(const std::string& animation) {
+    if (!io::is_vrma_path(animation)) return {};
+    std::ifstream in(animation, std::ios::binary);
+    if (!in) return " animation-file=-";
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(bytes)));
+    return std::string(" animation-file=") + hex;
+}
+
 }  // namespace
 
 std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t model_bytes) {
@@ -71,7 +86,7 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     text += "size=" + std::to_string(r.size.x) + "x" + std::to_string(r.size.y) +
             " samples=" + std::to_string(r.samples) + " png=" + (job.outputs.png ? "1" : "0") +
             " svg=" + (job.outputs.svg ? "1" : "0");
-    text += hashed_options(r, /*view_line=*/false) + "\n";
+    text += hashed_options(r, /*view_line=*/false) + animation_file(r.animation) + "\n";
     text += "style=" + job.style + "\n";
     text += style_text;
     char hex[17];

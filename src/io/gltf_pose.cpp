@@ -14,7 +14,10 @@
 #include "io/gltf_morph_targets.hpp"
 #include "io/gltf_names.hpp"
 #include "io/gltf_skinning.hpp"
+#include "io/vrm_animation.hpp"
+#include "io/vrm_animation_pose.hpp"
 #include "io/vrm_expressions.hpp"
+#include "io/vrm_node_constraints.hpp"
 #include "io/vrm_spring_pose.hpp"
 
 namespace inkshade::io {
@@ -69,7 +72,8 @@ GltfPose::GltfPose(const tinygltf::Model& model, const std::string& path, const 
         for (size_t t = 0; t < weights_[i].size() && t < node.weights.size(); ++t)
             if (std::isfinite(node.weights[t])) weights_[i][t] = float(node.weights[t]);
     }
-    if (!pose.animation.empty()) {
+    const bool vrma = is_vrma_path(pose.animation);
+    if (!pose.animation.empty() && !vrma) {
         const int index = find_gltf_animation(model, pose.animation, path);
         animated_ = sample_gltf_animation(model, index, double(pose.time), reader);
         for (size_t i = 0; i < n; ++i)
@@ -78,10 +82,40 @@ GltfPose::GltfPose(const tinygltf::Model& model, const std::string& path, const 
                     weights_[i][t] = (*animated_[i].weights)[t];
     }
     const std::vector<VrmExpression> expressions = read_vrm_expressions(model, path, warnings);
-    if (!expressions.empty() || !pose.expressions.empty())
-        apply_vrm_expressions(expressions, pose.expressions, weights_, path);
+    const std::vector<NamedWeight> expression_weights =
+        vrma ? apply_vrm_animation(model, path, pose, rest(), expressions, *this, warnings) : pose.expressions;
+    if (!expressions.empty() || !expression_weights.empty())
+        apply_vrm_expressions(expressions, expression_weights, weights_, path);
     apply_named_weights(model, pose.morphs, weights_, path);
+    // three-vrm's VRM.update runs the node constraints after the humanoid, look-at and expressions.
+    const std::vector<VrmNodeConstraint> constraints = read_vrm_node_constraints(model, path, warnings);
+    if (!constraints.empty())
+        apply_vrm_node_constraints(constraints, vrm_node_constraint_order(constraints, parent_, path), rest(), *this);
+    // Spring bones after the node constraints, as VRM.update runs them.
     spring_ = pose_spring_bones(model, path, pose, reader, file_transform, parent_, warnings);
+    world_.assign(world_.size(), std::nullopt);  // the constraints' worlds predate the springs
+}
+
+const GltfRestPose& GltfPose::rest() const {
+    if (!rest_) rest_ = gltf_rest_pose(parent_, [&](size_t i) { return file_transform_(model_.nodes[i], i, path_); });
+    return *rest_;
+}
+
+glm::dquat GltfPose::rotation(size_t node) const {
+    if (!animated_.empty() && animated_[node].rotation) return *animated_[node].rotation;
+    return rest().rotation[node];
+}
+
+void GltfPose::set_rotation(size_t node, const glm::dquat& q) {
+    animated_.resize(model_.nodes.size());
+    animated_[node].rotation = q;
+    world_.assign(world_.size(), std::nullopt);  // every world below the node changes
+}
+
+void GltfPose::set_translation(size_t node, const glm::dvec3& t) {
+    animated_.resize(model_.nodes.size());
+    animated_[node].translation = t;
+    world_.assign(world_.size(), std::nullopt);
 }
 
 glm::dmat4 GltfPose::local(size_t index) const {

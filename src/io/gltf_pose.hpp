@@ -1,6 +1,7 @@
 // The pose a glTF/VRM file is read in (LoadOptions::pose): node transforms with an animation's
-// values in place of the file's, morph weights (the file's, the animation's, VRM expressions',
-// then by name), and the skins that follow the joints. read_gltf asks it for each node's local
+// values in place of the file's (a glTF animation, or a .vrma retargeted to the VRM humanoid with
+// its look-at), then VRM node constraints, morph weights (the file's, the animation's, VRM
+// expressions', then by name), and the skins that follow the joints. read_gltf asks it for each node's local
 // transform and lets it deform each primitive before the primitive joins the mesh.
 #pragma once
 #include <map>
@@ -14,6 +15,8 @@
 #include "inkshade/io.hpp"
 #include "io/gltf_accessors.hpp"
 #include "io/gltf_animation.hpp"
+#include "io/gltf_rest_pose.hpp"
+#include "io/pose_nodes.hpp"
 
 namespace tinygltf {
 class Model;
@@ -23,7 +26,7 @@ struct Primitive;
 
 namespace inkshade::io {
 
-class GltfPose {
+class GltfPose final : private PoseNodes {
 public:
     // The file's local transform of a node (matrix or T x R x S), checked; read_gltf's.
     using FileTransform = glm::dmat4 (*)(const tinygltf::Node& node, size_t index, const std::string& path);
@@ -46,9 +49,16 @@ public:
                 std::vector<float>& normals, const std::string& where) const;
 
     // The node's world transform: its parents' local transforms and its own.
-    glm::dmat4 world(size_t node) const;
+    glm::dmat4 world(size_t node) const override;
+    // The morph weights of the node's mesh in this pose (empty: none).
+    const std::vector<float>& morph_weights(size_t node) const { return weights_[node]; }
 
 private:
+    glm::dquat rotation(size_t node) const override;
+    void set_rotation(size_t node, const glm::dquat& q) override;
+    void set_translation(size_t node, const glm::dvec3& t) override;
+    // The file's rest pose, computed when a VRM step first needs it.
+    const GltfRestPose& rest() const;
     const std::vector<glm::dmat4>& joint_matrices(int skin) const;
 
     const tinygltf::Model& model_;
@@ -58,6 +68,7 @@ private:
     std::vector<AnimatedNode> animated_;       // empty: no animation
     std::vector<std::vector<float>> weights_;  // morph weights per node (empty: none)
     std::vector<int> parent_;                  // -1: a root
+    mutable std::optional<GltfRestPose> rest_;
     std::vector<std::optional<glm::dquat>> spring_;  // rotations spring bones give (empty: none)
     mutable std::vector<std::optional<glm::dmat4>> world_;
     mutable std::map<int, std::vector<glm::dmat4>> joint_matrices_;

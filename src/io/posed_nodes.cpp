@@ -3,10 +3,13 @@
 
 #include "io/tiny_gltf_config.hpp"
 
+#include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
+#include "io/gltf_accessors.hpp"
 #include "io/gltf_container.hpp"
 #include "io/gltf_pose.hpp"
 #include "io/gltf_scene_nodes.hpp"
+#include "io/vrm_humanoid.hpp"
 
 namespace inkshade {
 
@@ -16,10 +19,18 @@ std::vector<PosedNode> posed_nodes(const std::string& path, const Pose& pose) {
     const io::GltfAccessorReader reader(model, path);
     std::vector<std::string> warnings;
     const io::GltfPose posed(model, path, pose, reader, &io::gltf_node_transform, warnings);
-    std::vector<PosedNode> nodes;
-    for (size_t i = 0; i < model.nodes.size(); ++i)
-        nodes.push_back({model.nodes[i].name, glm::dvec3(posed.world(i)[3])});
-    return nodes;
+    std::vector<PosedNode> out(model.nodes.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+        out[i].name = model.nodes[i].name;
+        out[i].position = glm::dvec3(posed.world(i)[3]);
+        out[i].morph_weights = posed.morph_weights(i);
+    }
+    try {
+        if (const auto humanoid = io::read_vrm_humanoid(model, path, warnings))
+            for (const auto& [bone, node] : humanoid->bones) out[size_t(node)].human_bone = bone;
+    } catch (const InputError&) {  // a humanoid three-vrm would refuse names no bones
+    }
+    return out;
 }
 
 }  // namespace inkshade

@@ -296,9 +296,9 @@ void add_outputs_and_pose(std::vector<OptionSpec>& t) {
                       .fronts = kScene | kBatch | kPython, .min = 0, .max = kInf, .unit = "seconds",
                       .hash = HashUse::ImageWhenSet, .metadata = "time"},
                      [](auto& r) -> auto& { return r.time; }));
-    t.push_back(bind({.name = "animation", .kind = K::Text, .value = "NAME|INDEX",
-                      .help = "pose a glTF/VRM model by one of its animations (name or index) at --time (default: "
-                              "none, the file's pose)",
+    t.push_back(bind({.name = "animation", .kind = K::Text, .value = "NAME|INDEX|FILE.vrma",
+                      .help = "pose a glTF/VRM model by one of its animations (name or index), or a VRM avatar by a "
+                              "VRM animation file (.vrma), at --time (default: none, the file's pose)",
                       .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet, .metadata = "animation"},
                      [](auto& r) -> auto& { return r.animation; }));
     t.push_back(bind({.name = "expression", .kind = K::Weights, .value = "NAME=W",

@@ -140,6 +140,19 @@ TEST(BatchManifest, MarginColumnAndDefaultReachTheCamera) {
     EXPECT_NE(job_hash(jobs[0], "", -1), job_hash(jobs[1], "", -1));
 }
 
+// A .vrma animation's bytes are part of the hash: a changed file renders again.
+TEST(BatchManifest, VrmAnimationFileBytesEnterTheHash) {
+    test::TempDir dir;
+    const std::string clip = dir.write("clip.vrma", "first");
+    const auto jobs = parse_manifest("model,animation\na.vrm," + clip + "\nb.vrm,wave\n", "m.csv");
+    ASSERT_EQ(jobs.size(), 2u);
+    EXPECT_EQ(jobs[0].options.animation, clip);
+    const std::string before = job_hash(jobs[0], "", -1), named = job_hash(jobs[1], "", -1);
+    dir.write("clip.vrma", "second");
+    EXPECT_NE(job_hash(jobs[0], "", -1), before);
+    EXPECT_EQ(job_hash(jobs[1], "", -1), named);  // an animation inside the model: no file read
+}
+
 TEST(BatchManifest, LightIntensityColumnAndDefaultReachTheJob) {
     BatchDefaults d;
     d.options.light_intensity = 2.0f;

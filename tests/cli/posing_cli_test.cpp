@@ -5,6 +5,7 @@
 
 #include "cli/run_cli.hpp"
 #include "io/avatar_files.hpp"
+#include "io/vrm_rig_files.hpp"
 
 namespace inkshade::test {
 namespace {
@@ -39,6 +40,25 @@ TEST(PosingCli, BadPosesAreOneLineErrors) {
         "builtin:sphere: only glTF, GLB and VRM files have animations, morph targets and expressions");
     expect_one_line_error("render " + path + " --time" + out, "--time");
     EXPECT_FALSE(std::filesystem::exists(dir.file("out.png")));
+}
+
+// --animation FILE.vrma: a VRM animation file, relative to the working directory; a missing or
+// bad one is exit 2 with one line naming it.
+TEST(PosingCli, VrmAnimationFiles) {
+    TempDir dir;
+    const std::string avatar = dir.write("rig.vrm", rig_avatar(false).glb());
+    const std::string clip = dir.write("clip.vrma", rig_animation().glb());
+    const std::string common = " --lines border --size 64x64 -o ";
+    auto r = run_cli("lines " + avatar + " --animation " + clip + " --time 0.3" + common + dir.file("a.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("lines " + avatar + common + dir.file("rest.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir.file("a.svg")), slurp(dir.file("rest.svg")));
+    expect_one_line_error("lines " + avatar + " --animation " + dir.file("none.vrma") + common + dir.file("b.svg"),
+                          dir.file("none.vrma"));
+    const std::string quad = dir.write("quad.vrma", textured_quad().glb());
+    expect_one_line_error("lines " + avatar + " --animation " + quad + common + dir.file("b.svg"),
+                          quad + ": is not a VRM animation");
 }
 
 TEST(PosingCli, LinesFollowThePose) {

@@ -532,6 +532,9 @@ class PoseTest(unittest.TestCase):
             r.render("lambert", morph={"lfit": 1})
         with self.assertRaisesRegex(ValueError, "unknown keyword 'pose'"):
             inkshade.load_mesh(self.model, pose=1)
+        # A .vrma path is a VRM animation file, which needs a VRM humanoid (the box has none).
+        with self.assertRaisesRegex(ValueError, "has no VRM humanoid, which the VRM animation 'walk.vrma' needs"):
+            inkshade.load_mesh(self.model, animation="walk.vrma")
 
     def test_batch_samples_an_animation(self):
         manifest = os.path.join(self.tmp.name, "frames.csv")

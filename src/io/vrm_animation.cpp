@@ -1,0 +1,185 @@
+#include "io/vrm_animation.hpp"
+
+#include <fstream>  // as in gltf_reader.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
+
+#include "io/tiny_gltf_config.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "inkshade/error.hpp"
+#include "io/gltf_accessors.hpp"
+#include "io/gltf_animation.hpp"
+#include "io/gltf_container.hpp"
+#include "io/gltf_names.hpp"
+#include "io/gltf_rest_pose.hpp"
+#include "io/gltf_scene_nodes.hpp"
+
+namespace inkshade::io {
+
+namespace {
+
+const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
+    static const tinygltf::Value none;
+    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
+}
+
+// A `node` member: -1 when absent; a node the file does not have is an error (three-vrm would
+// fail on it).
+int node_of(const tinygltf::Value& object, const tinygltf::Model& model, const std::string& what,
+            const std::string& path) {
+    const tinygltf::Value& node = member(object, "node");
+    if (!node.IsNumber()) return -1;
+    const double d = node.GetNumberAsDouble();
+    if (!(d >= 0.0 && d < double(model.nodes.size()) && d == std::floor(d))) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%g", d);
+        throw InputError(
+            path, what + " is node " + number + " but the file has " + std::to_string(model.nodes.size()) + " nodes");
+    }
+    return int(d);
+}
+
+// The `node` members of an object of objects ({"hips": {"node": 3}, ...}) as name -> node.
+std::map<std::string, int> node_map(const tinygltf::Value& object, const tinygltf::Model& model,
+                                    const std::string& what, const std::string& path) {
+    std::map<std::string, int> out;
+    if (!object.IsObject()) return out;
+    for (const std::string& name : object.Keys()) {
+        const int node = node_of(object.Get(name), model, what + " '" + printable_name(name) + "'", path);
+        if (node >= 0) out[name] = node;
+    }
+    return out;
+}
+
+// The VRMC_vrm_animation extension, checked as VRMAnimationLoaderPlugin does.
+const tinygltf::Value& vrma_extension(const tinygltf::Model& model, const std::string& path) {
+    const auto ext = model.extensions.find("VRMC_vrm_animation");
+    const bool used = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "VRMC_vrm_animation") !=
+                      model.extensionsUsed.end();
+    if (ext == model.extensions.end() || !used || !ext->second.IsObject())
+        throw InputError(path, "is not a VRM animation (no VRMC_vrm_animation extension)");
+    const tinygltf::Value& version = member(ext->second, "specVersion");
+    if (version.IsString() && version.Get<std::string>() != "1.0" && version.Get<std::string>() != "1.0-draft")
+        throw InputError(path, "unknown VRMC_vrm_animation specVersion '" + printable_name(version.Get<std::string>()) +
+                                   "' (1.0 is read)");
+    if (model.animations.empty()) throw InputError(path, "the VRM animation has no animation");
+    return ext->second;
+}
+
+// Each human bone's animated rotation in the normalized humanoid's terms: B x q x A^-1, A the
+// bone's rest world rotation, B that of its nearest human-bone ancestor the .vrma has (or of
+// the hips' parent) (three-vrm-animation VRMAnimationLoaderPlugin._parseAnimation).
+void normalized_rotations(const std::map<std::string, int>& bones, const GltfRestPose& rest,
+                          const std::vector<AnimatedNode>& animated, VrmAnimationSample& out) {
+    std::map<std::string, std::string> parent_of;
+    for (const auto& [bone, parent] : vrm_human_bones()) parent_of[bone] = parent;
+    const auto hips = bones.find("hips");
+    const glm::dquat hips_parent =
+        hips == bones.end() ? glm::dquat(1.0, 0.0, 0.0, 0.0) : rest.parent_world_rotation(size_t(hips->second));
+    for (const auto& [bone, node] : bones) {
+        if (!animated[size_t(node)].rotation) continue;
+        std::string parent = parent_of.count(bone) ? parent_of[bone] : "";
+        while (!parent.empty() && !bones.count(parent)) parent = parent_of[parent];
+        const glm::dquat b = parent.empty() ? hips_parent : rotation_of(rest.world[size_t(bones.at(parent))]);
+        const glm::dquat a = rotation_of(rest.world[size_t(node)]);
+        out.rotations[bone] = b * *animated[size_t(node)].rotation * glm::inverse(a);
+    }
+}
+
+// createVRMAnimationHumanoidTracks and _parseAnimation build new tracks for the humanoid
+// rotations and the expression weights, which take three.js's default interpolation: STEP keys
+// of those channels are interpolated linearly there, and so here.
+void step_as_linear(tinygltf::Model& model, const std::map<std::string, int>& bones,
+                    const std::map<std::string, int>& expressions) {
+    auto is_bone = [&](int node) {
+        for (const auto& [name, n] : bones)
+            if (n == node) return true;
+        return false;
+    };
+    auto is_expression = [&](int node) {
+        for (const auto& [name, n] : expressions)
+            if (n == node) return true;
+        return false;
+    };
+    tinygltf::Animation& animation = model.animations[0];
+    for (const tinygltf::AnimationChannel& c : animation.channels) {
+        const bool rebuilt = (c.target_path == "rotation" && is_bone(c.target_node)) ||
+                             (c.target_path == "translation" && is_expression(c.target_node));
+        if (rebuilt && c.sampler >= 0 && size_t(c.sampler) < animation.samplers.size() &&
+            animation.samplers[size_t(c.sampler)].interpolation == "STEP")
+            animation.samplers[size_t(c.sampler)].interpolation = "LINEAR";
+    }
+}
+
+}  // namespace
+
+bool is_vrma_path(const std::string& animation) {
+    if (animation.size() < 5) return false;
+    std::string ext = animation.substr(animation.size() - 5);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".vrma";
+}
+
+VrmAnimationSample read_vrm_animation(const std::string& path, double time) {
+    tinygltf::Model model;
+    load_gltf_model(path, model);
+    const tinygltf::Value& ext = vrma_extension(model, path);
+    const std::map<std::string, int> bones =
+        node_map(member(member(ext, "humanoid"), "humanBones"), model, "humanoid bone", path);
+    std::map<std::string, int> expressions;
+    for (const char* group : {"preset", "custom"})
+        for (const auto& [name, node] : node_map(member(member(ext, "expressions"), group), model, "expression", path))
+            expressions.emplace(name, node);
+    const int look_at = node_of(member(ext, "lookAt"), model, "lookAt", path);
+
+    std::vector<int> parent(model.nodes.size(), -1);
+    for (size_t p = 0; p < model.nodes.size(); ++p)
+        for (int c : model.nodes[p].children)
+            if (c >= 0 && size_t(c) < parent.size() && parent[size_t(c)] < 0) parent[size_t(c)] = int(p);
+    const GltfRestPose rest =
+        gltf_rest_pose(parent, [&](size_t i) { return gltf_node_transform(model.nodes[i], i, path); });
+    step_as_linear(model, bones, expressions);
+    const GltfAccessorReader reader(model, path);
+    const std::vector<AnimatedNode> animated = sample_gltf_animation(model, 0, time, reader);
+
+    VrmAnimationSample out;
+    normalized_rotations(bones, rest, animated, out);
+    if (const auto hips = bones.find("hips"); hips != bones.end()) {
+        const size_t node = size_t(hips->second);
+        out.rest_hips_height = rest.world[node][3].y;
+        if (animated[node].translation) {
+            if (!(out.rest_hips_height > 0.0))
+                throw InputError(path, "the rest pose's hips are at height " + std::to_string(out.rest_hips_height) +
+                                           " (a VRM animation's rest pose stands above y = 0)");
+            const glm::dmat4 m = parent[node] < 0 ? glm::dmat4(1.0) : rest.world[size_t(parent[node])];
+            out.hips = glm::dvec3(m * glm::dvec4(*animated[node].translation, 1.0));
+        }
+    }
+    for (const auto& [name, node] : expressions)
+        if (animated[size_t(node)].translation)
+            out.expressions.push_back({name, float(animated[size_t(node)].translation->x)});
+    if (look_at >= 0 && animated[size_t(look_at)].rotation) out.look_at = *animated[size_t(look_at)].rotation;
+    return out;
+}
+
+NormalizedPose retarget_vrm_animation(const VrmAnimationSample& sample, const VrmHumanoid& humanoid,
+                                      double avatar_hips_height, std::vector<std::string>& skipped) {
+    NormalizedPose pose;
+    // createVRMAnimationHumanoidTracks: VRM 0.x avatars face -z, so x and z change sign.
+    const glm::dvec3 flip = humanoid.v0 ? glm::dvec3(-1.0, 1.0, -1.0) : glm::dvec3(1.0);
+    for (const auto& [bone, q] : sample.rotations) {
+        if (humanoid.node(bone) < 0) {
+            skipped.push_back(bone);
+            continue;
+        }
+        pose.rotations[bone] = glm::dquat(q.w, flip.x * q.x, q.y, flip.z * q.z);
+    }
+    if (sample.hips && humanoid.node("hips") >= 0)
+        pose.hips_position = *sample.hips * flip * (avatar_hips_height / sample.rest_hips_height);
+    return pose;
+}
+
+}  // namespace inkshade::io
