@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "inkshade/error.hpp"
+#include "io/unit_vector_rotation.hpp"
 
 namespace inkshade::io {
 
@@ -26,22 +27,6 @@ glm::dvec3 normalized(const glm::dvec3& v) {
 
 // three.js's Vector3.transformDirection: the upper 3x3, normalised.
 glm::dvec3 direction(const glm::dmat4& m, const glm::dvec3& v) { return normalized(glm::dmat3(m) * v); }
-
-// three.js r187 Quaternion.setFromUnitVectors, then normalize.
-glm::dquat from_unit_vectors(const glm::dvec3& from, const glm::dvec3& to) {
-    double r = glm::dot(from, to) + 1.0;
-    glm::dquat q;
-    if (r < 1e-8) {
-        r = 0.0;
-        q = std::abs(from.x) > std::abs(from.z) ? glm::dquat(r, -from.y, from.x, 0.0)
-                                                : glm::dquat(r, 0.0, -from.z, from.y);
-    } else {
-        const glm::dvec3 c = glm::cross(from, to);
-        q = glm::dquat(r, c.x, c.y, c.z);
-    }
-    const double l = glm::length(q);
-    return l > 0.0 ? q / l : glm::dquat(1.0, 0.0, 0.0, 0.0);
-}
 
 // How far `tail` (with radius `hit`) is outside the collider (negative: inside) and, when
 // inside, the unit direction out of it: three-vrm's VRMSpringBoneColliderShapeSphere and

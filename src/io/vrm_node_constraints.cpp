@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "inkshade/error.hpp"
+#include "io/unit_vector_rotation.hpp"
 
 namespace inkshade::io {
 
@@ -22,23 +23,6 @@ const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
 }
 
 std::string text_of(const tinygltf::Value& v) { return v.IsString() ? v.Get<std::string>() : ""; }
-
-// three.js Quaternion.setFromUnitVectors (a half-turn about a perpendicular axis for opposite
-// vectors), normalised.
-glm::dquat from_unit_vectors(const glm::dvec3& from, const glm::dvec3& to) {
-    double r = glm::dot(from, to) + 1.0;
-    glm::dquat q;
-    if (r < 1e-8) {
-        r = 0.0;
-        q = std::abs(from.x) > std::abs(from.z) ? glm::dquat(r, -from.y, from.x, 0.0)
-                                                : glm::dquat(r, 0.0, -from.z, from.y);
-    } else {
-        const glm::dvec3 c = glm::cross(from, to);
-        q = glm::dquat(r, c.x, c.y, c.z);
-    }
-    const double len = glm::length(q);
-    return len > 0.0 ? q / len : glm::dquat(1.0, 0.0, 0.0, 0.0);
-}
 
 // three.js 0.187 Quaternion.slerp: a to b by t along the shorter arc; nearly parallel
 // quaternions interpolate linearly, then normalise.

@@ -565,7 +565,9 @@ class SpringBonesTest(unittest.TestCase):
 
     def cli_png(self, *options):
         png = os.path.join(self.tmp.name, "cli.png")
-        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--size", "64x48", "--azimuth", "115", *options,
+        # --style lambert: a VRM's default look is vrm; these renders compare lambert
+        result = subprocess.run([INKSHADE_BIN, "render", self.model, "--style", "lambert", "--size", "64x48",
+                                 "--azimuth", "115", *options,
                                  "-o", png], capture_output=True, text=True)
         self.assertEqual(result.returncode, 0, result.stderr)
         return read_png(png)
