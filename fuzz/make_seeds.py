@@ -307,6 +307,93 @@ def posed():
     return g
 
 
+HUMAN_BONES = [  # three-vrm's required bones, parent first, with a place (metres, +y up)
+    ("hips", None, [0, 1, 0]), ("spine", "hips", [0, 0.1, 0]), ("head", "spine", [0, 0.5, 0]),
+    ("leftUpperLeg", "hips", [0.1, -0.05, 0]), ("leftLowerLeg", "leftUpperLeg", [0, -0.45, 0]),
+    ("leftFoot", "leftLowerLeg", [0, -0.45, 0]), ("rightUpperLeg", "hips", [-0.1, -0.05, 0]),
+    ("rightLowerLeg", "rightUpperLeg", [0, -0.45, 0]), ("rightFoot", "rightLowerLeg", [0, -0.45, 0]),
+    ("leftUpperArm", "spine", [0.2, 0.35, 0]), ("leftLowerArm", "leftUpperArm", [0.25, 0, 0]),
+    ("leftHand", "leftLowerArm", [0.25, 0, 0]), ("rightUpperArm", "spine", [-0.2, 0.35, 0]),
+    ("rightLowerArm", "rightUpperArm", [-0.25, 0, 0]), ("rightHand", "rightLowerArm", [-0.25, 0, 0])]
+
+
+def skeleton(g, extra=None):
+    """The human bones as nodes (children set), returns {bone: node}."""
+    nodes = {}
+    for bone, parent, t in HUMAN_BONES:
+        nodes[bone] = g.node(dict({"name": bone, "translation": t}, **(extra or {})))
+        if parent:
+            g.doc["nodes"][nodes[parent]].setdefault("children", []).append(nodes[bone])
+    return nodes
+
+
+def rigged_avatar():
+    """A VRM 1.0 avatar for the pose code: the humanoid (every required bone), a morph target
+    bound by the expression happy, an expression look-at, a roll constraint, and a two-joint
+    spring with a sphere collider."""
+    g = Gltf()
+    bones = skeleton(g)
+    pos = g.floats([0, 0, 0, 0.2, 0, 0, 0, 0.3, 0], "VEC3", 3)
+    body = g.mesh({"POSITION": pos}, None)
+    g.doc["meshes"][body]["primitives"][0]["targets"] = [{"POSITION": g.floats([0, 0, 0.1] * 3, "VEC3", 3)}]
+    g.doc["meshes"][body]["extras"] = {"targetNames": ["smile"]}
+    g.doc["nodes"][bones["head"]]["mesh"] = body
+    hair = g.node({"name": "hair", "translation": [0, 0.1, -0.1]})
+    tip = g.node({"name": "tip", "translation": [0, -0.15, 0]})
+    g.doc["nodes"][hair]["children"] = [tip]
+    g.doc["nodes"][bones["head"]].setdefault("children", []).append(hair)
+    twist = g.node({"name": "twist", "translation": [0, 0.05, 0],
+                    "extensions": {"VRMC_node_constraint": {"specVersion": "1.0", "constraint": {
+                        "roll": {"source": bones["leftLowerArm"], "rollAxis": "X", "weight": 0.5}}}}})
+    g.doc["nodes"][bones["leftUpperArm"]]["children"].append(twist)
+    g.doc["extensions"] = {
+        "VRMC_vrm": {"specVersion": "1.0", "meta": {"name": "seed"},
+                     "humanoid": {"humanBones": {b: {"node": n} for b, n in bones.items()}},
+                     "expressions": {"preset": {"happy": {"morphTargetBinds": [{"node": bones["head"], "index": 0, "weight": 1}]}}},
+                     "lookAt": {"type": "expression", "offsetFromHeadBone": [0, 0.06, 0],
+                                "rangeMapHorizontalOuter": {"inputMaxValue": 90, "outputScale": 1}}},
+        "VRMC_springBone": {"specVersion": "1.0",
+                            "colliders": [{"node": bones["head"], "shape": {"sphere": {"offset": [0, 0, 0], "radius": 0.1}}}],
+                            "colliderGroups": [{"colliders": [0]}],
+                            "springs": [{"joints": [{"node": hair, "hitRadius": 0.02, "stiffness": 1, "gravityPower": 1,
+                                                     "gravityDir": [0, -1, 0], "dragForce": 0.4}, {"node": tip}],
+                                         "colliderGroups": [0]}]}}
+    g.doc["extensionsUsed"] = ["VRMC_vrm", "VRMC_springBone", "VRMC_node_constraint"]
+    g.doc["scenes"] = [{"nodes": [bones["hips"]]}]
+    return g
+
+
+def clip():
+    """A VRM animation: the spine turning, the hips rising, happy and the look-at target keyed."""
+    g = Gltf()
+    bones = skeleton(g)
+    happy = g.node({"name": "happy"})
+    look = g.node({"name": "lookAt", "translation": [0, 1.6, 1]})
+    times = g.floats([0, 1, 2], "SCALAR", 1)
+    turn = g.floats([0, 0, 0, 1, 0, 0.3827, 0, 0.9239, 0, 0, 0, 1], "VEC4", 4)
+    rise = g.floats([0, 1, 0, 0, 1.1, 0, 0, 1, 0], "VEC3", 3)
+    weight = g.floats([0, 0, 0, 1, 0, 0, 0, 0, 0], "VEC3", 3)
+    aim = g.floats([0, 1.6, 1, 1, 1.6, 1, -1, 1.6, 1], "VEC3", 3)
+    g.doc["animations"] = [{"samplers": [{"input": times, "output": o} for o in (turn, rise, weight, aim)], "channels": [
+        {"sampler": 0, "target": {"node": bones["spine"], "path": "rotation"}},
+        {"sampler": 1, "target": {"node": bones["hips"], "path": "translation"}},
+        {"sampler": 2, "target": {"node": happy, "path": "translation"}},
+        {"sampler": 3, "target": {"node": look, "path": "translation"}}]}]
+    g.doc["extensions"] = {"VRMC_vrm_animation": {
+        "specVersion": "1.0", "humanoid": {"humanBones": {b: {"node": n} for b, n in bones.items()}},
+        "expressions": {"preset": {"happy": {"node": happy}}}, "lookAt": {"node": look}}}
+    g.doc["extensionsUsed"] = ["VRMC_vrm_animation"]
+    g.doc["scenes"] = [{"nodes": [bones["hips"], happy, look]}]
+    return g
+
+
+def write_vrma():
+    # Byte 0: the time (bits 0-4, quarter seconds), spring bones off at bit 7; then the avatar,
+    # "\n#%%\n", the clip.
+    write("vrma", "rig_at_1.25s.bin", bytes([5]) + rigged_avatar().glb() + MARK + clip().glb())
+    write("vrma", "rig_at_2.5s_no_springs.bin", bytes([138]) + rigged_avatar().glb() + MARK + clip().glb())
+
+
 def write_gltf():
     # Byte 0 picks the extension in fuzz_gltf (even: .gltf, odd: .glb).
     write("gltf", "quad_embedded.gltf", b"\0" + textured_quad(False).gltf())
@@ -320,6 +407,8 @@ def write_gltf():
     # the morph at 1.5, the expression at 0.5); 82 = gltf, pose 41 (no animation, the morph at 1.25).
     write("gltf", "posed.glb", bytes([117]) + posed().glb())
     write("gltf", "posed.gltf", bytes([82]) + posed().gltf())
+    # 43 = glb, pose 21: 2.25 s of spring bones, the expression at 0 (the rig has no animation).
+    write("gltf", "rig_springs.glb", bytes([43]) + rigged_avatar().glb())
 
 
 # --- styles ---------------------------------------------------------------------------------
@@ -369,6 +458,7 @@ if __name__ == "__main__":
     write_ply()
     write_off()
     write_gltf()
+    write_vrma()
     write_style()
     write_mesh_pipeline()
     write_manifest()

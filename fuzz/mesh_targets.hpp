@@ -61,17 +61,19 @@ inline void ply_input(std::string_view data) {
 }
 
 // The pose `choice` (1..127) picks among the names a loaded glTF/VRM file's pose takes: an
-// animation (or none) at a time of 0..5.5 s, the first morph target at a weight of -1..2.75 and
-// the first expression at 0, 0.5 or 1; the file is loaded again in it, so that animation
-// sampling, skinning, morph targets and VRM expression binds see the fuzzer's bytes.
+// animation (or none), a time of 0..5.5 s (which also runs the spring bones, off when bit 64 is
+// set), the first morph target at a weight of -1..2.75 and the first expression at 0, 0.5 or 1;
+// the file is loaded again in it, so that animation sampling, skinning, spring bones, morph
+// targets and VRM expression binds see the fuzzer's bytes.
 inline Pose fuzz_pose(const FilePoseNames& names, unsigned choice) {
     Pose pose;
+    pose.time = float((choice * 7) % 23) * 0.25f;
+    pose.spring_bones = (choice & 64) == 0;
     if (!names.animations.empty()) {
         const size_t a = choice % (names.animations.size() + 1);
         if (a < names.animations.size()) {
             const std::string& name = names.animations[a].name;
             pose.animation = name.empty() ? std::to_string(a) : name;
-            pose.time = float((choice * 7) % 23) * 0.25f;
         }
     }
     if (!names.morph_targets.empty() && (choice & 8))
@@ -79,6 +81,18 @@ inline Pose fuzz_pose(const FilePoseNames& names, unsigned choice) {
     if (!names.expressions.empty() && (choice & 16))
         pose.expressions.push_back({names.expressions.front().name, float(choice % 3) * 0.5f});
     return pose;
+}
+
+// Loads `path` in `pose`, as load_checked does.
+inline void load_posed(const std::string& path, const Pose& pose) {
+    Mesh mesh;
+    try {
+        mesh = load_mesh(path, LoadOptions{.pose = pose});
+    } catch (const InputError& e) {
+        check_error(e, path);
+        return;
+    }
+    check_mesh(mesh);
 }
 
 // glTF 2.0 JSON and GLB: byte 0's lowest bit picks the extension (even: .gltf, odd: .glb; the
@@ -96,17 +110,26 @@ inline void gltf_input(std::string_view data) {
     else
         remove_file("b.bin");
     Mesh mesh;
-    if (!load_checked(path, mesh) || byte0 / 2 == 0 || mesh.pose_names.empty()) return;
-    LoadOptions posed;
-    posed.pose = fuzz_pose(mesh.pose_names, byte0 / 2);
-    if (posed.pose.is_rest()) return;
-    try {
-        mesh = load_mesh(path, posed);
-    } catch (const InputError& e) {
-        check_error(e, path);
-        return;
-    }
-    check_mesh(mesh);
+    if (!load_checked(path, mesh) || byte0 / 2 == 0) return;
+    const Pose pose = fuzz_pose(mesh.pose_names, byte0 / 2);
+    if (pose != Pose{}) load_posed(path, pose);
+}
+
+// A VRM avatar and a VRM animation (.vrma) cut from one input at "\n#%%\n": the avatar takes the
+// clip at a time of 0..7.75 s picked by byte 0 (its bit 128: spring bones off), which reads the
+// clip, retargets it to the avatar's humanoid with its expressions and look-at, and applies the
+// avatar's node constraints.
+inline void vrma_input(std::string_view data) {
+    if (data.empty()) return;
+    const unsigned byte0 = static_cast<unsigned char>(data[0]);
+    const auto parts = split(data.substr(1), kPartMarker, 2);
+    const std::string avatar = write_file("avatar.vrm", parts[0]);
+    const std::string clip = write_file("clip.vrma", parts.size() > 1 ? parts[1] : std::string_view());
+    Pose pose;
+    pose.animation = clip;
+    pose.time = float(byte0 % 32) * 0.25f;
+    pose.spring_bones = (byte0 & 128) == 0;
+    load_posed(avatar, pose);
 }
 
 // The mesh pipeline after loading, on whatever a loader accepts: welding and normals (load_mesh),

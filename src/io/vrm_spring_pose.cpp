@@ -9,6 +9,7 @@
 #include <glm/gtx/matrix_decompose.hpp>
 
 #include "io/gltf_animation.hpp"
+#include "io/vrm_animation.hpp"
 #include "io/vrm_spring_bones.hpp"
 
 namespace inkshade::io {
@@ -40,7 +41,10 @@ std::vector<std::optional<glm::dquat>> pose_spring_bones(
     std::vector<NodeTrs> rest;
     for (size_t i = 0; i < model.nodes.size(); ++i)
         rest.push_back(file_node_trs(model.nodes[i], file_transform(model.nodes[i], i, path)));
-    const int animation = pose.animation.empty() ? -1 : find_gltf_animation(model, pose.animation, path);
+    // A VRM animation (.vrma) does not drive the spring roots yet: under one the springs swing
+    // from the file's pose (docs/inputs.md).
+    const bool glTF_animation = !pose.animation.empty() && !is_vrma_path(pose.animation);
+    const int animation = glTF_animation ? find_gltf_animation(model, pose.animation, path) : -1;
     const NodePoseAt pose_at = [&](double time, std::vector<NodeTrs>& nodes) {
         if (animation < 0) return;
         const std::vector<AnimatedNode> a = sample_gltf_animation(model, animation, time, reader);

@@ -59,6 +59,28 @@ TEST(FuzzRegressions, PosedSeedIsPosedByTheHarness) {
     EXPECT_EQ(posed.cameras.size(), 1u);
 }
 
+TEST(FuzzRegressions, ReplayVrma) { replay("vrma", fuzz::vrma_input); }
+
+// The rig seeds reach the VRM pose code: the clip retargets onto the avatar's humanoid and moves
+// its head (the spine turns and the hips rise), the expression moves the morph target, and the
+// spring bones and the roll constraint load without an error.
+TEST(FuzzRegressions, VrmaSeedPosesTheRig) {
+    std::ifstream in(std::string(INKSHADE_SOURCE_DIR) + "/fuzz/corpus/vrma/rig_at_1.25s.bin", std::ios::binary);
+    const std::string seed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(seed.size(), 1u);
+    const auto parts = fuzz::split(std::string_view(seed).substr(1), fuzz::kPartMarker, 2);
+    ASSERT_EQ(parts.size(), 2u);
+    TempDir dir;
+    const std::string avatar = dir.write("rig.vrm", std::string(parts[0]));
+    const std::string clip = dir.write("clip.vrma", std::string(parts[1]));
+    const Mesh rest = load_mesh(avatar);
+    ASSERT_EQ(rest.pose_names.expressions.size(), 1u);
+    const Mesh posed = load_mesh(avatar, LoadOptions{.pose = {.animation = clip, .time = 1.25f}});
+    ASSERT_EQ(posed.positions.size(), rest.positions.size());
+    EXPECT_NE(posed.positions, rest.positions);
+    EXPECT_TRUE(posed.warnings.empty()) << posed.warnings.front();
+}
+
 TEST(FuzzRegressions, ReplayMeshPipeline) { replay("mesh_pipeline", fuzz::mesh_pipeline_input); }
 
 std::shared_ptr<const Texture> decode_texture_for_test(const std::string& bytes, std::string& problem) {
