@@ -83,13 +83,14 @@ inline Pose fuzz_pose(const FilePoseNames& names, unsigned choice) {
     return pose;
 }
 
-// Loads `path` in `pose`, as load_checked does.
-inline void load_posed(const std::string& path, const Pose& pose) {
+// Loads `path` in `pose`, as load_checked does; an error may also be about `other` (a VRM
+// animation file the pose names), and then starts with that file's name.
+inline void load_posed(const std::string& path, const Pose& pose, const std::string& other = {}) {
     Mesh mesh;
     try {
         mesh = load_mesh(path, LoadOptions{.pose = pose});
     } catch (const InputError& e) {
-        check_error(e, path);
+        check_error(e, !other.empty() && std::string(e.what()).rfind(other + ": ", 0) == 0 ? other : path);
         return;
     }
     check_mesh(mesh);
@@ -129,7 +130,7 @@ inline void vrma_input(std::string_view data) {
     pose.animation = clip;
     pose.time = float(byte0 % 32) * 0.25f;
     pose.spring_bones = (byte0 & 128) == 0;
-    load_posed(avatar, pose);
+    load_posed(avatar, pose, clip);
 }
 
 // The mesh pipeline after loading, on whatever a loader accepts: welding and normals (load_mesh),
