@@ -16,15 +16,11 @@
 #include "io/gltf_names.hpp"
 #include "io/gltf_rest_pose.hpp"
 #include "io/gltf_scene_nodes.hpp"
+#include "io/gltf_value_member.hpp"
 
 namespace inkshade::io {
 
 namespace {
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 // A `node` member: -1 when absent; a node the file does not have is an error (three-vrm would
 // fail on it).

@@ -12,6 +12,7 @@
 #include "inkshade/error.hpp"
 #include "io/gltf_morph_targets.hpp"
 #include "io/gltf_names.hpp"
+#include "io/gltf_value_member.hpp"
 
 namespace inkshade::io {
 
@@ -44,11 +45,6 @@ const std::map<std::string, std::string> kV0Presets = {{"a", "aa"},
                                                        {"blink_l", "blinkLeft"},
                                                        {"blink_r", "blinkRight"},
                                                        {"neutral", "neutral"}};
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 double number_or(const tinygltf::Value& v, double fallback) {
     return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback;

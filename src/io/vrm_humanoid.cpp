@@ -8,15 +8,11 @@
 
 #include "inkshade/error.hpp"
 #include "io/gltf_names.hpp"
+#include "io/gltf_value_member.hpp"
 
 namespace inkshade::io {
 
 namespace {
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 // A node index member, or -1 when absent or not a non-negative integer.
 int index_of(const tinygltf::Value& v) {

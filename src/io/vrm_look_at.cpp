@@ -3,6 +3,7 @@
 #include <fstream>  // as in gltf_reader.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
 
 #include "io/tiny_gltf_config.hpp"
+#include "io/gltf_value_member.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,11 +12,6 @@
 namespace inkshade::io {
 
 namespace {
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 double number_or(const tinygltf::Value& v, double fallback) {
     return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback;

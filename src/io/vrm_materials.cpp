@@ -5,6 +5,7 @@
 #include <fstream>  // as in gltf_reader.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
 
 #include "io/tiny_gltf_config.hpp"
+#include "io/gltf_value_member.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -79,11 +80,6 @@ constexpr MtoonTextureName kMtoonTextureNames[] = {
     {"shading-shift-texture", "shadingShiftTexture", nullptr},  // VRM 0.x has none
     {"uv-animation-mask-texture", "uvAnimationMaskTexture", "_UvAnimMaskTexture"},
 };
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 }  // namespace
 

@@ -10,17 +10,13 @@
 
 #include "inkshade/error.hpp"
 #include "io/unit_vector_rotation.hpp"
+#include "io/gltf_value_member.hpp"
 
 namespace inkshade::io {
 
 namespace {
 
 constexpr size_t kMaxChain = 1024;
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 std::string text_of(const tinygltf::Value& v) { return v.IsString() ? v.Get<std::string>() : ""; }
 

@@ -10,15 +10,11 @@
 
 #include "inkshade/error.hpp"
 #include "io/gltf_names.hpp"
+#include "io/gltf_value_member.hpp"
 
 namespace inkshade::io {
 
 namespace {
-
-const tinygltf::Value& member(const tinygltf::Value& object, const char* key) {
-    static const tinygltf::Value none;
-    return object.IsObject() && object.Has(key) ? object.Get(key) : none;
-}
 
 // "9", "-1", "0.5": a number as the file might spell it.
 std::string number_text(double v) {
