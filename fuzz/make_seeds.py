@@ -452,6 +452,16 @@ def write_manifest():
     write("manifest", "jobs_by_content.txt", b"\2" + b'{"model": "builtin:teapot"}\n')
 
 
+# --- view scripts (inkshade view --script) ---------------------------------------------------
+def write_view_script():
+    write("view_script", "every_command.txt",
+          "# every command once\ngui off\nframes 2\nkey F\nkey 3\nset levels=0.2,0.5,0.9\n"
+          "set outline.color=#ff8800  # a colour is no comment\nstyle cel-002\nlight-pos 1,2.5,-3\n"
+          "orbit 30 -15\nzoom 0.8\nopen builtin:torus\nscreenshot shot.png\nsave-frame frame.png\n"
+          "save-style saved.toml\ngui on\nquit\n")
+    write("view_script", "crlf_and_blanks.txt", "\tframes 1\r\n\r\n   # indented comment\r\nscreenshot a b.png\r\n")
+
+
 if __name__ == "__main__":
     write_obj()
     write_stl()
@@ -462,3 +472,4 @@ if __name__ == "__main__":
     write_style()
     write_mesh_pipeline()
     write_manifest()
+    write_view_script()
