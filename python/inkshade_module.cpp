@@ -429,7 +429,7 @@ void def_batch(py::module_& m) {
                         py::arg("seconds") = summary.seconds, py::arg("failures") = failures);
         },
         py::arg("output_dir"), py::kw_only(), py::arg("manifest") = py::none(), py::arg("models") = py::none(),
-        py::arg("views") = BatchDefaults{}.views, py::arg("styles") = std::vector<std::string>{BatchDefaults{}.styles},
+        py::arg("views") = BatchDefaults{}.views, py::arg("styles") = std::vector<std::string>{},
         py::arg("formats") = std::vector<std::string>{"png"}, py::arg("force") = false, py::arg("shard") = py::none(),
         py::arg("progress") = py::none(),
         ("Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}. "

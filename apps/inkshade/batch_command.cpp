@@ -85,7 +85,7 @@ BatchDefaults defaults_from(const BatchArgs& a, const CLI::App& cmd) {
     named("--views", [&] { parse_views(a.views); });
     d.views = a.views;
     named("--styles", [&] {
-        if (batch::split_list(a.styles, ",;").empty()) throw InputError("no style given");
+        if (cmd.count("--styles") && batch::split_list(a.styles, ",;").empty()) throw InputError("no style given");
     });
     d.styles = a.styles;
     named("--format", [&] { d.outputs = batch::parse_formats(a.format); });
@@ -186,8 +186,9 @@ Command add_batch_command(CLI::App& app) {
                     "views where the manifest gives none: orbitAxE, turntable:N[:EL], AZ:EL[:DIST], camera=NAME "
                     "(the model file's camera), 'eye=X,Y,Z target=X,Y,Z' (explicit cameras separated by ';')")
         ->capture_default_str();
-    cmd->add_option("--styles", args->styles, "styles where the manifest gives none, comma-separated")
-        ->capture_default_str();
+    cmd->add_option("--styles", args->styles,
+                    "styles where the manifest gives none, comma-separated (default: each model's own, as "
+                    "`render` without --style: vrm for a glTF with MToon materials, else lambert)");
     cmd->add_option("--format", args->format, "outputs where the manifest gives none: png, svg or png,svg")
         ->capture_default_str();
     args->scene.add_to(*cmd, kBatch, /*model=*/false, false, " (where the manifest gives none)");

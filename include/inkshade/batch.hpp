@@ -54,7 +54,9 @@ AovSet job_aovs(const BatchJob& job);
 // What a manifest line (or --models) leaves out.
 struct BatchDefaults {
     std::string views = "35:20";     // parse_views; the auto-framing default view
-    std::string styles = "lambert";  // comma-separated
+    // Comma-separated; empty: each model's own, default_style_name (scene.hpp): `vrm` for a glTF
+    // with MToon materials, else `lambert`, as `inkshade render` without --style.
+    std::string styles;
     BatchOutputs outputs;
     SceneRequest options = default_request(kBatch);  // the table's batch options (--size, --fov, ...)
 };

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "inkshade/error.hpp"
+#include "inkshade/scene.hpp"
 #include "io/text_scanner.hpp"
 
 namespace inkshade {
@@ -93,7 +94,8 @@ JobGroup default_group(const BatchDefaults& d) {
 void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
     if (group.model.empty()) throw InputError("model: empty");
     const std::vector<BatchView> views = parse_views(group.views);
-    const std::vector<std::string> styles = split_list(group.styles, ",;");
+    const std::vector<std::string> styles =
+        group.styles.empty() ? std::vector<std::string>{default_style_name(group.model)} : split_list(group.styles, ",;");
     if (styles.empty()) throw InputError("styles: no style given");
     std::map<std::string, std::string> style_names;  // stem name -> style, to catch a clash
     for (const std::string& s : styles) {

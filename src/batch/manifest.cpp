@@ -76,8 +76,11 @@ void set_field(JobGroup& g, const std::string& key, const std::string& value) {
         g.name = value;
     else if (key == "views" || key == "view")
         g.views = value;
-    else if (key == "styles" || key == "style")
+    else if (key == "styles" || key == "style") {
+        // An empty list given is an error; a column left out keeps the model's own style.
+        if (batch::split_list(value, ",;").empty()) throw InputError("styles: no style given");
         g.styles = value;
+    }
     else if (key == "output")
         g.output = value;
     else if (key == "format")

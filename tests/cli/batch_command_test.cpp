@@ -409,7 +409,8 @@ TEST_F(BatchCommand, OutputsEqualRenderAndLinesCommands) {
 }
 
 // A dataset of an animation: each row's time (and pose) gives the image `inkshade render` gives
-// with the same --animation, --time, --expression and --morph, and the metadata records it.
+// with the same --animation, --time, --expression and --morph, and the metadata records it. No
+// style is named: the VRM takes its own (`vrm`), as `inkshade render` without --style does.
 TEST_F(BatchCommand, PosePerJobGivesTheRenderCommandsImage) {
     const std::string model = dir_.write("avatar.vrm", avatar(AvatarFormat::Vrm1).glb());
     const std::string manifest = dir_.write("frames.csv", "model,name,time,expression\n" + model + ",t0,0,\n" + model +
@@ -419,9 +420,9 @@ TEST_F(BatchCommand, PosePerJobGivesTheRenderCommandsImage) {
     std::set<std::string> images;
     for (const char* t : {"0", "1", "2"}) {
         SCOPED_TRACE(t);
-        const std::string stem = out() + "/t" + t + "/lambert/az000_el00";
+        const std::string stem = out() + "/t" + t + "/vrm/az000_el00";
         const std::string expression = std::string(t) == "2" ? " --expression happy=1" : "";
-        const auto cli = run_cli("render " + model + " --style lambert --animation wave --morph blink=0.5 --time " + t +
+        const auto cli = run_cli("render " + model + " --animation wave --morph blink=0.5 --time " + t +
                                  expression +
                                  " --size 96x96 --azimuth 0 --elevation 0 -o " + dir_.file("r.png"));
         ASSERT_EQ(cli.status, 0) << cli.err;

@@ -5,6 +5,8 @@
 // lambert; a named style or shading model still replaces the default.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "cli/run_cli.hpp"
 #include "io/avatar_files.hpp"
 
@@ -59,6 +61,30 @@ TEST(VrmDefaultLook, TheStyleIsMtoonWithoutAmbientOrShadows) {
                      "--shading mtoon --set shadows=false --ambient 0,0,0 --background black --light-color 1,1,1 "
                      "--light-intensity 3.14159265",
                      dir, "flags.png"));
+}
+
+// A batch without a style takes each model's own, as `render` does: the VRM its `vrm` look, the
+// plain glTF `lambert`, each in the folder of that style; a style given still wins.
+TEST(VrmDefaultLook, BatchWithoutAStyleTakesEachModelsOwn) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.file("models"));
+    const std::string vrm = dir.write("models/avatar.vrm", avatar(AvatarFormat::Vrm1).glb());
+    const std::string gltf = dir.write("models/plain.glb", avatar(AvatarFormat::Gltf).glb());
+    const std::string flags = " --views 20:10 --size 96x96 --samples 1 --quiet -o '" + dir.file("out") + "'";
+    const CliResult r = run_cli("batch --models '" + dir.file("models") + "'" + flags);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir.file("out/avatar/vrm/az020_el10.png")), render(vrm, "--style vrm", dir, "vrm.png"));
+    EXPECT_EQ(slurp(dir.file("out/plain/lambert/az020_el10.png")), render(gltf, "", dir, "plain.png"));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out/avatar/lambert")));
+    const CliResult named = run_cli("batch --models '" + dir.file("models") + "' --styles toon" + flags);
+    ASSERT_EQ(named.status, 0) << named.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("out/avatar/toon/az020_el10.png")));
+    // An empty list given is still an error, in a manifest as on the command line.
+    const std::string manifest = dir.write("jobs.jsonl", "{\"model\": \"" + vrm + "\", \"styles\": []}\n");
+    const CliResult empty = run_cli("batch '" + manifest + "'" + flags);
+    EXPECT_EQ(empty.status, 2);
+    EXPECT_NE(empty.err.find("jobs.jsonl:1: styles: no style given"), std::string::npos) << empty.err;
+    EXPECT_EQ(run_cli("batch --models '" + dir.file("models") + "' --styles ,"  + flags).status, 2);
 }
 
 }  // namespace

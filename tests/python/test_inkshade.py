@@ -541,7 +541,8 @@ class PoseTest(unittest.TestCase):
         with open(manifest, "w") as f:
             f.write("model,name,time\n" + self.model + ",t1,1\n" + self.model + ",t2,\n")
         out = os.path.join(self.tmp.name, "frames")
-        summary = inkshade.batch(out, manifest=manifest, size=(64, 48), views="35:20", animation="spin", time=2.0)
+        summary = inkshade.batch(out, manifest=manifest, size=(64, 48), views="35:20", styles=["lambert"],
+                                 animation="spin", time=2.0)
         self.assertEqual(summary["done"], 2, summary["failures"])
         for stem, t in (("t1", "1"), ("t2", "2")):  # t2 takes the default time
             np.testing.assert_array_equal(read_png(os.path.join(out, stem, "lambert", "az035_el20.png")),
@@ -593,7 +594,8 @@ class SpringBonesTest(unittest.TestCase):
         with open(manifest, "w") as f:
             f.write("model,name,spring-bones\n" + self.model + ",on,on\n" + self.model + ",off,off\n")
         out = os.path.join(self.tmp.name, "springs")
-        summary = inkshade.batch(out, manifest=manifest, size=(64, 48), views="115:20", animation="sway", time=2.0)
+        summary = inkshade.batch(out, manifest=manifest, size=(64, 48), views="115:20", styles=["lambert"],
+                                 animation="sway", time=2.0)
         self.assertEqual(summary["done"], 2, summary["failures"])
         for stem in ("on", "off"):
             np.testing.assert_array_equal(read_png(os.path.join(out, stem, "lambert", "az115_el20.png")),
