@@ -2,6 +2,9 @@
 // `inkshade render`'s silhouette, --lines-json, --set for line types, one-line errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <cstdlib>
 #include <filesystem>
 #include <set>
@@ -94,6 +97,35 @@ TEST(LinesCommand, DefaultLinesJsonAndSets) {
         EXPECT_EQ(p.at("hidden").get<bool>(), p.at("level").get<int>() > 0);
     }
     EXPECT_TRUE(any_hidden) << "the teapot hides part of its own contour (--hidden)";
+}
+
+// Suggestive contours keep their short pieces by default, as rtsc 1.6 draws every trimmed piece;
+// `min-length = 4` (DeCarlo 2003 §4's filter) drops exactly the pieces under 4 px.
+TEST(LinesCommand, SuggestiveContoursKeepShortPiecesUnlessMinLengthIsSet) {
+    TempDir dir;
+    auto lengths = [&](const std::string& set) {
+        const auto r = run_cli("lines builtin:teapot --size 400x300 --lines suggestive " + set + " -o " +
+                               dir.file("s.svg") + " --lines-json " + dir.file("s.json"));
+        EXPECT_EQ(r.status, 0) << r.err;
+        const nlohmann::json layer = nlohmann::json::parse(slurp(dir.file("s.json"))).at("layers").at(0);
+        std::vector<double> out;
+        for (const auto& path : layer.at("paths")) {
+            double length = 0.0;
+            const auto& points = path.at("points");
+            for (size_t i = 1; i < points.size(); ++i)
+                length += std::hypot(points[i][0].get<double>() - points[i - 1][0].get<double>(),
+                                     points[i][1].get<double>() - points[i - 1][1].get<double>());
+            out.push_back(length);
+        }
+        return out;
+    };
+    const std::vector<double> all = lengths(""), filtered = lengths("--set suggestive.min-length=4");
+    const auto shorter = [](const std::vector<double>& v) {
+        return std::count_if(v.begin(), v.end(), [](double l) { return l < 4.0; });
+    };
+    EXPECT_GT(shorter(all), 0) << "the teapot has suggestive pieces under 4 px";
+    EXPECT_EQ(shorter(filtered), 0);
+    EXPECT_EQ(filtered.size(), all.size() - size_t(shorter(all)));
 }
 
 // Levels by --occlusion-levels: 0-1 adds the contour behind one surface (dashed layer

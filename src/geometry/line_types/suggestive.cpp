@@ -28,7 +28,9 @@ const ObjectLineRegistration registration{
                       "fade-in above the trim threshold, in the same units (rtsc's draw_faded constant 0.03); "
                       "0 = no fading"),
           feature_size_param("threshold and fade")},
-         4.0f)},
+         // No length filter by default: rtsc 1.6 draws every trimmed piece (DeCarlo 2003 §4's
+         // 4 px filter is `min-length = 4`).
+         0.0f)},
     extract,
     {.curvature = true}};
 

@@ -29,7 +29,7 @@ const ObjectLineRegistration registration{
                       "fade-in above the trim threshold, in the same units (rtsc's draw_faded constant 0.03); "
                       "0 = no fading"),
           feature_size_param("threshold and fade")},
-         4.0f)},
+         0.0f)},  // as `suggestive`: rtsc draws every trimmed piece
     extract,
     {.curvature = true}};
 
