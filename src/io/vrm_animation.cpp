@@ -65,24 +65,30 @@ const tinygltf::Value& vrma_extension(const tinygltf::Model& model, const std::s
     return ext->second;
 }
 
-// Each human bone's animated rotation in the normalized humanoid's terms: B x q x A^-1, A the
-// bone's rest world rotation, B that of its nearest human-bone ancestor the .vrma has (or of
-// the hips' parent) (three-vrm-animation VRMAnimationLoaderPlugin._parseAnimation).
-void normalized_rotations(const std::map<std::string, int>& bones, const GltfRestPose& rest,
-                          const std::vector<AnimatedNode>& animated, VrmAnimationSample& out) {
+// A human bone of the .vrma with what turns its animated rotation q into the normalized
+// humanoid's terms, B x q x A^-1: A the bone's rest world rotation, B that of its nearest
+// human-bone ancestor the .vrma has (or of the hips' parent) (three-vrm-animation
+// VRMAnimationLoaderPlugin._parseAnimation). Computed once: the clip is sampled at every step.
+struct NormalizingBone {
+    std::string name;
+    size_t node = 0;
+    glm::dquat before{1.0, 0.0, 0.0, 0.0}, after{1.0, 0.0, 0.0, 0.0};  // B and A^-1
+};
+
+std::vector<NormalizingBone> normalizing_bones(const std::map<std::string, int>& bones, const GltfRestPose& rest) {
     std::map<std::string, std::string> parent_of;
     for (const auto& [bone, parent] : vrm_human_bones()) parent_of[bone] = parent;
     const auto hips = bones.find("hips");
     const glm::dquat hips_parent =
         hips == bones.end() ? glm::dquat(1.0, 0.0, 0.0, 0.0) : rest.parent_world_rotation(size_t(hips->second));
+    std::vector<NormalizingBone> out;
     for (const auto& [bone, node] : bones) {
-        if (!animated[size_t(node)].rotation) continue;
         std::string parent = parent_of.count(bone) ? parent_of[bone] : "";
         while (!parent.empty() && !bones.count(parent)) parent = parent_of[parent];
         const glm::dquat b = parent.empty() ? hips_parent : rotation_of(rest.world[size_t(bones.at(parent))]);
-        const glm::dquat a = rotation_of(rest.world[size_t(node)]);
-        out.rotations[bone] = b * *animated[size_t(node)].rotation * glm::inverse(a);
+        out.push_back({bone, size_t(node), b, glm::inverse(rotation_of(rest.world[size_t(node)]))});
     }
+    return out;
 }
 
 // createVRMAnimationHumanoidTracks and _parseAnimation build new tracks for the humanoid
@@ -126,6 +132,7 @@ struct VrmAnimationClip::Data {
     int look_at = -1;
     std::vector<int> parent;
     GltfRestPose rest;
+    std::vector<NormalizingBone> normalizing;
 };
 
 VrmAnimationClip::VrmAnimationClip(const std::string& path) {
@@ -145,6 +152,7 @@ VrmAnimationClip::VrmAnimationClip(const std::string& path) {
         for (int c : model.nodes[p].children)
             if (c >= 0 && size_t(c) < d->parent.size() && d->parent[size_t(c)] < 0) d->parent[size_t(c)] = int(p);
     d->rest = gltf_rest_pose(d->parent, [&](size_t i) { return gltf_node_transform(model.nodes[i], i, path); });
+    d->normalizing = normalizing_bones(d->bones, d->rest);
     step_as_linear(model, d->bones, d->expressions);
     data_ = std::move(d);
 }
@@ -159,7 +167,8 @@ VrmAnimationSample VrmAnimationClip::sample(double time) const {
     const std::vector<AnimatedNode> animated = sample_gltf_animation(d.model, 0, time, reader);
 
     VrmAnimationSample out;
-    normalized_rotations(d.bones, d.rest, animated, out);
+    for (const NormalizingBone& b : d.normalizing)
+        if (animated[b.node].rotation) out.rotations[b.name] = b.before * *animated[b.node].rotation * b.after;
     if (const auto hips = d.bones.find("hips"); hips != d.bones.end()) {
         const size_t node = size_t(hips->second);
         out.rest_hips_height = d.rest.world[node][3].y;

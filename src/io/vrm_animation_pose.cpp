@@ -18,20 +18,28 @@ namespace {
 
 // VRMHumanoidRig.update: every raw human bone from its normalized twin (identity where the clip
 // has no rotation), the hips placed at the normalized hips' world position.
-void pose_humanoid(const VrmHumanoid& humanoid, const NormalizedPose& normalized, const GltfRestPose& rest,
-                   PoseNodes& nodes) {
+void pose_humanoid(const std::vector<VrmAnimationPose::RawBone>& raw, const NormalizedPose& normalized,
+                   const GltfRestPose& rest, PoseNodes& nodes) {
+    for (const VrmAnimationPose::RawBone& b : raw) {
+        const auto it = normalized.rotations.find(b.name);
+        const glm::dquat n = it == normalized.rotations.end() ? glm::dquat(1.0, 0.0, 0.0, 0.0) : it->second;
+        nodes.set_rotation(b.node, raw_bone_rotation(b.parent_world, rest.rotation[b.node], n));
+        if (b.name != "hips") continue;
+        const glm::dvec3 world = normalized.hips_position.value_or(glm::dvec3(rest.world[b.node][3]));
+        const int p = rest.parent[b.node];
+        const glm::dmat4 parent_world = p < 0 ? glm::dmat4(1.0) : nodes.world(size_t(p));
+        nodes.set_translation(b.node, glm::dvec3(glm::inverse(parent_world) * glm::dvec4(world, 1.0)));
+    }
+}
+
+// The avatar's human bones in VRMHumanBoneList order, each with its parent's rest world rotation.
+std::vector<VrmAnimationPose::RawBone> raw_bones(const VrmHumanoid& humanoid, const GltfRestPose& rest) {
+    std::vector<VrmAnimationPose::RawBone> out;
     for (const auto& [bone, parent] : vrm_human_bones()) {
         const int node = humanoid.node(bone);
-        if (node < 0) continue;
-        const auto it = normalized.rotations.find(bone);
-        const glm::dquat n = it == normalized.rotations.end() ? glm::dquat(1.0, 0.0, 0.0, 0.0) : it->second;
-        nodes.set_rotation(size_t(node), raw_bone_rotation(humanoid, rest, bone, n));
-        if (bone != "hips") continue;
-        const glm::dvec3 world = normalized.hips_position.value_or(glm::dvec3(rest.world[size_t(node)][3]));
-        const int p = rest.parent[size_t(node)];
-        const glm::dmat4 parent_world = p < 0 ? glm::dmat4(1.0) : nodes.world(size_t(p));
-        nodes.set_translation(size_t(node), glm::dvec3(glm::inverse(parent_world) * glm::dvec4(world, 1.0)));
+        if (node >= 0) out.push_back({bone, size_t(node), rest.parent_world_rotation(size_t(node))});
     }
+    return out;
 }
 
 bool has_expression(const std::vector<VrmExpression>& expressions, const std::string& name) {
@@ -59,13 +67,14 @@ VrmAnimationPose::VrmAnimationPose(const tinygltf::Model& model, const std::stri
       humanoid_(humanoid_of(model, path, animation, warnings)),
       look_at_(read_vrm_look_at(model)),
       clip_(animation),
+      raw_(raw_bones(humanoid_, rest)),
       hips_height_(rest.world[size_t(humanoid_.node("hips"))][3].y) {}
 
 std::vector<NamedWeight> VrmAnimationPose::apply(double time, const std::vector<NamedWeight>& user, PoseNodes& nodes,
                                                  std::vector<std::string>* warnings) const {
     const VrmAnimationSample sample = clip_.sample(time);
     std::vector<std::string> skipped;
-    pose_humanoid(humanoid_, retarget_vrm_animation(sample, humanoid_, hips_height_, skipped), rest_, nodes);
+    pose_humanoid(raw_, retarget_vrm_animation(sample, humanoid_, hips_height_, skipped), rest_, nodes);
 
     std::vector<NamedWeight> weights;
     for (const NamedWeight& w : sample.expressions) {

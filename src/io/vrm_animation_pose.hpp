@@ -40,6 +40,13 @@ public:
     std::vector<NamedWeight> apply(double time, const std::vector<NamedWeight>& user, PoseNodes& nodes,
                                    std::vector<std::string>* warnings) const;
 
+    // A human bone the avatar has, with its parent's rest world rotation (VRMHumanoidRig's P).
+    struct RawBone {
+        std::string name;
+        size_t node = 0;
+        glm::dquat parent_world{1.0, 0.0, 0.0, 0.0};
+    };
+
 private:
     const std::string& path_;
     std::string animation_;
@@ -48,6 +55,7 @@ private:
     VrmHumanoid humanoid_;
     std::optional<VrmLookAt> look_at_;
     VrmAnimationClip clip_;
+    std::vector<RawBone> raw_;  // in VRMHumanBoneList order
     double hips_height_ = 0.0;
 };
 
