@@ -82,17 +82,27 @@ GltfPose::GltfPose(const tinygltf::Model& model, const std::string& path, const 
                     weights_[i][t] = (*animated_[i].weights)[t];
     }
     const std::vector<VrmExpression> expressions = read_vrm_expressions(model, path, warnings);
+    std::optional<VrmAnimationPose> vrma_pose;
+    if (vrma) vrma_pose.emplace(model, path, pose.animation, rest(), expressions, warnings);
     const std::vector<NamedWeight> expression_weights =
-        vrma ? apply_vrm_animation(model, path, pose, rest(), expressions, *this, warnings) : pose.expressions;
+        vrma_pose ? vrma_pose->apply(double(pose.time), pose.expressions, *this, &warnings) : pose.expressions;
     if (!expressions.empty() || !expression_weights.empty())
         apply_vrm_expressions(expressions, expression_weights, weights_, path);
     apply_named_weights(model, pose.morphs, weights_, path);
     // three-vrm's VRM.update runs the node constraints after the humanoid, look-at and expressions.
     const std::vector<VrmNodeConstraint> constraints = read_vrm_node_constraints(model, path, warnings);
-    if (!constraints.empty())
-        apply_vrm_node_constraints(constraints, vrm_node_constraint_order(constraints, parent_, path), rest(), *this);
-    // Spring bones after the node constraints, as VRM.update runs them.
-    spring_ = pose_spring_bones(model, path, pose, reader, file_transform, parent_, warnings);
+    const std::vector<size_t> order =
+        constraints.empty() ? std::vector<size_t>{} : vrm_node_constraint_order(constraints, parent_, path);
+    if (!constraints.empty()) apply_vrm_node_constraints(constraints, order, rest(), *this);
+    // Spring bones after the node constraints, as VRM.update runs them; at each of their steps the
+    // .vrma and the constraints pose the frame as they posed this one.
+    VrmStepsAt vrm_steps;
+    if (vrma_pose || !constraints.empty())
+        vrm_steps = [&](double time, PoseNodes& nodes) {
+            if (vrma_pose) vrma_pose->apply(time, {}, nodes, nullptr);
+            if (!constraints.empty()) apply_vrm_node_constraints(constraints, order, rest(), nodes);
+        };
+    spring_ = pose_spring_bones(model, path, pose, reader, file_transform, parent_, vrm_steps, warnings);
     world_.assign(world_.size(), std::nullopt);  // the constraints' worlds predate the springs
 }
 

@@ -12,9 +12,7 @@ namespace inkshade::io {
 
 namespace {
 
-glm::dmat4 compose(const NodeTrs& n) {
-    return glm::translate(glm::dmat4(1.0), n.t) * glm::mat4_cast(n.r) * glm::scale(glm::dmat4(1.0), n.s);
-}
+glm::dmat4 compose(const NodeTrs& n) { return n.matrix(); }
 
 glm::dvec3 position(const glm::dmat4& m) { return glm::dvec3(m[3]); }
 glm::dvec3 point(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
@@ -89,6 +87,11 @@ public:
             refresh(node);
             refresh_below(node);
         }
+    }
+
+    // The joints' rotations so far into `frame` (what three.js holds before the next update).
+    void current_rotations(std::vector<NodeTrs>& frame) const {
+        for (const SpringJoint& j : bones_.joints) frame[size_t(j.node)].r = local_[size_t(j.node)].r;
     }
 
     std::vector<std::optional<glm::dquat>> rotations() const {
@@ -269,6 +272,7 @@ std::vector<std::optional<glm::dquat>> simulate_spring_bones(const SpringBones& 
     double before = 0.0;
     for (double t : spring_step_times(time)) {
         frame = rest;
+        sim.current_rotations(frame);
         pose_at(t, frame);
         sim.step(t - before, frame);
         before = t;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "io/vrm_spring_bones.hpp"
@@ -24,6 +25,10 @@ struct NodeTrs {
     glm::dquat r{1.0, 0.0, 0.0, 0.0};
     glm::dvec3 s{1.0};
     bool rotation_animated = false;  // the animation sets r (it then replaces a joint's own)
+
+    glm::dmat4 matrix() const {
+        return glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(r) * glm::scale(glm::dmat4(1.0), s);
+    }
 };
 
 // The step: 60 Hz.
@@ -35,7 +40,9 @@ constexpr double kMaxSpringWork = 2e8;
 // shorter than a microsecond is merged into the one before).
 std::vector<double> spring_step_times(double time);
 
-// Every node's local transform at a time: the file's, with the animation's values at that time.
+// Every node's local transform at a time: `nodes` holds the file's, with each joint's rotation
+// from the step before; the function sets the animation's values at that time (and what the VRM
+// steps before the springs set).
 using NodePoseAt = std::function<void(double time, std::vector<NodeTrs>& nodes)>;
 
 // The rotation of each joint's node at `time` (indexed by node; empty where no joint turns it).

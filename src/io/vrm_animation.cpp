@@ -65,24 +65,30 @@ const tinygltf::Value& vrma_extension(const tinygltf::Model& model, const std::s
     return ext->second;
 }
 
-// Each human bone's animated rotation in the normalized humanoid's terms: B x q x A^-1, A the
-// bone's rest world rotation, B that of its nearest human-bone ancestor the .vrma has (or of
-// the hips' parent) (three-vrm-animation VRMAnimationLoaderPlugin._parseAnimation).
-void normalized_rotations(const std::map<std::string, int>& bones, const GltfRestPose& rest,
-                          const std::vector<AnimatedNode>& animated, VrmAnimationSample& out) {
+// A human bone of the .vrma with what turns its animated rotation q into the normalized
+// humanoid's terms, B x q x A^-1: A the bone's rest world rotation, B that of its nearest
+// human-bone ancestor the .vrma has (or of the hips' parent) (three-vrm-animation
+// VRMAnimationLoaderPlugin._parseAnimation). Computed once: the clip is sampled at every step.
+struct NormalizingBone {
+    std::string name;
+    size_t node = 0;
+    glm::dquat before{1.0, 0.0, 0.0, 0.0}, after{1.0, 0.0, 0.0, 0.0};  // B and A^-1
+};
+
+std::vector<NormalizingBone> normalizing_bones(const std::map<std::string, int>& bones, const GltfRestPose& rest) {
     std::map<std::string, std::string> parent_of;
     for (const auto& [bone, parent] : vrm_human_bones()) parent_of[bone] = parent;
     const auto hips = bones.find("hips");
     const glm::dquat hips_parent =
         hips == bones.end() ? glm::dquat(1.0, 0.0, 0.0, 0.0) : rest.parent_world_rotation(size_t(hips->second));
+    std::vector<NormalizingBone> out;
     for (const auto& [bone, node] : bones) {
-        if (!animated[size_t(node)].rotation) continue;
         std::string parent = parent_of.count(bone) ? parent_of[bone] : "";
         while (!parent.empty() && !bones.count(parent)) parent = parent_of[parent];
         const glm::dquat b = parent.empty() ? hips_parent : rotation_of(rest.world[size_t(bones.at(parent))]);
-        const glm::dquat a = rotation_of(rest.world[size_t(node)]);
-        out.rotations[bone] = b * *animated[size_t(node)].rotation * glm::inverse(a);
+        out.push_back({bone, size_t(node), b, glm::inverse(rotation_of(rest.world[size_t(node)]))});
     }
+    return out;
 }
 
 // createVRMAnimationHumanoidTracks and _parseAnimation build new tracks for the humanoid
@@ -119,45 +125,65 @@ bool is_vrma_path(const std::string& animation) {
     return ext == ".vrma";
 }
 
-VrmAnimationSample read_vrm_animation(const std::string& path, double time) {
+struct VrmAnimationClip::Data {
+    std::string path;
     tinygltf::Model model;
+    std::map<std::string, int> bones, expressions;  // human bone / expression -> node
+    int look_at = -1;
+    std::vector<int> parent;
+    GltfRestPose rest;
+    std::vector<NormalizingBone> normalizing;
+};
+
+VrmAnimationClip::VrmAnimationClip(const std::string& path) {
+    auto d = std::make_unique<Data>();
+    d->path = path;
+    tinygltf::Model& model = d->model;
     load_gltf_model(path, model);
     const tinygltf::Value& ext = vrma_extension(model, path);
-    const std::map<std::string, int> bones =
-        node_map(member(member(ext, "humanoid"), "humanBones"), model, "humanoid bone", path);
-    std::map<std::string, int> expressions;
+    d->bones = node_map(member(member(ext, "humanoid"), "humanBones"), model, "humanoid bone", path);
     for (const char* group : {"preset", "custom"})
         for (const auto& [name, node] : node_map(member(member(ext, "expressions"), group), model, "expression", path))
-            expressions.emplace(name, node);
-    const int look_at = node_of(member(ext, "lookAt"), model, "lookAt", path);
+            d->expressions.emplace(name, node);
+    d->look_at = node_of(member(ext, "lookAt"), model, "lookAt", path);
 
-    std::vector<int> parent(model.nodes.size(), -1);
+    d->parent.assign(model.nodes.size(), -1);
     for (size_t p = 0; p < model.nodes.size(); ++p)
         for (int c : model.nodes[p].children)
-            if (c >= 0 && size_t(c) < parent.size() && parent[size_t(c)] < 0) parent[size_t(c)] = int(p);
-    const GltfRestPose rest =
-        gltf_rest_pose(parent, [&](size_t i) { return gltf_node_transform(model.nodes[i], i, path); });
-    step_as_linear(model, bones, expressions);
-    const GltfAccessorReader reader(model, path);
-    const std::vector<AnimatedNode> animated = sample_gltf_animation(model, 0, time, reader);
+            if (c >= 0 && size_t(c) < d->parent.size() && d->parent[size_t(c)] < 0) d->parent[size_t(c)] = int(p);
+    d->rest = gltf_rest_pose(d->parent, [&](size_t i) { return gltf_node_transform(model.nodes[i], i, path); });
+    d->normalizing = normalizing_bones(d->bones, d->rest);
+    step_as_linear(model, d->bones, d->expressions);
+    data_ = std::move(d);
+}
+
+VrmAnimationClip::~VrmAnimationClip() = default;
+VrmAnimationClip::VrmAnimationClip(VrmAnimationClip&&) noexcept = default;
+VrmAnimationClip& VrmAnimationClip::operator=(VrmAnimationClip&&) noexcept = default;
+
+VrmAnimationSample VrmAnimationClip::sample(double time) const {
+    const Data& d = *data_;
+    const GltfAccessorReader reader(d.model, d.path);
+    const std::vector<AnimatedNode> animated = sample_gltf_animation(d.model, 0, time, reader);
 
     VrmAnimationSample out;
-    normalized_rotations(bones, rest, animated, out);
-    if (const auto hips = bones.find("hips"); hips != bones.end()) {
+    for (const NormalizingBone& b : d.normalizing)
+        if (animated[b.node].rotation) out.rotations[b.name] = b.before * *animated[b.node].rotation * b.after;
+    if (const auto hips = d.bones.find("hips"); hips != d.bones.end()) {
         const size_t node = size_t(hips->second);
-        out.rest_hips_height = rest.world[node][3].y;
+        out.rest_hips_height = d.rest.world[node][3].y;
         if (animated[node].translation) {
             if (!(out.rest_hips_height > 0.0))
-                throw InputError(path, "the rest pose's hips are at height " + std::to_string(out.rest_hips_height) +
-                                           " (a VRM animation's rest pose stands above y = 0)");
-            const glm::dmat4 m = parent[node] < 0 ? glm::dmat4(1.0) : rest.world[size_t(parent[node])];
+                throw InputError(d.path, "the rest pose's hips are at height " + std::to_string(out.rest_hips_height) +
+                                             " (a VRM animation's rest pose stands above y = 0)");
+            const glm::dmat4 m = d.parent[node] < 0 ? glm::dmat4(1.0) : d.rest.world[size_t(d.parent[node])];
             out.hips = glm::dvec3(m * glm::dvec4(*animated[node].translation, 1.0));
         }
     }
-    for (const auto& [name, node] : expressions)
+    for (const auto& [name, node] : d.expressions)
         if (animated[size_t(node)].translation)
             out.expressions.push_back({name, float(animated[size_t(node)].translation->x)});
-    if (look_at >= 0 && animated[size_t(look_at)].rotation) out.look_at = *animated[size_t(look_at)].rotation;
+    if (d.look_at >= 0 && animated[size_t(d.look_at)].rotation) out.look_at = *animated[size_t(d.look_at)].rotation;
     return out;
 }
 

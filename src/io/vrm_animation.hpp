@@ -6,6 +6,7 @@
 // avatar's hips height over the .vrma's and flips x and z for VRM 0.x avatars.
 #pragma once
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,9 +32,24 @@ struct VrmAnimationSample {
     std::optional<glm::dquat> look_at;            // the lookAt node's rotation
 };
 
-// Reads `path` and samples its first animation at `time` (clamped to its keyframes). Throws
-// InputError(path, ...) for a file that cannot be read, is not a VRM animation, or has bad data.
-VrmAnimationSample read_vrm_animation(const std::string& path, double time);
+// A .vrma read once and sampled at any time (the spring bones sample it at every step).
+class VrmAnimationClip {
+public:
+    // Reads `path`. Throws InputError(path, ...) for a file that cannot be read or is not a VRM
+    // animation.
+    explicit VrmAnimationClip(const std::string& path);
+    ~VrmAnimationClip();
+    VrmAnimationClip(VrmAnimationClip&&) noexcept;
+    VrmAnimationClip& operator=(VrmAnimationClip&&) noexcept;
+
+    // Its first animation at `time` (clamped to its keyframes). Throws InputError(path, ...) for
+    // bad data.
+    VrmAnimationSample sample(double time) const;
+
+private:
+    struct Data;
+    std::unique_ptr<const Data> data_;
+};
 
 // The sample on an avatar's humanoid (createVRMAnimationHumanoidTracks): bones the avatar does
 // not have are left out (listed in `skipped`), the hips position scaled by the avatar's rest hips

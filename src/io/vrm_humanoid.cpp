@@ -140,8 +140,7 @@ std::optional<VrmHumanoid> read_vrm_humanoid(const tinygltf::Model& model, const
 glm::dquat raw_bone_rotation(const VrmHumanoid& humanoid, const GltfRestPose& rest, const std::string& bone,
                              const glm::dquat& normalized) {
     const size_t node = size_t(humanoid.node(bone));
-    const glm::dquat p = rest.parent_world_rotation(node);
-    return glm::inverse(p) * normalized * p * rest.rotation[node];
+    return raw_bone_rotation(rest.parent_world_rotation(node), rest.rotation[node], normalized);
 }
 
 }  // namespace inkshade::io

@@ -55,5 +55,10 @@ struct NormalizedPose {
 // parent, R0 its rest local rotation.
 glm::dquat raw_bone_rotation(const VrmHumanoid& humanoid, const GltfRestPose& rest, const std::string& bone,
                              const glm::dquat& normalized);
+// The same with P (`parent_world`) and R0 (`rest_local`) given.
+inline glm::dquat raw_bone_rotation(const glm::dquat& parent_world, const glm::dquat& rest_local,
+                                    const glm::dquat& normalized) {
+    return glm::inverse(parent_world) * normalized * parent_world * rest_local;
+}
 
 }  // namespace inkshade::io
