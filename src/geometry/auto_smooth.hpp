@@ -8,11 +8,14 @@
 namespace inkshade::geometry {
 
 // Fills mesh.shading_normals and mesh.shading_normal_ids: around each vertex, the faces
-// joined across smooth edges (manifold edges whose face normals differ by at most
-// `angle_degrees`) form one fan, and each fan gets one normal, its faces weighted by their angle
-// at the vertex (Thürmer & Wüthrich 1998) or by their area (three.js's computeVertexNormals). Edges of three or more faces are hard; degenerate faces join no fan and
-// take the vertex's smooth normal. When no edge is hard, or angle_degrees >= 180, the two
-// arrays are left empty (mesh.normals shades alone). mesh.normals is not changed.
+// joined across smooth edges form one fan, and each fan gets one normal, its faces weighted by
+// their angle at the vertex (Thürmer & Wüthrich 1998) or by their area (three.js's
+// computeVertexNormals). Hard edges (hard_edge_flags, hard_edges.hpp): edges of three or more
+// faces, and edges whose faces meet at more than `angle_degrees` and whose sides, averaged
+// over the faces around them, still do (so a scan's noise splits nothing). A vertex of one fan
+// takes its smooth normal mesh.normals[v]; degenerate faces join the fan of a vertex that has
+// one, else take the smooth normal. When no vertex has two fans, or angle_degrees >= 180, the
+// two arrays are left empty (mesh.normals shades alone). mesh.normals is not changed.
 void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting = NormalWeighting::Angle);
 
 }  // namespace inkshade::geometry

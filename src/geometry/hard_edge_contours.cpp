@@ -13,10 +13,7 @@
 namespace inkshade::geometry {
 namespace {
 
-// One end of an edge as a face sees it: its vertex and that face's shading normal there.
-struct Corner {
-    uint32_t vertex, normal;
-};
+using Corner = ShadingCorner;
 
 // Where n·v vanishes on the edge (a, b) of one face: computed from the ends ordered by shading
 // normal id, so the face on the other side of a smooth edge, and the hard-edge piece that ends
@@ -40,16 +37,12 @@ Corner corner(const Mesh& mesh, size_t f, int k) {
 }
 
 // n·v per shading normal, at the vertex it belongs to.
-std::vector<float> shading_view_dot_normal(const Mesh& mesh, const Camera& camera) {
-    std::vector<uint32_t> owner(mesh.shading_normals.size(), 0);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f)
-        if (face_is_valid(mesh, f))
-            for (int k = 0; k < 3; ++k) owner[mesh.shading_normal_ids[f][k]] = mesh.triangles[f][k];
+std::vector<float> shading_view_dot_normal(const Mesh& mesh, const HardEdgeTable& table, const Camera& camera) {
     const ViewVector view(camera);
-    std::vector<float> g(owner.size());
+    std::vector<float> g(table.owner.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, g.size(), kFaceGrain), [&](const auto& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
-            const double d = glm::dot(glm::dvec3(mesh.shading_normals[i]), view.at(mesh.positions[owner[i]]));
+            const double d = glm::dot(glm::dvec3(mesh.shading_normals[i]), view.at(mesh.positions[table.owner[i]]));
             g[i] = std::isfinite(d) ? float(d) : 0.0f;
         }
     });
@@ -79,13 +72,7 @@ std::vector<LineSegment> face_crossings(const Mesh& mesh, const std::vector<floa
     });
 }
 
-// An edge as one face walks it: from `from` to `to` in the face's counter-clockwise order.
-struct HalfEdge {
-    uint64_t key;  // edge_key of the two vertices
-    uint32_t face;
-    Corner from, to;
-    bool operator<(const HalfEdge& o) const { return std::tie(key, face) < std::tie(o.key, o.face); }
-};
+using HalfEdge = HardEdgeSide;
 
 // The pieces of one hard edge where faces A and B disagree about facing. The edge runs from
 // vertex i to vertex j (i < j); each face's n·v is linear along it.
@@ -133,37 +120,70 @@ void hard_edge_pieces(const Mesh& mesh, const std::vector<float>& g, const HalfE
     }
 }
 
-std::vector<LineSegment> hard_edge_silhouettes(const Mesh& mesh, const std::vector<float>& g) {
-    std::vector<HalfEdge> half;
-    half.reserve(3 * mesh.triangles.size());
+// Vertices with more than one shading normal: a hard edge has one at an end at least.
+std::vector<uint8_t> split_vertices(const Mesh& mesh, HardEdgeTable& table) {
+    table.owner.assign(mesh.shading_normals.size(), 0);
+    std::vector<uint32_t> first(mesh.positions.size(), ~0u);
+    std::vector<uint8_t> split(mesh.positions.size(), 0);
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {
         if (!face_is_valid(mesh, f)) continue;
         for (int k = 0; k < 3; ++k) {
-            const Corner from = corner(mesh, f, k), to = corner(mesh, f, k + 1);
-            if (from.vertex != to.vertex) half.push_back({edge_key(from.vertex, to.vertex), uint32_t(f), from, to});
+            const Corner c = corner(mesh, f, k);
+            table.owner[c.normal] = c.vertex;
+            if (first[c.vertex] == ~0u) first[c.vertex] = c.normal;
+            split[c.vertex] |= first[c.vertex] != c.normal;
         }
     }
-    tbb::parallel_sort(half.begin(), half.end());
-    std::vector<LineSegment> out;
-    for (size_t i = 0; i < half.size();) {
-        size_t j = i;
-        while (j < half.size() && half[j].key == half[i].key) ++j;
-        // Borders (one face) are their own line type; non-manifold edges (three or more) have no
-        // one pair of sides to compare.
-        if (j - i == 2 && half[i].face != half[i + 1].face) hard_edge_pieces(mesh, g, half[i], half[i + 1], out);
-        i = j;
-    }
-    return out;
+    return split;
 }
 
 }  // namespace
 
-std::vector<LineSegment> extract_hard_edge_contours(const Mesh& mesh, const Camera& camera) {
-    const std::vector<float> g = shading_view_dot_normal(mesh, camera);
+HardEdgeTable hard_edge_table(const Mesh& mesh) {
+    HardEdgeTable table;
+    const std::vector<uint8_t> split = split_vertices(mesh, table);
+    std::vector<HalfEdge> half;
+    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+        if (!face_is_valid(mesh, f)) continue;
+        for (int k = 0; k < 3; ++k) {
+            const Corner from = corner(mesh, f, k), to = corner(mesh, f, k + 1);
+            if (from.vertex != to.vertex && (split[from.vertex] || split[to.vertex]))
+                half.push_back({edge_key(from.vertex, to.vertex), uint32_t(f), from, to});
+        }
+    }
+    tbb::parallel_sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return std::tie(x.key, x.face) < std::tie(y.key, y.face);
+    });
+    auto normal_at = [](const HalfEdge& h, uint32_t v) { return h.from.vertex == v ? h.from.normal : h.to.normal; };
+    for (size_t i = 0; i < half.size();) {
+        size_t j = i;
+        while (j < half.size() && half[j].key == half[i].key) ++j;
+        // Borders (one face) are their own line type; non-manifold edges (three or more) have no
+        // one pair of sides to compare; an edge whose faces share both ends' normals is smooth.
+        if (j - i == 2 && half[i].face != half[i + 1].face) {
+            const HalfEdge &a = half[i], &b = half[i + 1];
+            const uint32_t u = a.from.vertex, w = a.to.vertex;
+            if (normal_at(a, u) != normal_at(b, u) || normal_at(a, w) != normal_at(b, w)) table.edges.push_back({a, b});
+        }
+        i = j;
+    }
+    return table;
+}
+
+std::vector<LineSegment> extract_hard_edge_contours(const Mesh& mesh, const HardEdgeTable& table,
+                                                    const Camera& camera) {
+    const std::vector<float> g = shading_view_dot_normal(mesh, table, camera);
     std::vector<LineSegment> out = face_crossings(mesh, g);
-    const std::vector<LineSegment> edges = hard_edge_silhouettes(mesh, g);
+    const std::vector<LineSegment> edges =
+        collect_per_face<LineSegment>(table.edges.size(), [&](size_t e, std::vector<LineSegment>& found) {
+            hard_edge_pieces(mesh, g, table.edges[e][0], table.edges[e][1], found);
+        });
     out.insert(out.end(), edges.begin(), edges.end());
     return out;
+}
+
+std::vector<LineSegment> extract_hard_edge_contours(const Mesh& mesh, const Camera& camera) {
+    return extract_hard_edge_contours(mesh, hard_edge_table(mesh), camera);
 }
 
 }  // namespace inkshade::geometry

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/weld.hpp"
 #include "inkshade/mesh.hpp"
 
 namespace inkshade::test {
@@ -97,6 +98,47 @@ inline Mesh cube(float h = 1.0f) {
         m.triangles.emplace_back(q[0], q[1], q[2]);
         m.triangles.emplace_back(q[0], q[2], q[3]);
     }
+    return m;
+}
+
+// The cube [-1, 1]³ with each side an n x n grid of quads, welded: a CAD part whose flat sides
+// meet at 90° along 12 n mesh edges.
+inline Mesh meshed_cube(int n) {
+    Mesh m;
+    const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int a = 0; a < 3; ++a)
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 u = axes[(a + 1) % 3], v = axes[(a + 2) % 3];  // u × v = axes[a]
+            if (sign < 0.0f) std::swap(u, v);                        // u × v = the outward normal
+            const uint32_t base = uint32_t(m.positions.size());
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i)
+                    m.positions.push_back(sign * axes[a] + (2.0f * float(i) / float(n) - 1.0f) * u +
+                                          (2.0f * float(j) / float(n) - 1.0f) * v);
+            const size_t first = m.triangles.size();
+            add_grid_triangles(m, n, n);
+            for (size_t f = first; f < m.triangles.size(); ++f) m.triangles[f] += glm::uvec3(base);
+        }
+    geometry::weld(m);
+    return m;
+}
+
+// A scan stand-in: a sphere of 6 n² quads (meshed_cube(n) pushed onto the unit sphere, so its
+// faces are nearly even) with every vertex moved radially by up to ± amplitude × the mean edge
+// length (a deterministic hash, like scanner noise), no normals. At amplitude 0.3 the noise
+// alone tilts about a tenth of neighbouring faces more than 30° apart.
+inline Mesh noisy_sphere(int n, float amplitude) {
+    Mesh m = meshed_cube(n);
+    const float edge = 0.5f * std::numbers::pi_v<float> / float(n);
+    for (size_t v = 0; v < m.positions.size(); ++v) {
+        uint32_t h = uint32_t(v) * 2654435761u;
+        h ^= h >> 15;
+        h *= 2246822519u;
+        h ^= h >> 13;
+        const float noise = float(h & 0xffffu) / 65535.0f * 2.0f - 1.0f;  // [-1, 1]
+        m.positions[v] = glm::normalize(m.positions[v]) * (1.0f + amplitude * edge * noise);
+    }
+    m.normals.clear();
     return m;
 }
 

@@ -6,6 +6,8 @@
 #include <set>
 
 #include "analytic_meshes.hpp"
+#include "geometry/adjacency.hpp"
+#include "geometry/hard_edge_contours.hpp"
 #include "geometry/normals.hpp"
 
 namespace inkshade::geometry {
@@ -102,6 +104,40 @@ TEST(AutoSmooth, NonManifoldEdgesAreHardAndDegenerateFacesTakeTheSmoothNormal) {
             const uint32_t v = m.triangles[f][k];
             EXPECT_EQ(shading_normal(m, f, k), m.normals[v]) << f;
         }
+}
+
+// A CAD part keeps every crease: the denoising test averages each side of an edge on its own
+// side only, and flat sides stay flat.
+TEST(AutoSmooth, MeshedCubeKeepsAllTwelveEdgesHard) {
+    Mesh cube = test::meshed_cube(8);
+    ensure_vertex_normals(cube);
+    auto_smooth(cube, 30.0f);
+    ASSERT_TRUE(cube.has_hard_edges());
+    EXPECT_EQ(hard_edge_table(cube).edges.size(), 12u * 8u);
+    const std::vector<glm::vec3> fn = face_normals(cube);
+    for (size_t f = 0; f < cube.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) EXPECT_LT(glm::length(shading_normal(cube, f, k) - fn[f]), 1e-6f) << f << " " << k;
+}
+
+// A dense scan whose noise alone tilts neighbouring faces past 30° at one edge in twelve:
+// averaged over the faces around them, nearly all of those edges are smooth (the renderer then
+// takes the smooth path, rtsc's vertex normals, at no extra cost); the few left are where
+// several vertices in a row stand out the same way.
+TEST(AutoSmooth, NoisyScanKeepsFewHardEdges) {
+    Mesh scan = test::noisy_sphere(64, 0.2f);
+    ensure_vertex_normals(scan);
+    const std::vector<glm::vec3> fn = face_normals(scan);
+    const EdgeAdjacency adj = build_edge_adjacency(scan);
+    size_t sharp = 0;
+    for (size_t e = 0; e < adj.edge_count(); ++e)
+        sharp +=
+            adj.face_count(e) == 2 && glm::dot(fn[adj.face(e, 0)], fn[adj.face(e, 1)]) < std::cos(glm::radians(30.0f));
+    EXPECT_GT(sharp, adj.edge_count() / 20);  // the noise often tilts neighbours more than 30° apart
+    auto_smooth(scan, 30.0f);
+    const size_t hard = scan.has_hard_edges() ? hard_edge_table(scan).edges.size() : 0;
+    EXPECT_LT(hard, sharp / 50);  // at most 2 % of them stay hard
+    auto_smooth(scan, 5.0f);      // a small angle still finds what stands out of the noise
+    EXPECT_TRUE(scan.has_hard_edges());
 }
 
 TEST(AutoSmooth, IsDeterministic) {

@@ -10,7 +10,7 @@ namespace {
 
 std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
     std::vector<LineSegment> segments = data.mesh().has_hard_edges()
-                                            ? extract_hard_edge_contours(data.mesh(), camera)
+                                            ? extract_hard_edge_contours(data.mesh(), data.hard_edges(), camera)
                                             : extract_contours(data.mesh(), data.normals(), camera);
     if (line_number(settings, "silhouette-edges") != 0.0f) {
         const auto& p = data.mesh().positions;

@@ -74,6 +74,7 @@ void MeshLineData::release_derived() {
     creases_.reset();
     ridges_.reset();
     intersections_.reset();
+    hard_edges_.reset();
     hatching_.reset();
 }
 
@@ -129,6 +130,11 @@ const CreaseLines& MeshLineData::creases(float angle_degrees, TimingLog& log) {
         if (adj.memory_bytes() > kKeepAdjacencyBytes) adjacency_.reset();
     }
     return *creases_;
+}
+
+const HardEdgeTable& MeshLineData::hard_edges() {
+    if (!hard_edges_) hard_edges_ = timed(setup_timings_, "hard edges", [&] { return hard_edge_table(*mesh_); });
+    return *hard_edges_;
 }
 
 const std::vector<LineSegment>& MeshLineData::borders() {

@@ -14,6 +14,7 @@
 #include "geometry/adjacency.hpp"
 #include "geometry/creases.hpp"
 #include "geometry/curvature.hpp"
+#include "geometry/hard_edge_contours.hpp"
 #include "geometry/hatching.hpp"
 #include "geometry/ridges.hpp"
 #include "inkshade/mesh.hpp"
@@ -73,6 +74,8 @@ public:
     const std::vector<LineSegment>& borders();
     // Ridges and valleys with these options (the last options asked for are kept).
     const RidgeLines& ridges(const RidgeOptions& options);
+    // The hard edges the contour reads on a mesh with hard edges (hard_edge_table).
+    const HardEdgeTable& hard_edges();
     // Where two surfaces of the mesh cross (extract_intersections; view-independent).
     const std::vector<LineSegment>& intersections();
     // Hatching strokes with these options (trace_hatching; the last options asked for are kept).
@@ -98,6 +101,7 @@ private:
     std::optional<RidgeLines> ridges_;
     RidgeOptions ridge_options_;
     std::optional<std::vector<LineSegment>> intersections_;
+    std::optional<HardEdgeTable> hard_edges_;
     std::optional<Hatching> hatching_;
     HatchOptions hatch_options_;
     TimingLog setup_timings_;
