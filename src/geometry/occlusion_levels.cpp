@@ -16,8 +16,8 @@ namespace {
 // Hits recorded per ray for counting each crossing once (levels past this are rare and are
 // counted without that check).
 constexpr int kRecordedHits = 16;
-// Hits on the point's own surface candidates (OcclusionQuery::own_depth) held per ray until the
-// trace ends; more are counted at once (as hiding: never a line drawn through a surface).
+// Hits that may be on the point's own surface (OcclusionQuery::own_depth), held per ray until
+// the trace ends; more are counted at once (as hiding: never a line drawn through a surface).
 constexpr int kDeferredHits = 8;
 
 struct RayState;
@@ -174,7 +174,7 @@ struct RayState {
     FoldWalk fold;  // contour samples
     // Distance in front of the point of a hit at t: (t_point − t) · t_scale.
     float t_point = 1.0f, t_scale = 0.0f;
-    // Hits within own_depth in front, on faces that may be the point's own neighbourhood.
+    // Held hits: within own_depth in front, on faces that may be the point's own neighbourhood.
     uint8_t deferred = 0;
     float deferred_t[kDeferredHits];
     uint32_t deferred_prim[kDeferredHits];
@@ -222,8 +222,9 @@ void count_crossings(const RTCFilterFunctionNArguments* args) {
 
 namespace {
 
-// The deferred hits of a traced ray that are not on the point's own neighbourhood, counted
-// (OcclusionQuery::own_depth).
+// The held hits of a traced ray that are not on the point's own neighbourhood, counted
+// (OcclusionQuery::own_depth; a held hit is within own_depth ≤ own_radius of the point, so on
+// a face within the radius).
 void count_deferred(RTCScene scene, const OcclusionContext& ctx, const OcclusionQuery& q, RayState& st) {
     if (st.deferred == 0 || st.level >= ctx.cap) return;
     const glm::vec3* positions = ctx.mesh->positions.data();

@@ -114,7 +114,8 @@ OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm
     q.on = on;
     const double pixel = view.pixel_size(p);
     q.own_depth = float(allow.own_depth_px * pixel);
-    q.own_radius = float(allow.own_radius_px * pixel);
+    // At least the depth: a held hit then lies on a face within the radius (occlusion_levels.cpp).
+    q.own_radius = float(std::max(allow.own_radius_px, allow.own_depth_px) * pixel);
     if (allow.fold_px > 0.0f && on.face != kNoFace && on.face_b == kNoFace && on.kind != PointOn::Vertex) {
         q.normal = interpolated_normal(mesh, on.face, p);
         if (q.normal != glm::vec3(0.0f)) q.fold_band = float(allow.fold_px * pixel);
