@@ -3,8 +3,9 @@
 // (≤ 1 px apart), every sample's occlusion level (how many surfaces lie in front of it) is
 // counted by a ray from the eye towards it against the mesh (Embree 3), and segments are split
 // where the level changes, the change found by bisection to sub-pixel precision. A line's own
-// faces are told apart by topology (PointOn), never by a distance; docs/lines.md has the method
-// and its limits.
+// faces are told apart by topology (PointOn), never by a distance; its own surface less than a
+// pixel's depth in front by topology within a ball of 2 px (own_neighbourhood.hpp).
+// docs/lines.md has the method and its limits.
 #pragma once
 #include <atomic>
 #include <memory>
