@@ -1,6 +1,8 @@
 // ImageProjection (visibility.hpp): a camera mapped onto image pixels as the renderer maps it.
 #include "geometry/visibility.hpp"
 
+#include <cmath>
+
 namespace inkshade::geometry {
 
 ImageProjection::ImageProjection(const Camera& camera, int width, int height)
@@ -12,6 +14,12 @@ ImageProjection::ImageProjection(const Camera& camera, int width, int height)
     const glm::dvec3 f = glm::dvec3(camera.target) - eye_;
     const double len = glm::length(f);
     forward_ = len > 0.0 ? f / len : glm::dvec3(0, 0, -1);
+    pixel_per_depth_ = 2.0 * std::tan(0.5 * glm::radians(double(camera.fov_degrees))) / height;
+}
+
+double ImageProjection::pixel_size(const glm::vec3& p) const {
+    if (camera_.orthographic) return double(camera_.ortho_height) / height_;
+    return view_depth(p) * pixel_per_depth_;
 }
 
 glm::dvec3 ImageProjection::project(const glm::vec3& p) const {

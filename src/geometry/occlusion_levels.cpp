@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/own_neighbourhood.hpp"
 #include "geometry/ray_scene_impl.hpp"
 #include "geometry/triangle_vertices.hpp"
 
@@ -15,6 +16,9 @@ namespace {
 // Hits recorded per ray for counting each crossing once (levels past this are rare and are
 // counted without that check).
 constexpr int kRecordedHits = 16;
+// Hits that may be on the point's own surface (OcclusionQuery::own_depth), held per ray until
+// the trace ends; more are counted at once (as hiding: never a line drawn through a surface).
+constexpr int kDeferredHits = 8;
 
 struct RayState;
 
@@ -168,6 +172,25 @@ struct RayState {
     float t[kRecordedHits];
     uint32_t prim[kRecordedHits];
     FoldWalk fold;  // contour samples
+    // Distance in front of the point of a hit at t: (t_point − t) · t_scale.
+    float t_point = 1.0f, t_scale = 0.0f;
+    // Held hits: within own_depth in front, on faces that may be the point's own neighbourhood.
+    uint8_t deferred = 0;
+    float deferred_t[kDeferredHits];
+    uint32_t deferred_prim[kDeferredHits];
+
+    // Has a hit at t on triangle tri been counted already (at one point of the ray, sharing a
+    // vertex: a ray through an edge or vertex of an occluder crosses one surface)?
+    bool counted(const glm::uvec3* triangles, uint32_t face, const glm::uvec3& tri, float at) const {
+        for (int k = 0; k < recorded; ++k)
+            if (prim[k] == face || (std::abs(t[k] - at) <= same_point && shared_vertices(tri, triangles[prim[k]]) > 0))
+                return true;
+        return false;
+    }
+    void record(uint32_t face, float at) {
+        if (recorded < kRecordedHits) t[recorded] = at, prim[recorded] = face, ++recorded;
+        ++level;
+    }
 };
 
 }  // namespace
@@ -186,15 +209,49 @@ void count_crossings(const RTCFilterFunctionNArguments* args) {
         if (contains_point(*ctx, q.on, prim, tri)) continue;
         if (q.fold_band > 0.0f && st.fold.contains(*ctx, q, prim)) continue;
         const float t = RTCRayN_tfar(args->ray, args->N, i);
-        bool seen = false;
-        for (int k = 0; k < st.recorded && !seen; ++k)
-            seen = st.prim[k] == prim ||
-                   (std::abs(st.t[k] - t) <= st.same_point && shared_vertices(tri, ctx->triangles[st.prim[k]]) > 0);
-        if (seen) continue;
-        if (st.recorded < kRecordedHits) st.t[st.recorded] = t, st.prim[st.recorded] = prim, ++st.recorded;
-        if (++st.level >= ctx->cap) args->valid[i] = -1;  // enough: the ray stops here
+        if (st.counted(ctx->triangles, prim, tri, t)) continue;
+        // Near enough to be the point's own surface: judged when the trace is done.
+        if ((st.t_point - t) * st.t_scale <= q.own_depth && st.deferred < kDeferredHits) {
+            st.deferred_t[st.deferred] = t, st.deferred_prim[st.deferred] = prim, ++st.deferred;
+            continue;
+        }
+        st.record(prim, t);
+        if (st.level >= ctx->cap) args->valid[i] = -1;  // enough: the ray stops here
     }
 }
+
+namespace {
+
+// The held hits of a traced ray that are not on the point's own neighbourhood, counted
+// (OcclusionQuery::own_depth; a held hit is within own_depth ≤ own_radius of the point, so on
+// a face within the radius).
+void count_deferred(RTCScene scene, const OcclusionContext& ctx, const OcclusionQuery& q, RayState& st) {
+    if (st.deferred == 0 || st.level >= ctx.cap) return;
+    const glm::vec3* positions = ctx.mesh->positions.data();
+    // Most such hits are on a face next to the point's own, across a vertex or an edge near it:
+    // that face is in the neighbourhood (joined within the radius) without the point query.
+    uint8_t open[kDeferredHits], left = 0;
+    for (uint8_t k = 0; k < st.deferred; ++k) {
+        bool own = false;
+        for (uint32_t f : {q.on.face, q.on.face_b})
+            own = own ||
+                  (f != kNoFace && joined(ctx.triangles, positions, st.deferred_prim[k], f, q.point, q.own_radius));
+        if (!own) open[left++] = k;
+    }
+    if (left == 0) return;
+    const std::vector<uint32_t> own =
+        own_neighbourhood(scene, ctx.triangles, positions, q.point, q.own_radius,
+                          [&](uint32_t f) { return contains_point(ctx, q.on, f, ctx.triangles[f]); });
+    for (uint8_t i = 0; i < left && st.level < ctx.cap; ++i) {
+        const uint8_t k = open[i];
+        const uint32_t prim = st.deferred_prim[k];
+        if (std::binary_search(own.begin(), own.end(), prim)) continue;
+        if (st.counted(ctx.triangles, prim, ctx.triangles[prim], st.deferred_t[k])) continue;
+        st.record(prim, st.deferred_t[k]);
+    }
+}
+
+}  // namespace
 
 bool RayScene::occluded(const ImageProjection& view, const glm::vec3& p, const PointOn& on) const {
     OcclusionQuery query;
@@ -241,6 +298,8 @@ void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuer
             same_point = 1e-6;
         }
         states[i].same_point = float(same_point);
+        states[i].t_point = float(cam.orthographic ? z - near : 1.0);
+        states[i].t_scale = float(cam.orthographic ? 1.0 : glm::length(glm::dvec3(q.point) - eye));
         RTCRay& ray = rays[i];
         ray.org_x = float(org.x), ray.org_y = float(org.y), ray.org_z = float(org.z);
         ray.dir_x = float(dir.x), ray.dir_y = float(dir.y), ray.dir_z = float(dir.z);
@@ -271,7 +330,10 @@ void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuer
         rtcOccluded1(impl_->scene, &ctx.rtc, rays);
     else if (count > 1)
         rtcOccluded1M(impl_->scene, &ctx.rtc, rays, unsigned(count), sizeof(RTCRay));
-    for (size_t i = 0; i < count; ++i) levels[i] = states[i].level;
+    for (size_t i = 0; i < count; ++i) {
+        count_deferred(impl_->scene, ctx, queries[i], states[i]);
+        levels[i] = states[i].level;
+    }
 }
 
 }  // namespace inkshade::geometry

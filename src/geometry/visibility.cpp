@@ -101,21 +101,24 @@ glm::vec3 interpolated_normal(const Mesh& mesh, uint32_t f, const glm::vec3& poi
     return len > 0.0 ? glm::vec3(ni / len) : glm::vec3(0.0f);
 }
 
-// World size of a pixel at p's depth.
-double pixel_size_at(const ImageProjection& view, const glm::vec3& p) {
-    const Camera& cam = view.camera();
-    if (cam.orthographic) return double(cam.ortho_height) / view.height();
-    return view.view_depth(p) * 2.0 * std::tan(0.5 * glm::radians(double(cam.fov_degrees))) / view.height();
-}
+// What a sample's ray leaves out, in pixels at the sample (VisibilityOptions).
+struct Allowance {
+    float fold_px;  // contour samples: the fold band, else 0
+    float own_depth_px, own_radius_px;
+};
 
 OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm::vec3& p, const PointOn& on,
-                        float fold_px) {
+                        const Allowance& allow) {
     OcclusionQuery q;
     q.point = p;
     q.on = on;
-    if (fold_px > 0.0f && on.face != kNoFace && on.face_b == kNoFace && on.kind != PointOn::Vertex) {
+    const double pixel = view.pixel_size(p);
+    q.own_depth = float(allow.own_depth_px * pixel);
+    // At least the depth: a held hit then lies on a face within the radius (occlusion_levels.cpp).
+    q.own_radius = float(std::max(allow.own_radius_px, allow.own_depth_px) * pixel);
+    if (allow.fold_px > 0.0f && on.face != kNoFace && on.face_b == kNoFace && on.kind != PointOn::Vertex) {
         q.normal = interpolated_normal(mesh, on.face, p);
-        if (q.normal != glm::vec3(0.0f)) q.fold_band = float(fold_px * pixel_size_at(view, p));
+        if (q.normal != glm::vec3(0.0f)) q.fold_band = float(allow.fold_px * pixel);
     }
     return q;
 }
@@ -151,7 +154,7 @@ struct Tester {
     const ImageProjection& view;
     const EdgeNeighbours* around;
     int cap;
-    float fold_px;  // contour samples: the fold band in pixels, else 0
+    Allowance allow;
 
     // The levels of many samples (kClipped outside the near/far range) as ray streams
     // (rtcOccluded1M), in fixed blocks on TBB tasks: the same blocks, so the same ray packets,
@@ -171,7 +174,7 @@ struct Tester {
                     out[i] = kClipped;
                     continue;
                 }
-                queries[m] = query_at(mesh, view, samples[i].point, samples[i].on, fold_px);
+                queries[m] = query_at(mesh, view, samples[i].point, samples[i].on, allow);
                 where[m++] = i;
             }
             scene.occlusion_levels(view, queries, m, found, cap, around);
@@ -488,7 +491,8 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
                         view,
                         around,
                         std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
-                        options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f};
+                        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f,
+                         std::max(options.own_depth_px, 0.0f), std::max(options.own_radius_px, 0.0f)}};
     std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
 

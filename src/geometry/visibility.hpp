@@ -3,8 +3,9 @@
 // (≤ 1 px apart), every sample's occlusion level (how many surfaces lie in front of it) is
 // counted by a ray from the eye towards it against the mesh (Embree 3), and segments are split
 // where the level changes, the change found by bisection to sub-pixel precision. A line's own
-// faces are told apart by topology (PointOn), never by a distance; docs/lines.md has the method
-// and its limits.
+// faces are told apart by topology (PointOn), never by a distance; its own surface less than a
+// pixel's depth in front by topology within a ball of 2 px (own_neighbourhood.hpp).
+// docs/lines.md has the method and its limits.
 #pragma once
 #include <atomic>
 #include <memory>
@@ -30,6 +31,9 @@ public:
     bool clipped(const glm::vec3& p) const;
     // Distance from the eye plane along the view direction (positive in front).
     double view_depth(const glm::vec3& p) const;
+    // World size of one pixel at p's depth (orthographic: everywhere): the depth a pixel spans
+    // there (docs/lines.md, Visibility).
+    double pixel_size(const glm::vec3& p) const;
 
     const Camera& camera() const { return camera_; }
     int width() const { return width_; }
@@ -40,6 +44,7 @@ private:
     int width_, height_;
     glm::dmat4 clip_from_world_;
     glm::dvec3 eye_, forward_;
+    double pixel_per_depth_;  // perspective: pixel size per unit of view depth
 };
 
 // What a tested point lies on. The faces that contain the point can never lie in front of it,
@@ -67,6 +72,12 @@ struct OcclusionQuery {
     // normal at the point.
     float fold_band = 0.0f;
     glm::vec3 normal{0.0f};
+    // The point's own surface (docs/lines.md, Visibility): a hit less than `own_depth` in front
+    // of the point along the ray (world units) on a face of its own neighbourhood
+    // (own_neighbourhood.hpp: the faces within `own_radius` joined by edges to the faces that
+    // contain it) does not count. 0: every hit counts.
+    float own_depth = 0.0f;
+    float own_radius = 0.0f;
 };
 
 // One spare vertex of capacity, written (zero) once, so that RayScene can share `positions`
@@ -141,6 +152,12 @@ public:
     //     inner contour, the sheet that hides a contour past a T-junction — counts. The walk
     //     crosses edges through `around` (contour_surroundings) and stops after 256 faces or
     //     where `around` has no neighbour (a border, a non-manifold edge, outside it).
+    //   - A point's own surface a little in front of it does not count either: a hit less than
+    //     OcclusionQuery::own_depth in front of the point, on a face joined to the point's own
+    //     faces by edges within own_radius of it (own_neighbourhood.hpp). Such hits are held
+    //     until the ray is traced, and only rays that have them run the point query. A sheet of
+    //     another part, or of this part joined only farther away (a hem, a separate plate),
+    //     hides the point at any distance beyond tolerance().
     void occlusion_levels(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* levels,
                           int cap = 1, const EdgeNeighbours* around = nullptr) const;
     // One query; true when its level is ≥ 1.
@@ -174,6 +191,11 @@ struct VisibilityOptions {
     // piece of them would be shorter too, and the caller drops such pieces (the line setting
     // `min-length`). On a scan most suggestive contours are such specks.
     float min_length_px = 0.0f;
+    // A sample's own surface in front of it by less than this many pixels' depth (the world size
+    // of a pixel at the sample's depth) does not hide it; its own neighbourhood is the surface
+    // within `own_radius_px` pixels joined to the faces it lies on (OcclusionQuery::own_depth).
+    float own_depth_px = 1.0f;
+    float own_radius_px = 2.0f;
 };
 
 // The segments' parts, split where the occlusion level changes. Parts keep the original node

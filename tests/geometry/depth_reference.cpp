@@ -123,12 +123,28 @@ double VisibilityErrors::wrongly_hidden_fraction() const {
     return hidden_length > 0.0 ? wrongly_hidden_length / hidden_length : 0.0;
 }
 
+double VisibilityErrors::shallow_hidden_fraction() const {
+    return hidden_length > 0.0 ? hidden_shallow_length / hidden_length : 0.0;
+}
+
+double VisibilityErrors::deep_visible_fraction() const {
+    return visible_length > 0.0 ? visible_deep_length / visible_length : 0.0;
+}
+
+double DepthReference::pixel_depth(double z) const {
+    const Camera& camera = view_.camera();
+    if (camera.orthographic) return double(camera.ortho_height) / height_;
+    return z * 2.0 * std::tan(0.5 * glm::radians(double(camera.fov_degrees))) / height_;
+}
+
 VisibilityErrors& VisibilityErrors::operator+=(const VisibilityErrors& other) {
     visible_length += other.visible_length;
     hidden_length += other.hidden_length;
     wrongly_visible_length += other.wrongly_visible_length;
     wrongly_hidden_length += other.wrongly_hidden_length;
     hidden_near_outline_length += other.hidden_near_outline_length;
+    hidden_shallow_length += other.hidden_shallow_length;
+    visible_deep_length += other.visible_deep_length;
     outside_length += other.outside_length;
     level_mismatch_length += other.level_mismatch_length;
     for (const glm::vec2& p : other.wrongly_visible_at)
@@ -156,7 +172,9 @@ std::ostream& operator<<(std::ostream& out, const VisibilityErrors& e) {
         out << "; at";
         points(e.wrongly_hidden_at);
     }
-    out << "), level mismatch " << e.level_mismatch_length << " px";
+    out << "), false hidden " << 100.0 * e.shallow_hidden_fraction() << " % (" << e.hidden_shallow_length
+        << " px), visible a pixel deep " << 100.0 * e.deep_visible_fraction() << " % (" << e.visible_deep_length
+        << " px), level mismatch " << e.level_mismatch_length << " px";
     if (e.outside_length > 0.0) out << ", outside the image " << e.outside_length << " px";
     out.flags(flags);
     out.precision(precision);
@@ -180,10 +198,15 @@ void judge_samples(const DepthReference& reference, const std::vector<LinePath>&
         }
         const double z = reference.view_depth_of_window(window_depth);
         const int ci = int(std::floor(p.x * k)), cj = int(std::floor(p.y * k));
-        int nearer = 0;
+        int nearer = 0, pixel_nearer = 0;
+        const double pixel = reference.pixel_depth(z);
         for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) nearer += reference.depth(ci + di, cj + dj) < z - eps;
-        f(p, length, path, hidden ? nearer == 0 : nearer == 9, nearer);
+            for (int di = -1; di <= 1; ++di) {
+                const double d = reference.depth(ci + di, cj + dj);
+                nearer += d < z - eps;
+                pixel_nearer += d < z - pixel;
+            }
+        f(p, length, path, hidden ? nearer == 0 : nearer == 9, nearer, pixel_nearer);
     });
 }
 
@@ -192,9 +215,12 @@ void judge_samples(const DepthReference& reference, const std::vector<LinePath>&
 VisibilityErrors check_paths(const DepthReference& reference, const std::vector<LinePath>& paths, bool hidden,
                              double spacing_px) {
     VisibilityErrors e;
-    judge_samples(reference, paths, hidden, spacing_px, &e.outside_length,
-                  [&](const glm::dvec2& p, double length, const LinePath& path, bool wrong, int nearer) {
+    judge_samples(
+        reference, paths, hidden, spacing_px, &e.outside_length,
+        [&](const glm::dvec2& p, double length, const LinePath& path, bool wrong, int nearer, int pixel_nearer) {
         (hidden ? e.hidden_length : e.visible_length) += length;
+        if (hidden && pixel_nearer == 0) e.hidden_shallow_length += length;
+        if (!hidden && pixel_nearer == 9) e.visible_deep_length += length;
         if (hidden ? path.level < 1 : path.level != 0) e.level_mismatch_length += length;
         if (hidden && nearer > 0 && nearer < 9) e.hidden_near_outline_length += length;
         if (!wrong) return;
@@ -202,7 +228,7 @@ VisibilityErrors check_paths(const DepthReference& reference, const std::vector<
 
         std::vector<glm::vec2>& at = hidden ? e.wrongly_hidden_at : e.wrongly_visible_at;
         if (at.size() < kExamples) at.emplace_back(p);
-    });
+        });
     return e;
 }
 
@@ -244,9 +270,11 @@ Image picture(const DepthReference& reference, const LineLayer& layer, glm::dvec
     };
     for (bool hidden : {false, true})
         judge_samples(reference, hidden ? layer.hidden : layer.visible, hidden, 0.25, nullptr,
-                      [&](const glm::dvec2& p, double, const LinePath&, bool wrong, int) {
+                      [&](const glm::dvec2& p, double, const LinePath&, bool wrong, int, int pixel_nearer) {
             if (wrong)
                 dot(p, hidden ? std::array<uint8_t, 3>{230, 0, 230} : std::array<uint8_t, 3>{230, 0, 0});
+            else if (hidden && pixel_nearer == 0)
+                dot(p, {255, 140, 0});
             else
                 dot(p, hidden ? std::array<uint8_t, 3>{0, 90, 255} : std::array<uint8_t, 3>{0, 170, 0});
         });

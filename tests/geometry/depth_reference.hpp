@@ -52,6 +52,9 @@ public:
     // (RayScene::tolerance). The tests' closest surfaces that must hide each other (two
     // plates) are 1e-3 of the scene apart, ten times this.
     double eps() const { return eps_; }
+    // The depth a pixel spans at view depth z: the world size of one image pixel there (the
+    // height of the view at z over the image height; orthographic: ortho_height / height).
+    double pixel_depth(double z) const;
 
 private:
     geometry::ImageProjection view_;
@@ -73,6 +76,13 @@ struct VisibilityErrors {
     // hidden line running along an outline, meeting it at a grazing angle or at a contour's
     // cusp is right or wrong by less than the window. Reported, not judged.
     double hidden_near_outline_length = 0.0;
+    // Hidden samples that the z-buffer shows (false hidden): no surface of the 3 x 3 window is
+    // in front by more than the depth a pixel spans there (DepthReference::pixel_depth), as
+    // rtsc's depth test keeps a line (3 x 3 max plus a bias). Includes wrongly hidden ones.
+    double hidden_shallow_length = 0.0;
+    // Visible samples with every depth of the window in front by more than the depth a pixel
+    // spans: hidden by the own-surface rule too (docs/lines.md), whatever surface it is.
+    double visible_deep_length = 0.0;
     double outside_length = 0.0;         // samples outside the image (not checked)
     double level_mismatch_length = 0.0;  // visible paths with level != 0, hidden with level < 1
     std::vector<glm::vec2> wrongly_visible_at, wrongly_hidden_at;  // the first few, for messages
@@ -80,6 +90,8 @@ struct VisibilityErrors {
     // Fractions of the visible and hidden lengths (0 when that length is 0).
     double wrongly_visible_fraction() const;
     double wrongly_hidden_fraction() const;
+    double shallow_hidden_fraction() const;  // of the hidden length
+    double deep_visible_fraction() const;    // of the visible length
     VisibilityErrors& operator+=(const VisibilityErrors& other);
 };
 std::ostream& operator<<(std::ostream& out, const VisibilityErrors& errors);
@@ -101,7 +113,7 @@ VisibilityErrors check_layer(const DepthReference& reference, const LineLayer& l
 // A picture for looking into a failure: the reference's depth in grey (nearer is lighter,
 // scaled to the frame; no surface: cream) over the image square [origin, origin + size_px]²,
 // `zoom` output pixels per image pixel, with the layer's samples as dots: visible green,
-// hidden blue, wrongly visible red, wrongly hidden magenta.
+// hidden blue, wrongly visible red, wrongly hidden magenta, other false hidden (hidden_shallow_length) orange.
 Image picture(const DepthReference& reference, const LineLayer& layer, glm::dvec2 origin, double size_px, int zoom);
 
 // Calls f(point, window_depth, length, path) for the samples of `paths` as check_paths takes them.

@@ -6,7 +6,10 @@
 // the back edges of a cube) and one scene per line type where skipping visibility would show.
 // Every draw asks for hidden lines (`hidden` = true) and the layers are held to: wrongly
 // visible ≤ 0.5 % of the visible length, wrongly hidden ≤ 1 % of the hidden length, visible
-// paths at level 0 and hidden ones at level ≥ 1. Each test prints its measurements
+// paths at level 0 and hidden ones at level ≥ 1. A slit plate and a pleated strip, whose own
+// surface passes less than a pixel's depth in front of their creases, are held to false hidden
+// ≤ 2 % instead (docs/lines.md: such surface does not hide), and a hemmed sheet (a sliver of
+// the same part, joined far away) to the thresholds above. Each test prints its measurements
 // ("[ measure  ]" lines) whether it passes or not; INKSHADE_VISIBILITY_PICTURES=DIR also
 // writes pictures of each layer over the reference (write_pictures below).
 #include <gtest/gtest.h>
@@ -28,6 +31,7 @@
 #include "geometry/builtin_models.hpp"
 #include "geometry/depth_reference.hpp"
 #include "inkshade/image.hpp"
+#include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
 
 namespace inkshade::test {
@@ -46,6 +50,9 @@ constexpr int kSize = 1024;
 constexpr int kCoarseSize = 512;
 constexpr double kMaxWronglyVisible = 0.005;
 constexpr double kMaxWronglyHidden = 0.01;
+// False hidden (VisibilityErrors::hidden_shallow_length) on the own-surface scenes: the issue's
+// bound for scans with slits and folds.
+constexpr double kMaxFalseHidden = 0.02;
 constexpr float kPi = std::numbers::pi_v<float>;
 
 // ---- scenes ----------------------------------------------------------------------------------
@@ -282,6 +289,117 @@ glm::dvec2 project_xy(const geometry::ImageProjection& view, const glm::vec3& p)
     return {q.x, q.y};
 }
 
+// ---- a line's own surface a fraction of a pixel in front ------------------------------------
+
+// World size of a pixel at the target of orbit(…, kOwnDistance) at kSize (fov 30°).
+constexpr float kOwnDistance = 6.0f;
+const float kPixel = kOwnDistance * 2.0f * std::tan(glm::radians(15.0f)) / float(kSize);
+
+// A profile in the (z, y) plane, (z, y) points in order, swept along x over [−0.6, 0.6] in
+// `nx` steps: a sheet whose corners along x are creases (vertices shared between the strips).
+Mesh swept_profile(const std::vector<glm::vec2>& profile, int nx = 8) {
+    Mesh m;
+    for (int i = 0; i <= nx; ++i)
+        for (const glm::vec2& zy : profile) m.positions.emplace_back(-0.6f + 1.2f * float(i) / float(nx), zy.y, zy.x);
+    const uint32_t n = uint32_t(profile.size());
+    for (uint32_t i = 0; i < uint32_t(nx); ++i)
+        for (uint32_t k = 0; k + 1 < n; ++k) {
+            const uint32_t a = i * n + k, b = a + 1, c = a + n, d = c + 1;
+            m.triangles.emplace_back(a, c, d);
+            m.triangles.emplace_back(a, d, b);
+        }
+    return m;
+}
+
+// False hidden (hidden, yet no surface more than a pixel's depth in front: docs/lines.md) at
+// most kMaxFalseHidden of the hidden length, visible a pixel deep behind a surface at most
+// kMaxWronglyVisible of the visible length, and the level of every path.
+void expect_own_surface_rule(const Measured& m) {
+    for (size_t i = 0; i < m.errors.size(); ++i) {
+        const VisibilityErrors& e = m.errors[i];
+        const std::string& type = m.drawing.layers[i].settings.type;
+        EXPECT_LE(e.shallow_hidden_fraction(), kMaxFalseHidden) << type << ": " << e;
+        EXPECT_LE(e.deep_visible_fraction(), kMaxWronglyVisible) << type << ": " << e;
+        EXPECT_EQ(e.level_mismatch_length, 0.0) << type << ": " << e;
+    }
+}
+
+TEST(ExactVisibility, SlitPlateKeepsItsFarLip) {
+    // A plate with a slit a tenth of a pixel wide and half a pixel deep; its near side stands
+    // 0.3 px higher. Seen from 60° above, the near wall passes 0.2 px in front of the far lip's
+    // crease: the plate's own surface, which must not hide it.
+    const float w = kPixel;
+    const Mesh mesh = swept_profile({{-0.5f, 0.0f},
+                                     {0.0f, 0.0f},
+                                     {0.0f, -0.5f * w},
+                                     {0.1f * w, -0.5f * w},
+                                     {0.1f * w, 0.3f * w},
+                                     {0.5f, 0.3f * w}});
+    const Measured m = measure(mesh, orbit(0.0f, 60.0f, kOwnDistance), {"crease"});
+    expect_own_surface_rule(m);
+    // The far lip and the near wall's top: two creases across the whole plate (about 380 px).
+    expect_drawn(m, "crease", 700.0, 0.0);
+}
+
+TEST(ExactVisibility, FoldedStripKeepsItsValleys) {
+    // A strip folded into pleats 0.6 px apart and 0.75 px high (faces at 68°), seen from 60°
+    // above: each valley crease lies behind the next pleat by half a pixel, its own surface.
+    const float w = kPixel;
+    std::vector<glm::vec2> profile{{-0.5f, 0.0f}};
+    for (int k = 0; k < 6; ++k) {
+        profile.emplace_back(0.6f * w * float(k), 0.0f);
+        profile.emplace_back(0.6f * w * (float(k) + 0.5f), 0.75f * w);
+    }
+    profile.emplace_back(0.6f * w * 6.0f, 0.0f);
+    profile.emplace_back(0.5f, 0.0f);
+    const Measured m = measure(swept_profile(profile), orbit(0.0f, 60.0f, kOwnDistance), {"crease"});
+    expect_own_surface_rule(m);
+    expect_drawn(m, "crease", 3000.0, 0.0);
+}
+
+TEST(ExactVisibility, CadSliverHemHidesWhatIsUnderIt) {
+    // A sheet with a hem: folded back over itself 0.4 px above, 0.4 of the model from the fold
+    // to its edge; under it, a step 0.2 px down with two creases. The hem is the same part but
+    // not the creases' own neighbourhood: it hides them, however close.
+    const float w = kPixel;
+    const Mesh mesh = swept_profile(
+        {{-0.5f, 0.0f}, {0.1f, 0.0f}, {0.1f, -0.2f * w}, {0.5f, -0.2f * w}, {0.5f, 0.4f * w}, {-0.3f, 0.4f * w}});
+    const Measured m = measure(mesh, orbit(0.0f, 60.0f, kOwnDistance), {"crease"});
+    expect_correct(m);
+    // The step's two creases are hidden across the plate (about 380 px each).
+    expect_drawn(m, "crease", 300.0, 700.0);
+}
+
+// ---- meshes named in the environment --------------------------------------------------------
+
+// INKSHADE_VISIBILITY_MESHES=FILE[;FILE...] measures each mesh (load_mesh: a file or builtin:) from six
+// azimuths at 20° and one from 60° above, auto-framed at 1024², the layers of contour,
+// suggestive, crease and border checked against the z-buffer: one "[ measure  ]" line per mesh
+// and type, all views summed. Skipped without it (the scans are not in the repository).
+TEST(ExactVisibility, MeshesFromEnvironment) {
+    const char* list = std::getenv("INKSHADE_VISIBILITY_MESHES");
+    if (!list || !*list) GTEST_SKIP() << "INKSHADE_VISIBILITY_MESHES not set";
+    const std::vector<std::string> types{"contour", "suggestive", "crease", "border"};
+    std::stringstream files(list);
+    for (std::string file; std::getline(files, file, ';');) {
+        const Mesh mesh = load_mesh(file);
+        std::vector<VisibilityErrors> sum(types.size());
+        const std::vector<std::pair<float, float>> views{{0, 20},   {60, 20},  {120, 20}, {180, 20},
+                                                         {240, 20}, {300, 20}, {35, 60}};
+        for (const auto& [azimuth, elevation] : views) {
+            CameraOptions options;
+            options.azimuth_degrees = azimuth;
+            options.elevation_degrees = elevation;
+            const Camera camera = frame_camera(mesh.bounds(), options, 1.0f, mesh.positions);
+            const Measured m = measure(mesh, camera, types);
+            for (size_t i = 0; i < types.size(); ++i) sum[i] += m.of(types[i]);
+        }
+        const std::string name = file.substr(file.find_last_of('/') + 1);
+        for (size_t i = 0; i < types.size(); ++i)
+            print_measure(name + " " + types[i] + " (all views)", describe(sum[i]));
+    }
+}
+
 // ---- the scenes against the z-buffer ------------------------------------------------------
 
 TEST(ExactVisibility, SliverPlateHidesPartOfSphereOutline) {
@@ -398,7 +516,9 @@ TEST(ExactVisibility, CrossedNeedleCylinders) {
 
 TEST(ExactVisibility, CubeFromCornerHidesItsBackEdges) {
     // Seen from azimuth 30, elevation 25, the cube's corner (−1, −1, −1) is the only one behind
-    // the outline, so its three edges are hidden over their whole length.
+    // the outline, so its three edges are hidden over their whole length — but for their last
+    // pixel or so where they meet the outline: there the front faces pass less than a pixel's
+    // depth in front, the same corner's faces, which do not hide them (docs/lines.md).
     const Mesh mesh = cube(1.0f);
     const Camera camera = orbit(30.0f, 25.0f, 7.0f);
     const Measured m = measure(mesh, camera, {"crease"});
@@ -425,6 +545,7 @@ TEST(ExactVisibility, CubeFromCornerHidesItsBackEdges) {
     for (const auto& e : back_edges) {
         for (int s = 0; s <= 200; ++s) {
             const glm::dvec2 p = e[0] + (e[1] - e[0]) * (s / 200.0);
+            if (glm::length(p - e[1]) < 2.0) continue;  // its end on the outline
             ++samples;
             uncovered += distance_to_paths(p, layer.hidden, [](const LinePath&) { return true; }) > 0.5;
             uncovered_by_level +=
