@@ -255,7 +255,7 @@ struct LineExtractor::Impl {
     double report_setup(std::vector<LineTiming>* timings);
     void prepare(const MeshLineNeeds& needs, std::vector<LineTiming>* timings);
     std::vector<std::vector<LineSegment>> extract(const DrawPlan& plan, const Camera& camera,
-                                                  std::vector<LineTiming>* timings);
+                                                  const LineContext& context, std::vector<LineTiming>* timings);
     EdgeNeighbours fold_surroundings(const DrawPlan& plan, const std::vector<std::vector<LineSegment>>& segments,
                                      std::vector<LineTiming>* timings);
     VisibilitySplit visibility(const PlannedLayer& layer, const std::vector<LineSegment>& segments,
@@ -296,12 +296,16 @@ void LineExtractor::Impl::prepare(const MeshLineNeeds& needs, std::vector<LineTi
 
 // Stage "extract": each layer's segments from its type's extractor.
 std::vector<std::vector<LineSegment>> LineExtractor::Impl::extract(const DrawPlan& plan, const Camera& camera,
+                                                                   const LineContext& context,
                                                                    std::vector<LineTiming>* timings) {
+    if (!context.light && !bounds) bounds = data.mesh().bounds();
+    const Light light = context.light ? *context.light : default_light(*bounds, camera);
+    const LineView view{.camera = camera, .light = light, .section = context.section, .scene = *scene};
     std::vector<std::vector<LineSegment>> segments;
     segments.reserve(plan.layers.size());
     for (const PlannedLayer& layer : plan.layers) {
         StageTimer timer(timings, "extract");
-        segments.push_back(layer.type->extract(data, camera, *layer.settings));
+        segments.push_back(layer.type->extract(data, view, *layer.settings));
         // Lazy mesh-wide work done inside (curvature, ridges, hatching) is reported on its own
         // stage, not as per-view extraction.
         timer.exclude(report_setup(timings));
@@ -339,6 +343,11 @@ LineExtractor::LineExtractor(Mesh&& mesh) : impl_(std::make_unique<Impl>(std::mo
 LineExtractor::LineExtractor(std::shared_ptr<const Mesh> mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
 LineExtractor::~LineExtractor() = default;
 
+const BoundingBox& LineExtractor::bounds() {
+    if (!impl_->bounds) impl_->bounds = impl_->data.mesh().bounds();
+    return *impl_->bounds;
+}
+
 void LineExtractor::release_mesh_data() {
     impl_->scene.reset();  // it reads the mesh, not the derived data: either order works
     impl_->data.release_derived();
@@ -350,7 +359,8 @@ std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
 }
 
 LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
-                                std::vector<LineTiming>* timings, StrokeSequence* sequence) {
+                                std::vector<LineTiming>* timings, StrokeSequence* sequence,
+                                const LineContext& context) {
     check_size(width, height);
     if (timings) timings->clear();
     const DrawPlan plan = plan_layers(lines);
@@ -366,7 +376,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
     const DrawView view{ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth), timings,
                         sequence};
     m.prepare(plan.mesh, timings);
-    const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, timings);
+    const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, context, timings);
     const EdgeNeighbours around = m.fold_surroundings(plan, segments, timings);
     for (size_t i = 0; i < plan.layers.size(); ++i) {
         const PlannedLayer& layer = plan.layers[i];

@@ -348,8 +348,8 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "apparent-ridge, border, contour, crease, hatch, intersection, isophote, principal-highlight, ridge, "
-              "suggestive, "
+              "apparent-ridge, border, clip-boundary, contour, crease, external-contour, hatch, intersection, "
+              "isophote, light-contour, material-boundary, principal-highlight, ridge, silhouette, suggestive, "
               "suggestive-highlight, topo, valley)\n");
     // Seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has
