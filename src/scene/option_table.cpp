@@ -193,8 +193,8 @@ void add_projection(std::vector<OptionSpec>& t) {
                       .help = "far clipping plane distance (default: fitted to the model)", .fronts = kScene | kPython},
                      [](auto& r) -> auto& { return r.camera.far_plane; }));
     t.push_back(bind({.name = "section-plane", .kind = K::Text, .value = "X,Y,Z,NX,NY,NZ",
-                      .help = "a plane through point X,Y,Z with normal NX,NY,NZ: the line drawing's clip-boundary "
-                              "lines draw where it cuts the model (docs/lines.md)",
+                      .help = "a plane through point X,Y,Z with normal NX,NY,NZ: the line drawing drops what lies "
+                              "on the normal's side and clip-boundary draws the cut (not the render; docs/lines.md)",
                       .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
                      [](auto& r) -> auto& { return r.section_plane; }));
     OptionSpec up_axis = bind_choice(

@@ -60,19 +60,37 @@ TEST(PlaneCuts, NearPlaneCutsTheSphereInACircle) {
     EXPECT_TRUE(drawing.layers[0].visible[0].closed);
 }
 
-TEST(PlaneCuts, SectionPlaneReachesTheDrawingOnlyWhenGiven) {
+double total_length(const std::vector<LinePath>& paths) {
+    double length = 0.0;
+    for (const LinePath& p : paths)
+        for (size_t k = 0; k + 1 < p.points.size() + (p.closed ? 1 : 0); ++k)
+            length += glm::length(p.points[(k + 1) % p.points.size()] - p.points[k]);
+    return length;
+}
+
+// Seen from above, the section removes the torus's upper half (the normal's side): its two cut
+// circles are the rims of the open lower half and show whole, but for a pixel or two where a
+// rim is seen edge-on, behind the kept faces that straddle the plane. With the whole mesh the
+// near halves would lie inside it, hidden; without a plane there is no cut at all.
+TEST(PlaneCuts, SectionPlaneOpensTheModelInTheDrawing) {
     const Mesh torus = builtin::torus(1.0f, 0.4f, 64, 32);
     Camera camera;
-    camera.eye = {0.0f, -4.0f, -3.0f};  // below: the cut's side faces the camera
+    camera.eye = {0.0f, -5.0f, 4.0f};
     camera.target = {0.0f, 0.0f, 0.0f};
     camera.up = {0.0f, 0.0f, 1.0f};
+    camera.near_plane = 0.5f;
     LineExtractor extractor(torus);
-    const std::vector<LineSettings> lines = {{"clip-boundary", {{"hidden", {1.0f}}}}};
+    const std::vector<LineSettings> lines = {{"clip-boundary", {{"hidden", {1.0f}}}}, {"contour", {}}};
     const LineDrawing none = extractor.draw(camera, 200, 200, lines);
     EXPECT_TRUE(none.layers[0].visible.empty() && none.layers[0].hidden.empty());
-    const LineDrawing cut = extractor.draw(camera, 200, 200, lines, nullptr, nullptr,
-                                           {.light = std::nullopt, .section = SectionPlane{{0, 0, 0}, {0, 0, 1}}});
-    EXPECT_FALSE(cut.layers[0].visible.empty() && cut.layers[0].hidden.empty());
+    const LineContext section{.light = std::nullopt, .section = SectionPlane{{0, 0, 0}, {0, 0, 1}}};
+    const LineDrawing cut = extractor.draw(camera, 200, 200, lines, nullptr, nullptr, section);
+    const double visible = total_length(cut.layers[0].visible), hidden = total_length(cut.layers[0].hidden);
+    EXPECT_GT(visible, 500.0);
+    EXPECT_LT(hidden, 0.02 * visible) << "the cut is open to the camera";
+    // The removed half's contour is gone: from above, the open lower half's outline is shorter
+    // than the whole torus's contour.
+    EXPECT_LT(total_length(cut.layers[1].visible), total_length(none.layers[1].visible));
 }
 
 }  // namespace
