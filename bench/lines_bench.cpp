@@ -8,6 +8,7 @@
 // thirteen object-space types (docs/benchmarks.md):
 //   inkshade_bench --benchmark_filter='Hatching|Svg' --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true
+// and what the newer line kinds add to a teapot view (BM_LinesNewKinds).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -188,8 +189,34 @@ void BM_SvgBezierFit(benchmark::State& state) {
     state.counters["bytes"] = double(bytes);
 }
 
+// A view of the 100 k teapot (builtin:teapot:subdivisions=40) on a warm extractor: the contour
+// alone (arg 0), then with the five newer kinds beside it (arg 1: light-contour,
+// material-boundary, clip-boundary, silhouette, external-contour); the difference is what those
+// kinds cost a frame (issue 34: at most 0.1 s).
+void BM_LinesNewKinds(benchmark::State& state) {
+    static Mesh mesh = builtin::teapot(40);
+    static const Camera camera = frame_camera(mesh.bounds(), CameraOptions{}, 1.0f);
+    static LineExtractor extractor(mesh);
+    std::vector<LineSettings> lines = {{"contour", {}}};
+    if (state.range(0) != 0)
+        for (const char* type :
+             {"light-contour", "material-boundary", "clip-boundary", "silhouette", "external-contour"})
+            lines.push_back({type, {}});
+    extractor.draw(camera, 1024, 1024, lines);  // mesh-wide data and the ray scene, untimed
+    size_t paths = 0;
+    for (auto _ : state) {
+        const LineDrawing drawing = extractor.draw(camera, 1024, 1024, lines);
+        paths = 0;
+        for (const LineLayer& layer : drawing.layers) paths += layer.visible.size();
+        benchmark::DoNotOptimize(paths);
+    }
+    state.counters["layers"] = double(lines.size());
+    state.counters["paths"] = double(paths);
+}
+
 }  // namespace
 
+BENCHMARK(BM_LinesNewKinds)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HatchingSetup)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HatchingField)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SvgBezierFit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);

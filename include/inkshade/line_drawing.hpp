@@ -5,12 +5,14 @@
 // strokes by the renderer.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "inkshade/camera.hpp"
 #include "inkshade/lines.hpp"
 #include "inkshade/mesh.hpp"
+#include "inkshade/section_plane.hpp"
 
 namespace inkshade {
 
@@ -70,6 +72,13 @@ struct StrokeSequence {
     void reset() { *this = StrokeSequence(); }
 };
 
+// What a drawing's lines see besides the camera: the key light that `light-contour` follows and
+// the section plane that `clip-boundary` draws (docs/lines.md).
+struct LineContext {
+    std::optional<Light> light;  // unset: default_light of the mesh's bounds for the camera
+    std::optional<SectionPlane> section;
+};
+
 struct LineTiming {
     std::string stage;  // "normals+curvature", "extract", "visibility", "chain", ...
     double milliseconds = 0.0;
@@ -102,8 +111,10 @@ public:
     // on the draw that computes them, the once-per-mesh "ray scene", "curvature", ...
     // With `sequence`, the drawing is the next frame of that sequence: layers with `coherence`
     // take their stroke parameter from its previous frame, and the frame's strokes replace it.
+    // `context` gives the light and section plane of the types that read them.
     LineDrawing draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
-                     std::vector<LineTiming>* timings = nullptr, StrokeSequence* sequence = nullptr);
+                     std::vector<LineTiming>* timings = nullptr, StrokeSequence* sequence = nullptr,
+                     const LineContext& context = {});
 
     // Radial curvature κr per mesh vertex for this view (1/world length; DeCarlo et al. 2003:
     // the normal curvature along the view vector projected onto the tangent plane), as the
@@ -113,6 +124,9 @@ public:
     // Frees the mesh-wide data (curvature, adjacency, creases, the ray scene: about 700 MB at
     // 10 M triangles); the next draw computes again what it needs.
     void release_mesh_data();
+
+    // The mesh's bounding box (computed once), e.g. for the default light.
+    const BoundingBox& bounds();
 
 private:
     struct Impl;

@@ -14,6 +14,7 @@
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/renderer.hpp"
+#include "inkshade/section_plane.hpp"
 #include "inkshade/style.hpp"
 
 namespace inkshade {
@@ -97,6 +98,8 @@ struct SceneRequest {
     std::string animation;
     std::vector<NamedWeight> expressions, morphs;
     bool spring_bones = true;  // VRM spring bones simulated to `time` (Pose::spring_bones)
+    // A plane cutting the model, "X,Y,Z,NX,NY,NZ" (parse_section_plane); empty: none.
+    std::string section_plane;
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
     // case), for render_scene's AovImages overload and write_aov_files.
@@ -130,6 +133,8 @@ struct Scene {
     LightSource lights = LightSource::Style;
     std::optional<FileLight> file_light;  // the file's light in use (apply_file_scene)
     AovSet aovs;                          // the request's; options.aovs holds the renderer's part
+    // The section plane of the line drawing's `clip-boundary` (--section-plane; not the image's).
+    std::optional<SectionPlane> section_plane;
 
     // Takes what the request asks of the loaded model file: its camera becomes the camera
     // options (placement, projection, near and far; the image's aspect with size_from_camera)
@@ -204,6 +209,7 @@ glm::ivec2 parse_image_size(const std::string& option, const std::string& text);
 glm::vec3 parse_vec3(const std::string& option, const std::string& text);            // "x,y,z"
 glm::vec4 parse_color(const std::string& option, const std::string& text);           // parse_color
 LightType parse_light_type(const std::string& option, const std::string& text);      // directional|point
+SectionPlane parse_section_plane(const std::string& option, const std::string& text);  // X,Y,Z,NX,NY,NZ
 NamedWeight parse_named_weight(const std::string& option, const std::string& text);  // NAME=W
 // "NAME=W" items separated by ',' or ';' (a manifest's morph and expression columns).
 std::vector<NamedWeight> parse_named_weights(const std::string& option, const std::string& text);

@@ -19,6 +19,7 @@
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
 #include "geometry/path_arc_length.hpp"
+#include "geometry/section_cut.hpp"
 #include "geometry/stage_timer.hpp"
 #include "geometry/stroke_coherence.hpp"
 #include "geometry/stroke_style.hpp"
@@ -247,6 +248,10 @@ struct LineExtractor::Impl {
     MeshLineData data;
     std::unique_ptr<RayScene> scene;    // built on the first draw (timed there)
     std::optional<BoundingBox> bounds;  // the depth range of the stroke modifiers, on first use
+    // With a section plane: the mesh without the faces it removes, and its ray scene.
+    std::unique_ptr<Mesh> section_mesh;
+    std::unique_ptr<RayScene> section_scene;
+    std::optional<SectionPlane> section_of_scene;
     explicit Impl(const Mesh& mesh) : data(mesh) {}
     explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
     explicit Impl(std::shared_ptr<const Mesh> mesh) : data(std::move(mesh)) {}
@@ -254,12 +259,13 @@ struct LineExtractor::Impl {
     ViewDepthRange depth_range(const Camera& camera, bool reads_depth);
     double report_setup(std::vector<LineTiming>* timings);
     void prepare(const MeshLineNeeds& needs, std::vector<LineTiming>* timings);
+    const RayScene& ray_scene(const std::optional<SectionPlane>& section, std::vector<LineTiming>* timings);
     std::vector<std::vector<LineSegment>> extract(const DrawPlan& plan, const Camera& camera,
-                                                  std::vector<LineTiming>* timings);
+                                                  const LineContext& context, std::vector<LineTiming>* timings);
     EdgeNeighbours fold_surroundings(const DrawPlan& plan, const std::vector<std::vector<LineSegment>>& segments,
                                      std::vector<LineTiming>* timings);
     VisibilitySplit visibility(const PlannedLayer& layer, const std::vector<LineSegment>& segments,
-                               const EdgeNeighbours& around, const DrawView& v);
+                               const RayScene& rays, const EdgeNeighbours& around, const DrawView& v);
 };
 
 ViewDepthRange LineExtractor::Impl::depth_range(const Camera& camera, bool reads_depth) {
@@ -294,14 +300,38 @@ void LineExtractor::Impl::prepare(const MeshLineNeeds& needs, std::vector<LineTi
     for (const LineTiming& t : scene_timing) add_timing(timings, t.stage, t.milliseconds);
 }
 
-// Stage "extract": each layer's segments from its type's extractor.
+// The rays' scene: the mesh's, or with a section plane the mesh without the faces it removes
+// (section_cut.hpp; built when the plane changes, stage "section scene").
+const RayScene& LineExtractor::Impl::ray_scene(const std::optional<SectionPlane>& section,
+                                               std::vector<LineTiming>* timings) {
+    if (!section) return *scene;
+    const bool same =
+        section_of_scene && section_of_scene->point == section->point && section_of_scene->normal == section->normal;
+    if (!same) {
+        StageTimer timer(timings, "section scene");
+        section_scene.reset();
+        section_mesh = std::make_unique<Mesh>(section_ray_mesh(data.mesh(), *section, scene->tolerance()));
+        section_scene = std::make_unique<RayScene>(*section_mesh);
+        section_of_scene = section;
+    }
+    return *section_scene;
+}
+
+// Stage "extract": each layer's segments from its type's extractor, cut to the section plane's
+// kept side.
 std::vector<std::vector<LineSegment>> LineExtractor::Impl::extract(const DrawPlan& plan, const Camera& camera,
+                                                                   const LineContext& context,
                                                                    std::vector<LineTiming>* timings) {
+    if (!context.light && !bounds) bounds = data.mesh().bounds();
+    const Light light = context.light ? *context.light : default_light(*bounds, camera);
+    const LineView view{
+        .camera = camera, .light = light, .section = context.section, .scene = ray_scene(context.section, timings)};
     std::vector<std::vector<LineSegment>> segments;
     segments.reserve(plan.layers.size());
     for (const PlannedLayer& layer : plan.layers) {
         StageTimer timer(timings, "extract");
-        segments.push_back(layer.type->extract(data, camera, *layer.settings));
+        segments.push_back(layer.type->extract(data, view, *layer.settings));
+        if (context.section) clip_to_section(segments.back(), *context.section, scene->tolerance());
         // Lazy mesh-wide work done inside (curvature, ridges, hatching) is reported on its own
         // stage, not as per-view extraction.
         timer.exclude(report_setup(timings));
@@ -325,13 +355,13 @@ EdgeNeighbours LineExtractor::Impl::fold_surroundings(const DrawPlan& plan,
 // Stage "visibility", per layer: its segments split into visible and hidden parts with their
 // occlusion levels, counted as deep as the layer draws.
 VisibilitySplit LineExtractor::Impl::visibility(const PlannedLayer& layer, const std::vector<LineSegment>& segments,
-                                                const EdgeNeighbours& around, const DrawView& v) {
+                                                const RayScene& rays, const EdgeNeighbours& around, const DrawView& v) {
     StageTimer timer(v.timings, "visibility");
     VisibilityOptions options;
     options.count_levels_to = std::min(layer.levels.max + 1, kMaxOcclusionLevel);
     options.contour = layer.type->needs.contour_folds;
     options.min_length_px = line_number(*layer.settings, "min-length");
-    return split_by_visibility(*scene, data.mesh(), v.projection, segments, options, &around);
+    return split_by_visibility(rays, data.mesh(), v.projection, segments, options, &around);
 }
 
 LineExtractor::LineExtractor(const Mesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
@@ -339,8 +369,16 @@ LineExtractor::LineExtractor(Mesh&& mesh) : impl_(std::make_unique<Impl>(std::mo
 LineExtractor::LineExtractor(std::shared_ptr<const Mesh> mesh) : impl_(std::make_unique<Impl>(std::move(mesh))) {}
 LineExtractor::~LineExtractor() = default;
 
+const BoundingBox& LineExtractor::bounds() {
+    if (!impl_->bounds) impl_->bounds = impl_->data.mesh().bounds();
+    return *impl_->bounds;
+}
+
 void LineExtractor::release_mesh_data() {
     impl_->scene.reset();  // it reads the mesh, not the derived data: either order works
+    impl_->section_scene.reset();
+    impl_->section_mesh.reset();
+    impl_->section_of_scene.reset();
     impl_->data.release_derived();
 }
 
@@ -350,7 +388,8 @@ std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
 }
 
 LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
-                                std::vector<LineTiming>* timings, StrokeSequence* sequence) {
+                                std::vector<LineTiming>* timings, StrokeSequence* sequence,
+                                const LineContext& context) {
     check_size(width, height);
     if (timings) timings->clear();
     const DrawPlan plan = plan_layers(lines);
@@ -366,11 +405,12 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
     const DrawView view{ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth), timings,
                         sequence};
     m.prepare(plan.mesh, timings);
-    const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, timings);
+    const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, context, timings);
     const EdgeNeighbours around = m.fold_surroundings(plan, segments, timings);
     for (size_t i = 0; i < plan.layers.size(); ++i) {
         const PlannedLayer& layer = plan.layers[i];
-        const VisibilitySplit split = m.visibility(layer, segments[i], around, view);
+        const VisibilitySplit split =
+            m.visibility(layer, segments[i], m.ray_scene(context.section, timings), around, view);
         LevelPaths paths = image_paths(chain_levels(split, layer.levels, timings), *layer.settings, view);
         if (sequence) next.layers.push_back(cohere(paths, *layer.settings, i, view));
         drawing.layers.push_back(styled_layer(std::move(paths), layer, i, view));

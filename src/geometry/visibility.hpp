@@ -9,6 +9,7 @@
 #pragma once
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -162,6 +163,14 @@ public:
                           int cap = 1, const EdgeNeighbours* around = nullptr) const;
     // One query; true when its level is ≥ 1.
     bool occluded(const ImageProjection& view, const glm::vec3& p, const PointOn& on = {}) const;
+
+    // The nearest surface along the ray origin + t direction, t in (t_min, ∞) (units of
+    // `direction`), as its face and t; none when the ray leaves the mesh (ray_first_hit.cpp).
+    struct Hit {
+        uint32_t face = 0;
+        double t = 0.0;
+    };
+    std::optional<Hit> first_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min) const;
 
 private:
     struct Impl;

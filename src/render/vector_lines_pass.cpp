@@ -10,7 +10,8 @@ class VectorLinesPass final : public Pass {
 public:
     void run(Frame& frame) override {
         frame.drawing = frame.line_extractor.draw(frame.camera, frame.options.width, frame.options.height,
-                                                  frame.object_lines, nullptr, frame.options.stroke_sequence);
+                                                  frame.object_lines, nullptr, frame.options.stroke_sequence,
+                                                  {.light = frame.light, .section = std::nullopt});
     }
 };
 

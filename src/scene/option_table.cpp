@@ -192,6 +192,11 @@ void add_projection(std::vector<OptionSpec>& t) {
     t.push_back(bind({.name = "far", .kind = K::Number, .value = "D",
                       .help = "far clipping plane distance (default: fitted to the model)", .fronts = kScene | kPython},
                      [](auto& r) -> auto& { return r.camera.far_plane; }));
+    t.push_back(bind({.name = "section-plane", .kind = K::Text, .value = "X,Y,Z,NX,NY,NZ",
+                      .help = "a plane through point X,Y,Z with normal NX,NY,NZ: the line drawing drops what lies "
+                              "on the normal's side and clip-boundary draws the cut (not the render; docs/lines.md)",
+                      .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
+                     [](auto& r) -> auto& { return r.section_plane; }));
     OptionSpec up_axis = bind_choice(
         {.name = "up-axis", .kind = K::Choice, .value = "AXIS",
          .help = "the model's up axis: y (glTF, three.js, most OBJ), z (many CAD and Blender exports), x, -x, -y or "

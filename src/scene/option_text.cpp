@@ -45,6 +45,24 @@ glm::vec4 parse_color(const std::string& option, const std::string& text) {
     }
 }
 
+SectionPlane parse_section_plane(const std::string& option, const std::string& text) {
+    const std::string expected = option + ": expected X,Y,Z,NX,NY,NZ (a point and a normal not zero), got ";
+    float v[6] = {};
+    std::stringstream ss(text);
+    std::string item;
+    int i = 0;
+    while (std::getline(ss, item, ',')) {
+        auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), v[i < 6 ? i : 0]);
+        if (i >= 6 || item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(v[i]))
+            throw InputError(expected + io::quote_token(text));
+        ++i;
+    }
+    const glm::vec3 normal(v[3], v[4], v[5]);
+    const float length = glm::length(normal);
+    if (i != 6 || !(length > 0.0f) || !std::isfinite(length)) throw InputError(expected + io::quote_token(text));
+    return {.point = {v[0], v[1], v[2]}, .normal = normal / length};
+}
+
 LightType parse_light_type(const std::string& option, const std::string& text) {
     if (text == "directional") return LightType::Directional;
     if (text == "point") return LightType::Point;

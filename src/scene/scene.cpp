@@ -327,6 +327,8 @@ Scene make_scene(const SceneRequest& r) {
     scene.options.background = scene.style.background;
     scene.options.srgb_output = r.srgb;
     scene.options.bit_depth = r.bit_depth;
+    if (!r.section_plane.empty())
+        scene.section_plane = parse_section_plane(option_name(r.names, "section-plane"), r.section_plane);
     scene.aovs = aovs;
     scene.options.aovs = aovs.gpu();
     scene.camera = r.camera;
@@ -397,7 +399,9 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
 
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
                              std::vector<LineTiming>* timings, StrokeSequence* sequence) {
-    return extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines, timings, sequence);
+    const LineContext context{.light = scene.light(extractor.bounds(), camera), .section = scene.section_plane};
+    return extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines, timings, sequence,
+                          context);
 }
 
 }  // namespace inkshade

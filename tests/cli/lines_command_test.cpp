@@ -163,6 +163,34 @@ TEST(LinesCommand, TimingPrintsStagesAndTotal) {
         EXPECT_NE(r.out.find(stage), std::string::npos) << r.out;
 }
 
+// Issue 34's line kinds by name, with --section-plane for clip-boundary (a plane through the
+// torus's centre across its axis: its two equator circles, drawn with their hidden parts); the
+// torus has one material, so no material boundary. Bad planes are one-line errors.
+TEST(LinesCommand, NewerLineKindsAndSectionPlane) {
+    TempDir dir;
+    const std::vector<std::string> types = {"light-contour", "clip-boundary", "silhouette", "external-contour",
+                                            "material-boundary"};
+    auto r = run_cli(
+        "lines builtin:torus --size 320x240 --lines "
+        "light-contour,clip-boundary,silhouette,external-contour,material-boundary "
+        "--section-plane 0,0,0,0,0,1 --set clip-boundary.hidden=1 -o " +
+        dir.file("t.svg") + " --lines-json " + dir.file("t.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto json = nlohmann::json::parse(slurp(dir.file("t.json")));
+    ASSERT_EQ(json["layers"].size(), types.size());
+    for (size_t i = 0; i < types.size(); ++i) {
+        EXPECT_EQ(json["layers"][i]["type"], types[i]);
+        EXPECT_EQ(json["layers"][i]["paths"].empty(), types[i] == "material-boundary") << types[i];
+    }
+    for (const char* bad : {"0,0,0,0,0,0", "0,0,0,1,1", "0,0,0,1,x,0"}) {
+        r = run_cli(std::string("lines builtin:torus --lines clip-boundary --section-plane ") + bad + " -o " +
+                    dir.file("b.svg"));
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_NE(r.err.find("--section-plane: expected X,Y,Z,NX,NY,NZ"), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}
+
 // The rtsc line types beyond contours: each has its SVG layer with paths on the teapot, in the
 // order asked for, and its JSON layer with the parameters; bad values are one-line errors.
 TEST(LinesCommand, IsophotesTopoAndHighlightLayers) {
@@ -380,8 +408,8 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "apparent-ridge, border, contour, crease, hatch, intersection, isophote, principal-highlight, ridge, "
-              "suggestive, "
+              "apparent-ridge, border, clip-boundary, contour, crease, external-contour, hatch, intersection, "
+              "isophote, light-contour, material-boundary, principal-highlight, ridge, silhouette, suggestive, "
               "suggestive-highlight, topo, valley)\n");
     // Seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has

@@ -721,6 +721,22 @@ TEST(VisibilityIsApplied, Border) {
     expect_visibility_applied(tube, orbit(20.0f, 30.0f, 6.0f), 3.0f, "border");
 }
 
+// The plate is in front of the sphere, not behind its outline: the outline stays silhouette and
+// external contour, hidden where the plate covers it.
+TEST(VisibilityIsApplied, Silhouette) {
+    expect_visibility_applied(builtin::sphere(64, 128, 1.0f), orbit(20.0f, 10.0f, 5.0f), 2.5f, "silhouette");
+}
+
+TEST(VisibilityIsApplied, ExternalContour) {
+    expect_visibility_applied(builtin::sphere(64, 128, 1.0f), orbit(20.0f, 10.0f, 5.0f), 2.5f, "external-contour");
+}
+
+// The default key light (above left of the camera) puts the terminator across the sphere's
+// front; the plate, facing the camera, has one n·l all over and no light contour.
+TEST(VisibilityIsApplied, LightContour) {
+    expect_visibility_applied(builtin::sphere(64, 128, 1.0f), orbit(20.0f, 10.0f, 5.0f), 2.5f, "light-contour");
+}
+
 Camera wave_camera() {
     Camera camera = orbit(0.0f, 0.0f, 1.0f);
     camera.eye = glm::vec3(0.4f, -3.0f, 4.6f);

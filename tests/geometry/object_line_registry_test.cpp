@@ -33,7 +33,7 @@ TEST(ObjectLineRegistry, NeedsAreDeclaredAtRegistration) {
     EXPECT_FALSE(object_line_type("suggestive")->needs.contour_folds);
 }
 
-std::vector<LineSegment> no_segments(MeshLineData&, const Camera&, const LineSettings&) { return {}; }
+std::vector<LineSegment> no_segments(MeshLineData&, const LineView&, const LineSettings&) { return {}; }
 
 TEST(ObjectLineRegistry, CreasesWithoutAnAngleAreAProgrammingError) {
     // Refused before anything is registered.

@@ -7,11 +7,11 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& view, const LineSettings& settings) {
     const float size = line_number(settings, "feature-size");
     const ApparentRidgeOptions options{.threshold = line_number(settings, "threshold"),
                                        .feature_size = size > 0.0f ? size : data.feature_size()};
-    return extract_apparent_ridges(data.mesh(), data.normals(), data.curvature(), camera, options);
+    return extract_apparent_ridges(data.mesh(), data.normals(), data.curvature(), view.camera, options);
 }
 
 const ObjectLineRegistration registration{

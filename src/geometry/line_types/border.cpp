@@ -5,7 +5,7 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera&, const LineSettings&) { return data.borders(); }
+std::vector<LineSegment> extract(MeshLineData& data, const LineView&, const LineSettings&) { return data.borders(); }
 
 const ObjectLineRegistration registration{{.name = "border",
                                            .summary = "borders: mesh boundary edges (edges of exactly one face)",

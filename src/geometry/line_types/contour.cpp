@@ -8,13 +8,13 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& view, const LineSettings& settings) {
     std::vector<LineSegment> segments = data.mesh().has_hard_edges()
-                                            ? extract_hard_edge_contours(data.mesh(), data.hard_edges(), camera)
-                                            : extract_contours(data.mesh(), data.normals(), camera);
+                                            ? extract_hard_edge_contours(data.mesh(), data.hard_edges(), view.camera)
+                                            : extract_contours(data.mesh(), data.normals(), view.camera);
     if (line_number(settings, "silhouette-edges") != 0.0f) {
         const auto& p = data.mesh().positions;
-        for (const SilhouetteEdge& e : mesh_silhouette_edges(data.mesh(), camera))
+        for (const SilhouetteEdge& e : mesh_silhouette_edges(data.mesh(), view.camera))
             segments.push_back({.a = p[e.v0],
                                 .b = p[e.v1],
                                 .edge_a = vertex_key(e.v0),

@@ -6,7 +6,7 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera&, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView&, const LineSettings& settings) {
     const CreaseLines& c = data.creases(line_number(settings, "angle"));
     std::vector<LineSegment> segments;
     segments.reserve(c.ridges.size() + c.valleys.size() + c.non_manifold.size());

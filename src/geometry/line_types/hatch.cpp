@@ -8,7 +8,7 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& line_view, const LineSettings& settings) {
     const HatchOptions options{.spacing = line_number(settings, "spacing"),
                                .density = line_number(settings, "density"),
                                .levels = int(line_number(settings, "levels")),
@@ -18,14 +18,15 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     const Hatching& hatching = data.hatching(options);
     // The light is given in camera space (x right, y up, z towards the viewer), as rtsc's
     // light follows the camera; the renderer's default key light comes from the same side.
-    const glm::dvec3 light = camera_to_world(camera, glm::dvec3(line_direction(settings, "light")), "hatch.light");
+    const glm::dvec3 light =
+        camera_to_world(line_view.camera, glm::dvec3(line_direction(settings, "light")), "hatch.light");
     HatchView view;
     view.light = glm::vec3(light);
     for (size_t i = 0; i < line_param(settings, "tones").size(); ++i)
         view.thresholds.push_back(line_param(settings, "tones").at(i));
     view.fade = line_number(settings, "fade");
     view.thin = line_number(settings, "thin");
-    return hatch_segments(data.mesh(), data.normals(), hatching, camera, view);
+    return hatch_segments(data.mesh(), data.normals(), hatching, line_view.camera, view);
 }
 
 const ObjectLineRegistration registration{

@@ -7,7 +7,7 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera&, const LineSettings&) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView&, const LineSettings&) {
     return data.intersections();
 }
 

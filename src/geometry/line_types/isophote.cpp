@@ -8,13 +8,13 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& view, const LineSettings& settings) {
     IsophoteOptions options;
     options.direction = line_direction(settings, "direction");
     options.levels = int(line_number(settings, "levels"));
     options.values = line_param(settings, "values");
     options.back_faces = line_number(settings, "back-faces") != 0.0f;
-    return extract_isophotes(data.mesh(), data.normals(), camera, options);
+    return extract_isophotes(data.mesh(), data.normals(), view.camera, options);
 }
 
 const ObjectLineRegistration registration{

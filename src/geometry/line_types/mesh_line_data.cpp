@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "geometry/connected_objects.hpp"
 #include "geometry/feature_size.hpp"
 #include "geometry/intersection_lines.hpp"
 #include "geometry/normals.hpp"
@@ -23,8 +24,8 @@ auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, 
     return result;
 }
 
-// Positions (padded for Embree), triangles, unit normals and hard-edge shading normals of
-// `mesh`, nothing else.
+// Positions (padded for Embree), triangles, unit normals, hard-edge shading normals and face
+// materials of `mesh`, nothing else.
 std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Mesh& mesh) {
     auto m = std::make_shared<Mesh>();
     m->positions = std::move(positions);
@@ -33,6 +34,7 @@ std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Me
     m->normals = mesh.normals;
     m->shading_normal_ids = mesh.shading_normal_ids;
     m->shading_normals = mesh.shading_normals;
+    m->face_materials = mesh.face_materials;
     ensure_vertex_normals(*m);
     return m;
 }
@@ -55,7 +57,8 @@ MeshLineData::MeshLineData(Mesh&& mesh) {
     lines.normals = std::move(mesh.normals);
     lines.shading_normal_ids = std::move(mesh.shading_normal_ids);
     lines.shading_normals = std::move(mesh.shading_normals);
-    mesh = Mesh();  // colours, uvs and materials are not needed here
+    lines.face_materials = std::move(mesh.face_materials);  // material-boundary
+    mesh = Mesh();  // colours, uvs and the materials themselves are not needed here
     reserve_embree_padding(lines.positions);
     ensure_vertex_normals(lines);
     mesh_ = std::make_shared<const Mesh>(std::move(lines));
@@ -76,6 +79,13 @@ void MeshLineData::release_derived() {
     intersections_.reset();
     hard_edges_.reset();
     hatching_.reset();
+    face_objects_.reset();
+}
+
+const std::vector<uint32_t>& MeshLineData::face_objects() {
+    if (!face_objects_)
+        face_objects_ = timed(setup_timings_, "objects", [&] { return geometry::face_objects(*mesh_); });
+    return *face_objects_;
 }
 
 void MeshLineData::prepare(MeshLineNeeds needs, const std::function<void()>& then) {

@@ -1,5 +1,5 @@
 // What object-space line types extract from: one mesh (positions, triangles, unit vertex
-// normals) and what is derived from it alone — edge adjacency, curvature, creases,
+// normals, face materials) and what is derived from it alone — edge adjacency, curvature, creases,
 // intersections — computed on first use and kept, so later views of the same mesh pay only
 // per-view work. The one exception is a large adjacency (over kKeepAdjacencyBytes): only
 // creases and borders read it, so it is dropped once they are classified and rebuilt if
@@ -37,10 +37,10 @@ public:
     // The same, taking positions, triangles and normals from `mesh` (the rest is dropped).
     explicit MeshLineData(Mesh&& mesh);
     // Shares `mesh`, whose normals must already be unit (ensure_vertex_normals; when they are
-    // not even sane, a copy is made as above). Only positions, triangles and normals are read.
+    // not even sane, a copy is made as above). Only positions, triangles, normals and face materials are read.
     explicit MeshLineData(std::shared_ptr<const Mesh> mesh);
 
-    // Positions, triangles and unit normals (colours or uvs are there when shared, unread).
+    // Positions, triangles, unit normals and face materials (colours or uvs are there when shared, unread).
     const Mesh& mesh() const { return *mesh_; }
     const std::vector<glm::vec3>& normals() const { return mesh_->normals; }
 
@@ -78,6 +78,8 @@ public:
     const HardEdgeTable& hard_edges();
     // Where two surfaces of the mesh cross (extract_intersections; view-independent).
     const std::vector<LineSegment>& intersections();
+    // The object of each face (connected_objects.hpp), for silhouette and external-contour.
+    const std::vector<uint32_t>& face_objects();
     // Hatching strokes with these options (trace_hatching; the last options asked for are kept).
     const Hatching& hatching(const HatchOptions& options);
 
@@ -103,6 +105,7 @@ private:
     std::optional<std::vector<LineSegment>> intersections_;
     std::optional<HardEdgeTable> hard_edges_;
     std::optional<Hatching> hatching_;
+    std::optional<std::vector<uint32_t>> face_objects_;
     HatchOptions hatch_options_;
     TimingLog setup_timings_;
 };

@@ -2,6 +2,7 @@
 // LineType (name, parameters) together with the function that extracts its segments, so
 // LineExtractor needs no list of types and adding one touches one file.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,12 +10,25 @@
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "inkshade/camera.hpp"
 #include "inkshade/lines.hpp"
+#include "inkshade/section_plane.hpp"
 
 namespace inkshade::geometry {
 
+class RayScene;
+
+// What one view gives the extractors besides the mesh: the camera, the key light (light-contour),
+// the section plane (clip-boundary) and the mesh's ray-casting scene (silhouette and
+// external-contour look behind the contour).
+struct LineView {
+    const Camera& camera;
+    const Light& light;
+    const std::optional<SectionPlane>& section;
+    const RayScene& scene;
+};
+
 // The segments of one line type for one view (world coordinates, node keys as in
 // contours.hpp); visibility, chaining and clean-up are LineExtractor's.
-using ExtractLineSegments = std::vector<LineSegment> (*)(MeshLineData& data, const Camera& camera,
+using ExtractLineSegments = std::vector<LineSegment> (*)(MeshLineData& data, const LineView& view,
                                                          const LineSettings& settings);
 
 // What a type reads or asks of the drawing besides the mesh's positions and normals, declared at

@@ -8,14 +8,14 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& view, const LineSettings& settings) {
     const float size = line_number(settings, "feature-size");
     const PrincipalHighlightOptions options{.threshold = line_number(settings, "threshold"),
                                             .fade = line_number(settings, "fade") != 0.0f,
                                             .convex = line_number(settings, "convex") != 0.0f,
                                             .concave = line_number(settings, "concave") != 0.0f,
                                             .feature_size = size > 0.0f ? size : data.feature_size()};
-    return extract_principal_highlights(data.mesh(), data.normals(), data.curvature(), camera, options);
+    return extract_principal_highlights(data.mesh(), data.normals(), data.curvature(), view.camera, options);
 }
 
 const ObjectLineRegistration registration{

@@ -6,7 +6,7 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera&, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView&, const LineSettings& settings) {
     const RidgeOptions options{.threshold = line_number(settings, "threshold"),
                                .feature_size = line_number(settings, "feature-size")};
     return data.ridges(options).ridges;

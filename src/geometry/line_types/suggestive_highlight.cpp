@@ -8,13 +8,13 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& view, const LineSettings& settings) {
     const float size = line_number(settings, "feature-size");
     const SuggestiveOptions options{.threshold = line_number(settings, "threshold"),
                                     .fade = line_number(settings, "fade"),
                                     .feature_size = size > 0.0f ? size : data.feature_size(),
                                     .highlights = true};
-    return extract_suggestive_contours(data.mesh(), data.normals(), data.curvature(), camera, options);
+    return extract_suggestive_contours(data.mesh(), data.normals(), data.curvature(), view.camera, options);
 }
 
 const ObjectLineRegistration registration{

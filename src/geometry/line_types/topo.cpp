@@ -7,7 +7,7 @@ namespace inkshade::geometry {
 
 namespace {
 
-std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const LineSettings& settings) {
+std::vector<LineSegment> extract(MeshLineData& data, const LineView& view, const LineSettings& settings) {
     TopoOptions options;
     options.direction = line_direction(settings, "direction");
     options.world = line_number(settings, "frame") != 0.0f;
@@ -15,7 +15,7 @@ std::vector<LineSegment> extract(MeshLineData& data, const Camera& camera, const
     options.spacing = line_number(settings, "spacing");
     options.offset = line_number(settings, "offset");
     options.back_faces = line_number(settings, "back-faces") != 0.0f;
-    return extract_topo_lines(data.mesh(), data.normals(), camera, options);
+    return extract_topo_lines(data.mesh(), data.normals(), view.camera, options);
 }
 
 const ObjectLineRegistration registration{
