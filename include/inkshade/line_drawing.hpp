@@ -50,6 +50,7 @@ struct LineLayer {
 
 struct LineDrawing {
     int width = 0, height = 0;      // image size in pixels (the SVG viewBox)
+    glm::vec2 paper_mm{0.0f};       // a drawing sheet's size in mm (the SVG's size); 0: none
     std::vector<LineLayer> layers;  // one per object-space line type, in the style's order
 };
 

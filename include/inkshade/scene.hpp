@@ -100,6 +100,9 @@ struct SceneRequest {
     bool spring_bones = true;  // VRM spring bones simulated to `time` (Pose::spring_bones)
     // A plane cutting the model, "X,Y,Z,NX,NY,NZ" (parse_section_plane); empty: none.
     std::string section_plane;
+    // A drawing sheet (apply_drawing_sheet): the paper, "A0".."A5" (landscape; "-portrait" for
+    // upright) or "WxH" in mm, and the scale "PAPER:MODEL" (model units in mm). Empty: none.
+    std::string paper, drawing_scale;
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
     // case), for render_scene's AovImages overload and write_aov_files.
@@ -135,6 +138,8 @@ struct Scene {
     AovSet aovs;                          // the request's; options.aovs holds the renderer's part
     // The section plane of the line drawing's `clip-boundary` (--section-plane; not the image's).
     std::optional<SectionPlane> section_plane;
+    // The drawing sheet's size in mm (SceneRequest::paper); the SVG is sized in mm. Unset: none.
+    std::optional<glm::vec2> paper_mm;
 
     // Takes what the request asks of the loaded model file: its camera becomes the camera
     // options (placement, projection, near and far; the image's aspect with size_from_camera)
@@ -210,6 +215,13 @@ glm::vec3 parse_vec3(const std::string& option, const std::string& text);       
 glm::vec4 parse_color(const std::string& option, const std::string& text);           // parse_color
 LightType parse_light_type(const std::string& option, const std::string& text);      // directional|point
 SectionPlane parse_section_plane(const std::string& option, const std::string& text);  // X,Y,Z,NX,NY,NZ
+glm::vec2 parse_paper(const std::string& option, const std::string& text);  // A0..A5[-portrait], WxH mm
+float parse_drawing_scale(const std::string& option, const std::string& text);  // "1:2" -> 0.5
+// The request's drawing sheet applied to a scene make_scene built: the image takes the paper's
+// aspect (its longer side the request's), a scale makes the camera orthographic with the extent
+// the scale gives, and a style whose line widths are in mm (Style::lines_in_mm) gets them in
+// pixels of this image (of 96 per inch without a sheet). Throws InputError naming the option.
+void apply_drawing_sheet(const SceneRequest& r, Scene& scene);
 NamedWeight parse_named_weight(const std::string& option, const std::string& text);  // NAME=W
 // "NAME=W" items separated by ',' or ';' (a manifest's morph and expression columns).
 std::vector<NamedWeight> parse_named_weights(const std::string& option, const std::string& text);

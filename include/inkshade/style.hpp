@@ -29,6 +29,9 @@ struct Style {
     std::optional<float> smooth_angle;
     // The models' up axis (`up-axis`, CameraOptions::up_axis) when the request gives none.
     std::optional<UpAxis> up_axis;
+    // `line-unit = "mm"`: the widths and dash lengths of `lines` are millimetres on paper
+    // (apply_drawing_sheet turns them into pixels); otherwise pixels of the output image.
+    bool lines_in_mm = false;
 };
 
 // Sets the light colour, ambient, intensity, decay and distance the style asks for (others

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <string>
 #include <system_error>
 
@@ -318,9 +319,16 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
     double dash_sum = 0.0;
     for (float v : line_param(layer.settings, "dash")) dash_sum += double(v);
     if (hidden && dash_sum <= 0.0) {
-        // Dashes scale with the stroke so thick hidden lines still read as dashed.
-        const double w = std::max(double(stroke.width), 1.0);
-        out += " stroke-dasharray=\"" + number(3.0 * w) + " " + number(2.0 * w) + "\"";
+        const ParamValue& pattern = line_param(layer.settings, "hidden-dash");
+        std::string dashes;
+        if (std::accumulate(pattern.begin(), pattern.end(), 0.0) > 0.0) {
+            for (float v : pattern) dashes += (dashes.empty() ? "" : " ") + number(v);
+        } else {
+            // Dashes scale with the stroke so thick hidden lines still read as dashed.
+            const double w = std::max(double(stroke.width), 1.0);
+            dashes = number(3.0 * w) + " " + number(2.0 * w);
+        }
+        out += " stroke-dasharray=\"" + dashes + "\"";
     }
     out += ">\n";
     // Each path's text (its Bézier fit most of the work) is made on its own, in parallel, and
@@ -340,12 +348,16 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
 
 std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const SvgOptions& options) {
     const std::string w = std::to_string(drawing.width), h = std::to_string(drawing.height);
+    // On a drawing sheet the document is the paper's size in mm; the viewBox stays in pixels.
+    const bool sheet = drawing.paper_mm.x > 0.0f && drawing.paper_mm.y > 0.0f;
+    const std::string size_w = sheet ? number(drawing.paper_mm.x) + "mm" : w;
+    const std::string size_h = sheet ? number(drawing.paper_mm.y) + "mm" : h;
     std::string out;
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
     out +=
         "<svg xmlns=\"http://www.w3.org/2000/svg\" "
         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" version=\"1.1\" width=\"" +
-        w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+        size_w + "\" height=\"" + size_h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
     if (background.a > 0.0f)
         out += "<rect id=\"background\" x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
                hex_color(glm::vec3(background)) + "\"" +

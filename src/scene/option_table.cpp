@@ -197,6 +197,16 @@ void add_projection(std::vector<OptionSpec>& t) {
                               "on the normal's side and clip-boundary draws the cut (not the render; docs/lines.md)",
                       .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
                      [](auto& r) -> auto& { return r.section_plane; }));
+    t.push_back(bind({.name = "paper", .kind = K::Text, .value = "A0..A5[-portrait]|WxH",
+                      .help = "lay the drawing out on a sheet (ISO 216, landscape unless -portrait; or WxH in mm): "
+                              "the image takes its aspect, the SVG its size in mm (docs/lines.md)",
+                      .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
+                     [](auto& r) -> auto& { return r.paper; }));
+    t.push_back(bind({.name = "scale", .kind = K::Text, .value = "PAPER:MODEL",
+                      .help = "draw to scale on the --paper sheet, e.g. 1:2 (model units in mm): an orthographic "
+                              "view whose extent the scale gives",
+                      .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
+                     [](auto& r) -> auto& { return r.drawing_scale; }));
     OptionSpec up_axis = bind_choice(
         {.name = "up-axis", .kind = K::Choice, .value = "AXIS",
          .help = "the model's up axis: y (glTF, three.js, most OBJ), z (many CAD and Blender exports), x, -x, -y or "

@@ -351,6 +351,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.file_camera = r.file_camera;
     scene.size_from_camera = r.size_from_camera;
     scene.lights = r.lights;
+    apply_drawing_sheet(r, scene);
     return scene;
 }
 
@@ -400,8 +401,10 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
                              std::vector<LineTiming>* timings, StrokeSequence* sequence) {
     const LineContext context{.light = scene.light(extractor.bounds(), camera), .section = scene.section_plane};
-    return extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines, timings, sequence,
-                          context);
+    LineDrawing drawing = extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines,
+                                         timings, sequence, context);
+    if (scene.paper_mm) drawing.paper_mm = *scene.paper_mm;
+    return drawing;
 }
 
 }  // namespace inkshade

@@ -246,7 +246,8 @@ void apply_override_unchecked(Style& style, const std::string& text) {
                      (drawn.empty() ? std::string("it draws none") : "it draws " + drawn) + ")");
 }
 
-// The top-level keys: description, background, base-color, smooth-angle, up-axis, mesh-colors.
+// The top-level keys: description, background, base-color, smooth-angle, up-axis, mesh-colors,
+// line-unit.
 void parse_top_level(const toml::table& root, const std::string& source, Style& style) {
     if (auto d = root["description"].value<std::string>()) style.description = *d;
     if (auto* n = root.get("background")) style.background = color_value(*n, source, "background");
@@ -269,6 +270,11 @@ void parse_top_level(const toml::table& root, const std::string& source, Style& 
         const std::optional<bool> use = n->value_exact<bool>();
         if (!use) throw InputError(source, "mesh-colors: expected true or false");
         if (!*use) style.shading.base_color_use = BaseColorUse::Only;
+    }
+    if (auto* n = root.get("line-unit")) {
+        const std::optional<std::string> unit = n->value<std::string>();
+        if (!unit || (*unit != "px" && *unit != "mm")) throw InputError(source, "line-unit: expected \"px\" or \"mm\"");
+        style.lines_in_mm = *unit == "mm";
     }
 }
 
@@ -352,7 +358,7 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
     }
     reject_unknown_keys(root,
-                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "light",
+                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "line-unit", "light",
                          "shading", "lines"},
                         source, "");
     Style style;
@@ -468,6 +474,7 @@ std::string format_style(const Style& style) {
     if (style.smooth_angle) out << "smooth-angle = " << format_number(*style.smooth_angle) << "\n";
     if (style.up_axis) out << "up-axis = " << toml_string(up_axis_name(*style.up_axis)) << "\n";
     if (style.shading.base_color_use == BaseColorUse::Only) out << "mesh-colors = false\n";
+    if (style.lines_in_mm) out << "line-unit = \"mm\"\n";
     if (style.light_color || style.ambient || style.light_intensity || style.light_decay || style.light_distance) {
         out << "\n[light]\n";
         if (style.light_color) out << "color = " << color_text(glm::vec4(*style.light_color, 1.0f)) << "\n";

@@ -144,9 +144,10 @@ TEST(OptionTable, JobHashesOfEarlierBatchesAreKept) {
         return std::string("no job ") + stem;
     };
     EXPECT_EQ(hash("sph/lambert/az120_el20"), "03e233d119332852");
-    // ink-vector's resolved style changed since (suggestive.min-length 4 -> 0, as rtsc): its
-    // pictures differ, so its jobs must render again; the other three styles are as they were.
-    EXPECT_EQ(hash("tor/ink-vector/az045_el20"), "56faf4c66650e302");
+    // ink-vector's resolved style changed since (suggestive.min-length 4 -> 0, as rtsc; then
+    // every object-space line type's new hidden-dash parameter, written out with the style): its
+    // jobs render again; the other three styles, without object-space lines, are as they were.
+    EXPECT_EQ(hash("tor/ink-vector/az045_el20"), "65a9f495ee92dbce");
     EXPECT_EQ(hash("knot/anime/az200_el-20"), "1ddf23c547647244");
     EXPECT_EQ(hash("tp3/gooch/az000_el00"), "bae75ab411d81d9b");
 }

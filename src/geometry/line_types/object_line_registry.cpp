@@ -97,6 +97,9 @@ void add_level_params(std::vector<ParamSpec>& params) {
     params.push_back(int_param("max-level", 0, 0, kMaxOcclusionLevel,
                                "highest occlusion level drawn; levels from 1 up go to dashed layers TYPE-hidden-N "
                                "(SVG and JSON only)"));
+    params.push_back(list_param("hidden-dash", {0.0f}, 8, 0.0f, 100000.0f,
+                                "dash pattern of the hidden layers (SVG): on, off, ... lengths in pixels; 0 = 3 "
+                                "and 2 times the stroke width"));
     params.push_back(bool_param("hidden", false,
                                 "also output every hidden level, as dashed layers TYPE-hidden-N (technical "
                                 "drawing convention; every max-level)"));
