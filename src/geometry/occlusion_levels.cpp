@@ -314,9 +314,12 @@ void RayScene::occlusion_levels(const ImageProjection& view, const OcclusionQuer
     }
     OcclusionContext ctx;
     rtcInitIntersectContext(&ctx.rtc);
-    // Samples come in mesh order (sorted by node key): neighbouring rays are nearly parallel,
-    // so Embree traces them as packets (about 15 % less time than one rtcOccluded1 each).
-    ctx.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    // One ray at a time through the stream (Embree's incoherent mode), not as packets: these
+    // rays graze surfaces near their ends and stop the filter at many hits, so a packet's lanes
+    // part early; single rays took 0.83 × the time of packets on the noisy knot's suggestive
+    // contours and 0.91 × on its contours, with identical results (docs/benchmarks.md,
+    // "A 40 ms view"); packets of samples in image order gained nothing either.
+    ctx.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     ctx.mesh = impl_->mesh;
     ctx.triangles = impl_->triangles;
     ctx.around = around;

@@ -157,9 +157,8 @@ struct Tester {
     Allowance allow;
 
     // The levels of many samples (kClipped outside the near/far range) as ray streams
-    // (rtcOccluded1M), in fixed blocks on TBB tasks: the same blocks, so the same ray packets,
-    // whatever the thread count. Coherent rays (a chain's nodes) trace faster as packets; the
-    // bisection's scattered rounds gain nothing, but go through here for the fixed blocks.
+    // (rtcOccluded1M, one ray at a time: occlusion_levels.cpp), in fixed blocks on TBB tasks:
+    // the same blocks whatever the thread count, so the results do not depend on it.
     void levels(const std::vector<Sample>& samples, std::vector<uint8_t>& out) const {
         constexpr size_t kBlock = 64;
         out.resize(samples.size());

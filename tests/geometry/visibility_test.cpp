@@ -1,11 +1,16 @@
 #include "geometry/visibility.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 #include <optional>
 
 #include "geometry/builtin_models.hpp"
+#include "geometry/normals.hpp"
 #include "inkshade/line_drawing.hpp"
 
 namespace inkshade::geometry {
@@ -323,6 +328,136 @@ TEST(Visibility, SharedAndCopiedVertexBuffersGiveTheSameAnswers) {
     }
     EXPECT_GT(hidden, 10);  // both sides of the question were asked
     EXPECT_LT(hidden, int(copied.positions.size() / 7) - 10);
+}
+
+// A sphere (radius 0.45) in front of the builtin torus (around z, R = 1, r = 0.4), seen from
+// above: lines across it at several depths are hidden by up to four surfaces.
+Mesh sphere_in_front_of_torus() {
+    Mesh m = builtin::torus();
+    Mesh ball = builtin::sphere(48, 96, 0.45f);
+    const uint32_t base = uint32_t(m.positions.size());
+    for (const glm::vec3& p : ball.positions) m.positions.push_back(p + glm::vec3(0.6f, 0.2f, 1.0f));
+    for (const glm::uvec3& t : ball.triangles) m.triangles.push_back(t + glm::uvec3(base));
+    m.normals = angle_weighted_vertex_normals(m);
+    return m;
+}
+
+// Straight lines on no face (node keys of vertices the mesh does not have), each a chain of
+// segments under a pixel long, across the scene at heights from in front of the sphere to
+// behind the torus: through the sphere, between it and the torus, and below the torus (none
+// grazes the torus, where a change of level could be thinner than the sampling).
+std::vector<LineSegment> lines_across(const ImageProjection& view) {
+    std::vector<LineSegment> out;
+    uint32_t key = 1000000;
+    for (const float z : {1.6f, 1.0f, 0.5f, -0.5f, -1.0f})
+        for (float y = -1.3f; y <= 1.31f; y += 0.1f) {
+            const glm::vec3 a(-1.6f, y, z), b(1.6f, y, z);
+            const glm::dvec3 pa = view.project(a), pb = view.project(b);
+            const int n = int(std::ceil(std::hypot(pa.x - pb.x, pa.y - pb.y) / 0.7));
+            for (int k = 0; k < n; ++k) {
+                LineSegment s;
+                s.a = a + (b - a) * (float(k) / float(n));
+                s.b = a + (b - a) * (float(k + 1) / float(n));
+                s.edge_a = edge_key(key + k, key + k + 5000000);
+                s.edge_b = edge_key(key + k + 1, key + k + 5000001);
+                out.push_back(s);
+            }
+            key += uint32_t(n) + 1;
+        }
+    return out;
+}
+
+VisibilitySplit split_on_threads(size_t threads, const RayScene& scene, const Mesh& mesh, const ImageProjection& view,
+                                 const std::vector<LineSegment>& segments, const VisibilityOptions& options) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return split_by_visibility(scene, mesh, view, segments, options);
+}
+
+bool same_parts(const std::vector<LineSegment>& x, const std::vector<LineSegment>& y) {
+    if (x.size() != y.size()) return false;
+    for (size_t i = 0; i < x.size(); ++i)
+        if (x[i].a != y[i].a || x[i].b != y[i].b || x[i].edge_a != y[i].edge_a || x[i].edge_b != y[i].edge_b)
+            return false;
+    return true;
+}
+
+TEST(Visibility, StreamedLevelsMatchOneRayPerSample) {
+    // split_by_visibility traces its samples in streams (rtcOccluded1M, one ray at a time
+    // inside Embree, in fixed blocks): a stream must count what a lone ray (rtcOccluded1)
+    // towards each of its points counts, the parts the split returns must have the level a lone
+    // ray gives in their middle, and one or two threads must give the same parts.
+    const Mesh mesh = sphere_in_front_of_torus();
+    const Camera camera = camera_at({0.4f, -1.5f, 5.0f}, {0, 1, 0});
+    const ImageProjection view(camera, kWidth, kHeight);
+    const RayScene scene(mesh);
+    const std::vector<LineSegment> lines = lines_across(view);
+    VisibilityOptions options;
+    options.count_levels_to = 5;
+    auto lone_level = [&](const glm::vec3& p) {
+        OcclusionQuery q;
+        q.point = p;
+        uint8_t level = 0;
+        scene.occlusion_levels(view, &q, 1, &level, options.count_levels_to);
+        return level;
+    };
+
+    std::vector<OcclusionQuery> queries;
+    for (const LineSegment& s : lines)
+        for (const float t : {0.0f, 0.5f}) queries.push_back({.point = s.a + t * (s.b - s.a)});
+    std::vector<uint8_t> streamed(queries.size());
+    scene.occlusion_levels(view, queries.data(), queries.size(), streamed.data(), options.count_levels_to);
+    size_t differ = 0;
+    int seen[6] = {};
+    for (size_t i = 0; i < queries.size(); ++i) {
+        differ += streamed[i] != lone_level(queries[i].point);
+        ++seen[std::min<int>(streamed[i], 5)];
+    }
+    EXPECT_EQ(differ, 0u) << "of " << queries.size() << " points";
+    for (const int level : {0, 1, 2, 4}) EXPECT_GT(seen[level], 100) << "points at level " << level;
+
+    const VisibilitySplit split = split_on_threads(1, scene, mesh, view, lines, options);
+    const VisibilitySplit split2 = split_on_threads(2, scene, mesh, view, lines, options);
+    EXPECT_TRUE(same_parts(split.visible, split2.visible));
+    EXPECT_TRUE(same_parts(split.hidden, split2.hidden));
+    EXPECT_EQ(split.hidden_levels, split2.hidden_levels);
+    // Per line (by its height y, z), its parts along x with their levels: the middle of each
+    // part more than a pixel from a change of level along its line must have the level a lone
+    // ray gives (nearer a change, a sliver under the 1 px sampling may lie).
+    std::map<std::pair<float, float>, std::vector<std::tuple<float, float, uint8_t>>> along;
+    auto add = [&](const LineSegment& part, uint8_t level) {
+        along[{part.a.y, part.a.z}].push_back({part.a.x, part.b.x, level});
+    };
+    for (const LineSegment& part : split.visible) add(part, 0);
+    for (size_t i = 0; i < split.hidden.size(); ++i) add(split.hidden[i], split.hidden_levels[i]);
+    size_t checked = 0, disagree = 0;
+    for (auto& [yz, parts] : along) {
+        std::sort(parts.begin(), parts.end());
+        std::vector<float> changes;
+        for (size_t i = 1; i < parts.size(); ++i)
+            if (std::get<2>(parts[i]) != std::get<2>(parts[i - 1])) changes.push_back(std::get<0>(parts[i]));
+        for (const auto& [x0, x1, level] : parts) {
+            const glm::vec3 mid(0.5f * (x0 + x1), yz.first, yz.second);
+            bool near_change = false;
+            for (const float x : changes)
+                near_change = near_change ||
+                              glm::length(glm::dvec2(view.project(mid) - view.project({x, yz.first, yz.second}))) < 1.0;
+            if (near_change) continue;
+            ++checked;
+            disagree += lone_level(mid) != level;
+        }
+    }
+    EXPECT_GT(checked, 300u);
+    EXPECT_EQ(disagree, 0u) << "of " << checked << " parts";
+
+    // The torus's and sphere's contours (fold walks, own-surface hits): the same on both counts.
+    const std::vector<LineSegment> contours = extract_contours(mesh, mesh.normals, camera);
+    options.contour = true;
+    const VisibilitySplit c1 = split_on_threads(1, scene, mesh, view, contours, options);
+    const VisibilitySplit c2 = split_on_threads(2, scene, mesh, view, contours, options);
+    EXPECT_FALSE(c1.hidden.empty());
+    EXPECT_TRUE(same_parts(c1.visible, c2.visible));
+    EXPECT_TRUE(same_parts(c1.hidden, c2.hidden));
+    EXPECT_EQ(c1.hidden_levels, c2.hidden_levels);
 }
 
 }  // namespace
