@@ -124,8 +124,8 @@ uint32_t corner_id(const Mesh& mesh, const VertexFaces& vf, const std::vector<ui
 // direction of its own and takes the smooth normal. Every other vertex has one fan, which takes
 // its smooth normal (auto_smooth).
 void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                 const std::vector<uint32_t>& fan_start, const uint32_t* corner_fan, const std::vector<uint32_t>& summed,
-                 NormalWeighting weighting, std::vector<glm::vec3>& normals) {
+                 const std::vector<uint32_t>& fan_start, const uint32_t* corner_fan,
+                 const std::vector<uint32_t>& summed, NormalWeighting weighting, std::vector<glm::vec3>& normals) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), kGrain), [&](const auto& range) {
         for (size_t v = range.begin(); v != range.end(); ++v)
             for (uint32_t id = fan_start[v]; id < fan_start[v + 1]; ++id)
@@ -144,7 +144,9 @@ void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm:
                 const bool again = i > vf.offsets[v] && vf.faces[i - 1] == f;  // the face's next corner at v
                 c = again ? c + 1 : 0;
                 while (t[c] != v) ++c;
-                sums[one_fan ? 0 : again ? corner_fan[i - 1] : corner_fan[i]] += corner_weight(mesh, f, c, weighting) * fn[f];
+                sums[one_fan ? 0
+                     : again ? corner_fan[i - 1]
+                             : corner_fan[i]] += corner_weight(mesh, f, c, weighting) * fn[f];
             }
             for (size_t j = 0; j < sums.size(); ++j) {
                 const float len = glm::length(sums[j]);

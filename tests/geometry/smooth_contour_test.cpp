@@ -52,8 +52,7 @@ std::vector<glm::dvec2> reference_contour(const Mesh& m, const std::vector<glm::
                                           const ImageProjection& view) {
     const glm::dvec3 eye(view.camera().eye);
     std::vector<double> g(m.positions.size());
-    for (size_t v = 0; v < g.size(); ++v)
-        g[v] = glm::dot(normals[v], glm::normalize(eye - glm::dvec3(m.positions[v])));
+    for (size_t v = 0; v < g.size(); ++v) g[v] = glm::dot(normals[v], glm::normalize(eye - glm::dvec3(m.positions[v])));
     std::vector<glm::dvec2> out;
     for (const glm::uvec3& t : m.triangles) {
         std::vector<glm::dvec3> ends;
@@ -82,8 +81,7 @@ double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 }
 
 // Share of `points` within `tolerance` pixels of some segment of `paths`.
-double share_near(const std::vector<glm::dvec2>& points, const std::vector<const LinePath*>& paths,
-                  double tolerance) {
+double share_near(const std::vector<glm::dvec2>& points, const std::vector<const LinePath*>& paths, double tolerance) {
     size_t near = 0;
     for (const glm::dvec2& p : points) {
         bool hit = false;
@@ -110,7 +108,8 @@ TEST(SmoothContour, CoarseCadPartDrawsTheVertexNormalsZeroCrossings) {
 
     LineExtractor extractor(loaded);
     const int size = 400;
-    for (const glm::vec3 eye : {glm::vec3(4.0f, 3.0f, 5.0f), glm::vec3(-5.0f, 1.0f, 0.5f), glm::vec3(1.0f, -6.0f, 3.0f)}) {
+    for (const glm::vec3 eye :
+         {glm::vec3(4.0f, 3.0f, 5.0f), glm::vec3(-5.0f, 1.0f, 0.5f), glm::vec3(1.0f, -6.0f, 3.0f)}) {
         Camera camera;
         camera.eye = eye;
         camera.target = {0.0f, 0.0f, 1.0f};
@@ -135,7 +134,8 @@ TEST(SmoothContour, CoarseCadPartDrawsTheVertexNormalsZeroCrossings) {
         std::vector<const LinePath*> reference_lines;
         for (const LinePath& path : reference_paths) reference_lines.push_back(&path);
         EXPECT_GE(share_near(reference, drawn, 1.0), 0.99) << "eye " << eye.x << " " << eye.y << " " << eye.z;
-        EXPECT_GE(share_near(drawn_points, reference_lines, 1.0), 0.99) << "eye " << eye.x << " " << eye.y << " " << eye.z;
+        EXPECT_GE(share_near(drawn_points, reference_lines, 1.0), 0.99)
+            << "eye " << eye.x << " " << eye.y << " " << eye.z;
     }
 }
 
