@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "geometry/hard_edges.hpp"
@@ -106,26 +107,53 @@ bool hard_edge_at(uint32_t v, const Mesh& mesh, const std::vector<uint8_t>& hard
     return false;
 }
 
-// Sums each fan's weighted face normals into sums[fan_start[v] + fan] and fills ids. A vertex
-// of one fan takes its smooth normal (auto_smooth), so its sum is skipped.
-void fan_sums(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-              const std::vector<uint32_t>& fan_start, const std::vector<uint32_t>& corner_fan,
-              NormalWeighting weighting, std::vector<glm::vec3>& sums, std::vector<glm::uvec3>& ids) {
+// Corner k of face f's shading normal id. A vertex of one fan has one id; at a vertex of
+// several, the face's fan is found by a binary search of its star (in face order); a face with
+// a repeated index is listed once per corner there, consecutively, and its corners share the
+// first listing's fan.
+uint32_t corner_id(const Mesh& mesh, const VertexFaces& vf, const std::vector<uint32_t>& fan_start,
+                   const uint32_t* corner_fan, uint32_t f, int k) {
+    const uint32_t v = mesh.triangles[f][k];
+    if (fan_start[v + 1] - fan_start[v] <= 1) return fan_start[v];
+    const uint32_t* at = std::lower_bound(vf.begin(v), vf.end(v), f);
+    return fan_start[v] + corner_fan[at - vf.faces.data()];
+}
+
+// Each fan's unit normal at the vertices of `summed` (those of several fans, and of one without
+// a smooth normal): its faces' weighted normals summed; a fan of degenerate faces has no
+// direction of its own and takes the smooth normal. Every other vertex has one fan, which takes
+// its smooth normal (auto_smooth).
+void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
+                 const std::vector<uint32_t>& fan_start, const uint32_t* corner_fan,
+                 const std::vector<uint32_t>& summed, NormalWeighting weighting, std::vector<glm::vec3>& normals) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), kGrain), [&](const auto& range) {
-        for (size_t v = range.begin(); v != range.end(); ++v) {
-            const bool one_fan = fan_start[v + 1] - fan_start[v] == 1 && v < mesh.normals.size();
+        for (size_t v = range.begin(); v != range.end(); ++v)
+            for (uint32_t id = fan_start[v]; id < fan_start[v + 1]; ++id)
+                normals[id] = v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0.0f, 0.0f, 1.0f);
+    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, summed.size(), 256), [&](const auto& range) {
+        std::vector<glm::vec3> sums;
+        for (size_t s = range.begin(); s != range.end(); ++s) {
+            const uint32_t v = summed[s];
+            sums.assign(fan_start[v + 1] - fan_start[v], glm::vec3(0.0f));
+            const bool one_fan = sums.size() == 1;  // corner_fan is not written there
             int c = -1;
             for (uint32_t i = vf.offsets[v]; i < vf.offsets[v + 1]; ++i) {
                 const uint32_t f = vf.faces[i];
                 const glm::uvec3 t = mesh.triangles[f];
-                // The face's next corner at v: a face with a repeated index is listed once per
-                // corner, consecutively, and its second listing shares the first one's fan.
-                const bool again = i > vf.offsets[v] && vf.faces[i - 1] == f;
+                const bool again = i > vf.offsets[v] && vf.faces[i - 1] == f;  // the face's next corner at v
                 c = again ? c + 1 : 0;
                 while (t[c] != v) ++c;
-                const uint32_t id = fan_start[v] + (again ? corner_fan[i - 1] : corner_fan[i]);
-                ids[f][c] = id;  // each (face, corner) is written by its vertex's task only
-                if (!one_fan) sums[id] += corner_weight(mesh, f, c, weighting) * fn[f];
+                sums[one_fan ? 0
+                     : again ? corner_fan[i - 1]
+                             : corner_fan[i]] += corner_weight(mesh, f, c, weighting) * fn[f];
+            }
+            for (size_t j = 0; j < sums.size(); ++j) {
+                const float len = glm::length(sums[j]);
+                if (len > 0.0f && std::isfinite(len))
+                    normals[fan_start[v] + j] = sums[j] / len;
+                else if (v >= mesh.normals.size())
+                    normals[fan_start[v] + j] = glm::vec3(0.0f, 0.0f, 1.0f);
             }
         }
     });
@@ -148,9 +176,11 @@ void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
     const std::vector<uint8_t> hard = hard_edge_flags(mesh, vf, fn, cos_limit);
     if (std::all_of(hard.begin(), hard.end(), [](uint8_t h) { return h == 0; })) return;
 
-    // Pass 1: fans per vertex. Pass 2: their normals, numbered after a prefix sum.
+    // Pass 1: fans per vertex, where a hard edge ends. Pass 2: their ids, numbered after a
+    // prefix sum, and normals. corner_fan is written at vertices of several fans only, so the
+    // pages of the rest are never touched.
     std::vector<uint32_t> fan_start(n + 1, 0);
-    std::vector<uint32_t> corner_fan(vf.faces.size());
+    const std::unique_ptr<uint32_t[]> corner_fan(new uint32_t[vf.faces.size()]);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kGrain), [&](const auto& range) {
         Scratch scratch;
         for (size_t v = range.begin(); v != range.end(); ++v) {
@@ -158,34 +188,29 @@ void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
             const uint32_t* star = vf.faces.data() + begin;
             if (!hard_edge_at(uint32_t(v), mesh, hard, star, k)) {
                 fan_start[v + 1] = k > 0 ? 1 : 0;
-                std::fill_n(corner_fan.begin() + begin, k, 0u);
                 continue;
             }
             fan_start[v + 1] = fans_at(uint32_t(v), mesh, fn, hard, star, k, scratch);
-            std::copy(scratch.fan.begin(), scratch.fan.end(), corner_fan.begin() + begin);
+            if (fan_start[v + 1] > 1) std::copy(scratch.fan.begin(), scratch.fan.end(), corner_fan.get() + begin);
         }
     });
+    std::vector<uint32_t> summed;  // vertices of several fans, and of one without a smooth normal
     bool any_split = false;
-    for (size_t v = 0; v < n && !any_split; ++v) any_split = fan_start[v + 1] > 1;
+    for (size_t v = 0; v < n; ++v) {
+        any_split |= fan_start[v + 1] > 1;
+        if (fan_start[v + 1] > 1 || (fan_start[v + 1] == 1 && v >= mesh.normals.size())) summed.push_back(uint32_t(v));
+    }
     if (!any_split) return;
     std::partial_sum(fan_start.begin(), fan_start.end(), fan_start.begin());
 
-    std::vector<glm::vec3> sums(fan_start[n], glm::vec3(0.0f));
     std::vector<glm::uvec3> ids(mesh.triangles.size());
-    fan_sums(mesh, vf, fn, fan_start, corner_fan, weighting, sums, ids);
-    for (size_t v = 0; v < n; ++v) {
-        const bool one_fan = fan_start[v + 1] - fan_start[v] == 1;
-        for (uint32_t id = fan_start[v]; id < fan_start[v + 1]; ++id) {
-            const float len = glm::length(sums[id]);
-            // A vertex of one fan (no hard edge at it) shades as without hard edges; a fan of
-            // degenerate faces has no direction of its own: the smooth normal.
-            const bool smooth = v < mesh.normals.size() && (one_fan || !(len > 0.0f && std::isfinite(len)));
-            sums[id] = smooth                             ? mesh.normals[v]
-                       : len > 0.0f && std::isfinite(len) ? sums[id] / len
-                                                          : glm::vec3(0.0f, 0.0f, 1.0f);
-        }
-    }
-    mesh.shading_normals = std::move(sums);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, ids.size(), kGrain), [&](const auto& range) {
+        for (size_t f = range.begin(); f != range.end(); ++f)
+            for (int k = 0; k < 3; ++k) ids[f][k] = corner_id(mesh, vf, fan_start, corner_fan.get(), uint32_t(f), k);
+    });
+    std::vector<glm::vec3> normals(fan_start[n]);
+    fan_normals(mesh, vf, fn, fan_start, corner_fan.get(), summed, weighting, normals);
+    mesh.shading_normals = std::move(normals);
     mesh.shading_normal_ids = std::move(ids);
 }
 

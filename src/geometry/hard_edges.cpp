@@ -1,6 +1,8 @@
 // The second test runs only on the candidates of the first, once per edge (by its lower face),
-// so a mesh with few sharp edges pays for few. Every loop writes only its own face's entry, so
-// the result does not depend on the thread count.
+// so a mesh with few sharp edges pays for few. The first test itself runs only on the faces
+// that may have a hard edge (quiet_faces below), and the second stops as soon as a bound on its
+// result decides it. Every loop writes only its own face's (or vertex's) entry, so the result
+// does not depend on the thread count.
 #include "geometry/hard_edges.hpp"
 
 #include <tbb/blocked_range.h>
@@ -33,6 +35,24 @@ struct SecondTestScratch {  // per-task buffers of sides_stand_apart
     std::vector<uint32_t> around;
     std::vector<std::pair<int, float>> sides;  // per face of `around`: side, area
 };
+
+// The sides' scatter summed: each side's area-weighted mean angle of its faces from its mean
+// `mean[s]`; with `bound`, each angle φ replaced by √(2 − 2 cos φ), which is at most φ.
+float scatter_of(const std::vector<uint32_t>& around, const std::vector<std::pair<int, float>>& sides,
+                 const std::vector<glm::vec3>& fn, const glm::vec3 mean[2], bool bound) {
+    float scatter[2] = {0.0f, 0.0f}, weight[2] = {0.0f, 0.0f};
+    for (size_t i = 0; i < around.size(); ++i) {
+        const auto [side, area] = sides[i];
+        if (side == 2) continue;
+        const float c = std::clamp(glm::dot(fn[around[i]], mean[side]), -1.0f, 1.0f);
+        scatter[side] += area * (bound ? std::sqrt(2.0f - 2.0f * c) : std::acos(c));
+        weight[side] += area;
+    }
+    float spread = 0.0f;
+    for (int s = 0; s < 2; ++s)
+        if (weight[s] > 0.0f && std::isfinite(weight[s])) spread += scatter[s] / weight[s];
+    return spread;
+}
 
 // The second test for the candidate edge (v, w) between faces a and b (hard_edges.hpp).
 bool sides_stand_apart(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, uint32_t a,
@@ -72,21 +92,68 @@ bool sides_stand_apart(const Mesh& mesh, const VertexFaces& vf, const std::vecto
         const float len = glm::length(sum[s]);
         mean[s] = len > 0.0f && std::isfinite(len) ? sum[s] / len : (s == 0 ? na : nb);
     }
-    // The scatter of each side about its mean: the area-weighted mean angle.
-    float scatter[2] = {0.0f, 0.0f}, weight[2] = {0.0f, 0.0f};
-    for (size_t i = 0; i < around.size(); ++i) {
-        const auto [side, area] = sides[i];
-        if (side == 2) continue;
-        scatter[side] += area * std::acos(std::clamp(glm::dot(fn[around[i]], mean[side]), -1.0f, 1.0f));
-        weight[side] += area;
-    }
-    float spread = 0.0f;
-    for (int s = 0; s < 2; ++s)
-        if (weight[s] > 0.0f && std::isfinite(weight[s])) spread += scatter[s] / weight[s];
-    // The sides must stand apart by more than the angle plus their scatter: noise that tilts
-    // faces by some degrees blurs a crease by as much.
+    // The sides must stand apart by more than the angle plus their scatter (below): noise that
+    // tilts faces by some degrees blurs a crease by as much. The scatter is not negative, so a
+    // gap within the angle decides at once (most of a scan's candidates).
     const float gap = std::acos(std::clamp(glm::dot(mean[0], mean[1]), -1.0f, 1.0f));
-    return gap - spread > std::acos(std::clamp(cos_limit + 1e-6f, -1.0f, 1.0f));
+    const float limit = std::acos(std::clamp(cos_limit + 1e-6f, -1.0f, 1.0f));
+    if (!(gap > limit)) return false;
+    // Then a lower bound of the scatter without acos (2 sin(φ/2) = √(2 − 2 cos φ) ≤ φ), with a
+    // margin far above float rounding; only what it leaves open pays for the exact one.
+    if (gap - scatter_of(around, sides, fn, mean, true) <= limit - 1e-4f) return false;
+    return gap - scatter_of(around, sides, fn, mean, false) > limit;
+}
+
+// A vertex index scrambled (splitmix64's finaliser), so that sums of them cancel only when the
+// same indices come in and go out.
+uint64_t mix(uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+// Which faces the first test must see (1) and which not (0). Two faces that share a vertex
+// and whose normals each lie within half the angle of its normal meet at no more than the
+// angle (the triangle inequality of angles), so an edge between two such "calm" faces is no
+// candidate: only edges at a corner of a face that is not calm may be. Edges of three or more
+// faces: around a vertex where every edge has two faces, wound alike, each neighbour is once the
+// next corner and once the previous one of the faces there, so a hash sum of next minus
+// previous corners vanishes; at a border, a non-manifold edge or a winding flip it does not
+// (short of a hash collision, or an edge of four faces two each way among calm faces). Faces
+// at such vertices are seen too. Without one unit normal per vertex every face is seen.
+std::vector<uint8_t> faces_to_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
+                                   float cos_limit) {
+    const size_t faces = mesh.triangles.size(), n = mesh.positions.size();
+    const float half = 0.5f * std::acos(std::clamp(cos_limit, -1.0f, 1.0f)) - 1e-3f;  // margin for rounding
+    if (mesh.normals.size() != n || !(half > 0.0f)) return std::vector<uint8_t>(faces, 1);
+    const float cos_half = std::cos(half);
+    std::vector<uint8_t> restless(faces);  // not calm
+    for_each_index(faces, [&](size_t f) {
+        const glm::uvec3 t = mesh.triangles[f];
+        bool calm = fn[f] != glm::vec3(0.0f);
+        for (int k = 0; k < 3 && calm; ++k) {
+            const glm::vec3 nv = mesh.normals[t[k]];
+            calm = glm::dot(fn[f], nv) >= cos_half * glm::length(nv);
+        }
+        restless[f] = !calm;
+    });
+    std::vector<uint8_t> busy(n);
+    for_each_index(n, [&](size_t v) {
+        uint64_t turn = 0;  // Σ h(next) − h(previous), wrapping
+        bool restless_star = false;
+        for (const uint32_t* g = vf.begin(uint32_t(v)); g != vf.end(uint32_t(v)); ++g) {
+            const glm::uvec3 t = mesh.triangles[*g];
+            const int k = t.x == v ? 0 : (t.y == v ? 1 : 2);
+            turn += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
+            restless_star |= restless[*g] != 0;
+        }
+        busy[v] = restless_star || turn != 0;
+    });
+    for_each_index(faces, [&](size_t f) {
+        const glm::uvec3 t = mesh.triangles[f];
+        restless[f] = busy[t.x] | busy[t.y] | busy[t.z];
+    });
+    return restless;
 }
 
 // First test per face edge: hard bits for edges of three or more faces, candidate bits for
@@ -94,8 +161,10 @@ bool sides_stand_apart(const Mesh& mesh, const VertexFaces& vf, const std::vecto
 // edge is a candidate.
 bool first_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, float cos_limit,
                 std::vector<uint8_t>& flags) {
+    const std::vector<uint8_t> seen = faces_to_test(mesh, vf, fn, cos_limit);
     std::atomic<bool> any{false};
     for_each_index(mesh.triangles.size(), [&](size_t f) {
+        if (!seen[f]) return;  // flags[f] stays 0
         const glm::uvec3 t = mesh.triangles[f];
         uint8_t bits = 0;
         for (int k = 0; k < 3; ++k) {
