@@ -48,10 +48,19 @@ struct LineLayer {
     std::vector<LinePath> hidden;  // only when the type's "hidden" parameter asks for them
 };
 
+// Where the faces of one material are visible in the image (LineExtractor::fills): the SVG's
+// fills under the strokes.
+struct FillRegion {
+    uint32_t material = 0;                      // index into the mesh's materials
+    glm::vec3 color{1.0f};                      // its diffuse colour; without materials the style's base colour
+    std::vector<std::vector<glm::vec2>> rings;  // pixels; outlines and holes, filled even-odd
+};
+
 struct LineDrawing {
     int width = 0, height = 0;      // image size in pixels (the SVG viewBox)
     glm::vec2 paper_mm{0.0f};       // a drawing sheet's size in mm (the SVG's size); 0: none
     std::vector<LineLayer> layers;  // one per object-space line type, in the style's order
+    std::vector<FillRegion> fills;  // under the strokes (--svg-fill); empty: none
 };
 
 // One layer's strokes of a frame as the next frame of a sequence matches them: the chains (before
@@ -116,6 +125,12 @@ public:
     LineDrawing draw(const Camera& camera, int width, int height, const std::vector<LineSettings>& lines,
                      std::vector<LineTiming>* timings = nullptr, StrokeSequence* sequence = nullptr,
                      const LineContext& context = {});
+
+    // Where each material's faces are visible in this view, exactly (hidden-surface removal by
+    // polygon clipping, geometry/visible_fills.hpp), cut by the context's section plane; the
+    // SVG writer fills them under the strokes (--svg-fill). `base_color` without materials.
+    std::vector<FillRegion> fills(const Camera& camera, int width, int height, const LineContext& context,
+                                  glm::vec3 base_color);
 
     // Radial curvature κr per mesh vertex for this view (1/world length; DeCarlo et al. 2003:
     // the normal curvature along the view vector projected onto the tangent plane), as the

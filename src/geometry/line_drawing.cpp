@@ -25,6 +25,7 @@
 #include "geometry/stroke_style.hpp"
 #include "geometry/suggestive_contours.hpp"
 #include "geometry/visibility.hpp"
+#include "geometry/visible_fills.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/line_drawing.hpp"
 
@@ -372,6 +373,11 @@ LineExtractor::~LineExtractor() = default;
 const BoundingBox& LineExtractor::bounds() {
     if (!impl_->bounds) impl_->bounds = impl_->data.mesh().bounds();
     return *impl_->bounds;
+}
+
+std::vector<FillRegion> LineExtractor::fills(const Camera& camera, int width, int height, const LineContext& context,
+                                             glm::vec3 base_color) {
+    return geometry::visible_fills(impl_->data.mesh(), camera, width, height, context.section, base_color);
 }
 
 void LineExtractor::release_mesh_data() {

@@ -344,6 +344,25 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
     out += "</g>\n";
 }
 
+// The visible faces' regions, one path per material (outlines and holes, even-odd), in a
+// layer under the strokes.
+void write_fills(std::string& out, const std::vector<FillRegion>& fills) {
+    if (fills.empty()) return;
+    out += "<g id=\"fills\" inkscape:groupmode=\"layer\" inkscape:label=\"fills\" stroke=\"none\" "
+           "fill-rule=\"evenodd\">\n";
+    for (const FillRegion& region : fills) {
+        std::string d;
+        for (const std::vector<glm::vec2>& ring : region.rings) {
+            for (size_t i = 0; i < ring.size(); ++i)
+                d += (i == 0 ? (d.empty() ? "M" : " M") : " L") + number(ring[i].x) + " " + number(ring[i].y);
+            d += " Z";
+        }
+        out += "<path id=\"fill-" + std::to_string(region.material) + "\" fill=\"" + hex_color(region.color) +
+               "\" d=\"" + d + "\"/>\n";
+    }
+    out += "</g>\n";
+}
+
 }  // namespace
 
 std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const SvgOptions& options) {
@@ -362,6 +381,7 @@ std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const S
         out += "<rect id=\"background\" x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
                hex_color(glm::vec3(background)) + "\"" +
                (background.a < 1.0f ? " fill-opacity=\"" + number(background.a) + "\"" : std::string()) + "/>\n";
+    write_fills(out, drawing.fills);
     // Each type's hidden layers (one per occlusion level that has paths, TYPE-hidden-N) go
     // below its visible one, the deepest lowest.
     for (const LineLayer& layer : drawing.layers) {

@@ -207,6 +207,11 @@ void add_projection(std::vector<OptionSpec>& t) {
                               "view whose extent the scale gives",
                       .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
                      [](auto& r) -> auto& { return r.drawing_scale; }));
+    t.push_back(bind({.name = "svg-fill", .kind = K::Flag,
+                      .help = "the SVG fills the visible faces with their material's colour under the strokes, "
+                              "computed exactly from the visible polygons (docs/lines.md)",
+                      .fronts = kScene | kBatch | kPython, .hash = HashUse::ImageWhenSet},
+                     [](auto& r) -> auto& { return r.svg_fill; }));
     OptionSpec up_axis = bind_choice(
         {.name = "up-axis", .kind = K::Choice, .value = "AXIS",
          .help = "the model's up axis: y (glTF, three.js, most OBJ), z (many CAD and Blender exports), x, -x, -y or "

@@ -351,6 +351,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.file_camera = r.file_camera;
     scene.size_from_camera = r.size_from_camera;
     scene.lights = r.lights;
+    scene.svg_fill = r.svg_fill;
     apply_drawing_sheet(r, scene);
     return scene;
 }
@@ -404,6 +405,9 @@ LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const
     LineDrawing drawing = extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines,
                                          timings, sequence, context);
     if (scene.paper_mm) drawing.paper_mm = *scene.paper_mm;
+    if (scene.svg_fill)
+        drawing.fills = extractor.fills(camera, scene.options.width, scene.options.height, context,
+                                        scene.style.shading.base_color);
     return drawing;
 }
 

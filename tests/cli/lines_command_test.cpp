@@ -436,5 +436,47 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     }
 }
 
+// --svg-fill: the visible faces' region (geometry/visible_fills.hpp) in a `fills` layer under
+// the strokes, filled with the style's base colour on a mesh without materials; the sphere's
+// region spans its outline, as the contour does.
+TEST(LinesCommand, SvgFillUnderTheStrokes) {
+    TempDir dir;
+    auto r = run_cli("lines builtin:sphere --size 200x200 --lines contour --base-color \"#336699\" --svg-fill -o " +
+                     dir.file("f.svg") + " --lines-json " + dir.file("f.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = slurp(dir.file("f.svg"));
+    const size_t fills = svg.find("<g id=\"fills\""), contour = svg.find("<g id=\"contour\"");
+    ASSERT_NE(fills, std::string::npos);
+    ASSERT_NE(contour, std::string::npos);
+    EXPECT_LT(fills, contour) << "fills go under the strokes";
+    const size_t path = svg.find("<path id=\"fill-0\" fill=\"#336699\" d=\"M", fills);
+    ASSERT_NE(path, std::string::npos) << svg.substr(fills, 300);
+    // The fill's x extent is the contour's, within a pixel.
+    auto extent = [](const std::string& d) {
+        std::vector<float> xs;
+        std::istringstream in(d);
+        std::string token;
+        bool x = true;
+        while (in >> token) {
+            if (token == "M" || token == "L" || token == "Z") continue;
+            if (token[0] == 'M' || token[0] == 'L') token = token.substr(1);
+            if (x) xs.push_back(std::stof(token));
+            x = !x;
+        }
+        return std::pair(*std::min_element(xs.begin(), xs.end()), *std::max_element(xs.begin(), xs.end()));
+    };
+    const size_t d = svg.find(" d=\"", path) + 4;
+    const auto [lo, hi] = extent(svg.substr(d, svg.find('"', d) - d));
+    const auto json = nlohmann::json::parse(slurp(dir.file("f.json")));
+    float clo = 1e9f, chi = -1e9f;
+    for (const auto& p : json["layers"][0]["paths"])
+        for (const auto& q : p["points"]) clo = std::min(clo, q[0].get<float>()), chi = std::max(chi, q[0].get<float>());
+    EXPECT_NEAR(lo, clo, 1.0f);
+    EXPECT_NEAR(hi, chi, 1.0f);
+    r = run_cli("lines builtin:sphere --size 200x200 --lines contour -o " + dir.file("n.svg"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir.file("n.svg")).find("id=\"fills\""), std::string::npos);
+}
+
 }  // namespace
 }  // namespace inkshade::test

@@ -35,6 +35,7 @@ std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Me
     m->shading_normal_ids = mesh.shading_normal_ids;
     m->shading_normals = mesh.shading_normals;
     m->face_materials = mesh.face_materials;
+    m->materials = mesh.materials;  // their colours fill the SVG (--svg-fill)
     ensure_vertex_normals(*m);
     return m;
 }
@@ -58,7 +59,8 @@ MeshLineData::MeshLineData(Mesh&& mesh) {
     lines.shading_normal_ids = std::move(mesh.shading_normal_ids);
     lines.shading_normals = std::move(mesh.shading_normals);
     lines.face_materials = std::move(mesh.face_materials);  // material-boundary
-    mesh = Mesh();  // colours, uvs and the materials themselves are not needed here
+    lines.materials = std::move(mesh.materials);            // their colours fill the SVG
+    mesh = Mesh();  // colours and uvs are not needed here
     reserve_embree_padding(lines.positions);
     ensure_vertex_normals(lines);
     mesh_ = std::make_shared<const Mesh>(std::move(lines));
