@@ -223,7 +223,7 @@ TEST(Aov, LineMasksAreTheDrawnLines) {
 }
 
 // Two spheres side by side, objects "L" (x < 0) and "R".
-Mesh two_spheres() {
+Mesh two_sphere_objects() {
     Mesh m;
     m.object_names = {"L", "R"};
     for (uint32_t part = 0; part < 2; ++part) {
@@ -242,7 +242,7 @@ Mesh two_spheres() {
 // Each line set's mask holds its lines alone: the contours of the sphere it selects, drawn where
 // the image draws them, and nothing on the other sphere (Pencil+ 4's line set IDs).
 TEST(Aov, LineSetMasksHoldEachSetsLinesAlone) {
-    const Mesh mesh = two_spheres();
+    const Mesh mesh = two_sphere_objects();
     shared_renderer().set_mesh(mesh);
     SceneRequest r;
     r.model = "builtin:sphere";
