@@ -222,25 +222,28 @@ TEST(Aov, LineMasksAreTheDrawnLines) {
     }
 }
 
-// Two spheres side by side, objects "L" (x < 0) and "R".
+// Two spheres side by side, objects "L" (x < 0) and "R", materials "left" and "right".
 Mesh two_sphere_objects() {
     Mesh m;
     m.object_names = {"L", "R"};
+    m.materials = {Material{.name = "left"}, Material{.name = "right"}};
     for (uint32_t part = 0; part < 2; ++part) {
         const Mesh s = builtin::sphere(32, 64);
         const auto base = uint32_t(m.positions.size());
-        for (const glm::vec3& p : s.positions) m.positions.push_back(p + glm::vec3(part == 0 ? -1.5f : 1.5f, 0, 0));
+        for (const glm::vec3& p : s.positions) m.positions.push_back(p + glm::vec3(part == 0 ? -2.5f : 2.5f, 0, 0));
         for (const glm::vec3& n : s.normals) m.normals.push_back(n);
         for (const glm::uvec3& t : s.triangles) {
             m.triangles.push_back(t + glm::uvec3(base));
             m.face_objects.push_back(part);
+            m.face_materials.push_back(part);
         }
     }
     return m;
 }
 
-// Each line set's mask holds its lines alone: the contours of the sphere it selects, drawn where
-// the image draws them, and nothing on the other sphere (Pencil+ 4's line set IDs).
+// Each line set's mask holds its lines alone: the contours of the sphere it selects (by object,
+// by material: the renderer keeps the material names), and nothing on the other sphere
+// (Pencil+ 4's line set IDs).
 TEST(Aov, LineSetMasksHoldEachSetsLinesAlone) {
     const Mesh mesh = two_sphere_objects();
     shared_renderer().set_mesh(mesh);
@@ -250,7 +253,7 @@ TEST(Aov, LineSetMasksHoldEachSetsLinesAlone) {
     r.style_data = parse_style(
         "[shading]\nmodel = \"lambert\"\n"
         "[[lineset]]\nname = \"left\"\nobjects = \"L\"\n[[lineset.lines]]\ntype = \"contour\"\nwidth = 2.0\n"
-        "[[lineset]]\nname = \"right\"\nobjects = \"R\"\n[[lineset.lines]]\ntype = \"contour\"\nwidth = 2.0\n",
+        "[[lineset]]\nname = \"right\"\nmaterials = \"right\"\n[[lineset.lines]]\ntype = \"contour\"\nwidth = 2.0\n",
         "sets.toml");
     r.lineset_ids = true;
     const Scene scene = make_scene(r);

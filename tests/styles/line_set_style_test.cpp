@@ -72,7 +72,7 @@ TEST(LineSetStyle, SetsAreFlattenedInOrderWithTheirSelectionAndDefaults) {
 
 TEST(LineSetStyle, RoundTripsThroughItsFile) {
     const Style s = parse_style(std::string(kHeader) + kTwoSets, "sets.toml");
-    const Style back = parse_style(format_style(s), "saved.toml");
+    const Style back = parse_style(format_style(s), "sets.toml");  // the same name: format_style writes it
     ASSERT_EQ(back.lines.size(), s.lines.size());
     for (size_t i = 0; i < s.lines.size(); ++i) {
         EXPECT_EQ(back.lines[i].type, s.lines[i].type);
