@@ -169,7 +169,8 @@ py::array owning_array(std::vector<T>&& values, std::vector<py::ssize_t> shape) 
 }
 
 // render(aov=[...]): {"image": ..., "depth": float32 (h, w), "normal": float32 (h, w, 3), "id" and
-// "material": uint32 (h, w), "mask" and "lines-TYPE": uint8 (h, w), "camera": the camera file's dict}.
+// "material": uint32 (h, w), "mask", "lines-TYPE" (or "lines-SET-TYPE") and "lineset-SET": uint8 (h, w),
+// "camera": the camera file's dict}.
 py::dict aov_dict(Image&& image, AovImages&& aovs, AovSet set, const CameraRecord& camera) {
     const py::ssize_t h = aovs.height, w = aovs.width;
     py::dict out;
@@ -179,7 +180,10 @@ py::dict aov_dict(Image&& image, AovImages&& aovs, AovSet set, const CameraRecor
     if (set.contains(Aov::Id)) out["id"] = owning_array(std::move(aovs.id), {h, w});
     if (set.contains(Aov::Material)) out["material"] = owning_array(std::move(aovs.material), {h, w});
     if (set.contains(Aov::Mask)) out["mask"] = owning_array(std::move(aovs.mask), {h, w});
-    for (LineMask& m : aovs.lines) out[py::str("lines-" + m.type)] = owning_array(std::move(m.pixels), {h, w});
+    for (LineMask& m : aovs.lines)
+        out[py::str(line_mask_name(m.lineset, m.type))] = owning_array(std::move(m.pixels), {h, w});
+    for (LineSetMask& m : aovs.linesets)
+        out[py::str("lineset-" + m.lineset)] = owning_array(std::move(m.pixels), {h, w});
     out["camera"] = py::module_::import("json").attr("loads")(format_camera_json(camera));
     return out;
 }
@@ -195,6 +199,7 @@ py::list to_python(const LineDrawing& drawing) {
         }
         py::dict d;
         d["type"] = layer.settings.type;
+        d["lineset"] = layer.settings.lineset;
         d["points"] = points;
         d["depth"] = py::array_t<float>(py::ssize_t(path.depth.size()), path.depth.data());
         d["strength"] = py::array_t<float>(py::ssize_t(path.strength.size()), path.strength.data());
@@ -476,8 +481,8 @@ void def_renderer(py::module_& m) {
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
-            ("Object-space polylines, as `inkshade lines` draws them: a list of {type, points (n,2) pixels, depth, "
-             "strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels. Keywords:" +
+            ("Object-space polylines, as `inkshade lines` draws them: a list of {type, lineset, points (n,2) pixels, "
+             "depth, strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels. Keywords:" +
              keyword_doc(kPython))
                 .c_str())
         .def(

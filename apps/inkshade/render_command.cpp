@@ -22,10 +22,17 @@ namespace inkshade::cli {
 
 namespace {
 
-std::vector<std::string> line_types_of(const Scene& scene) {
-    std::vector<std::string> types;
-    for (const LineSettings& l : scene.style.lines) types.push_back(l.type);
-    return types;
+std::vector<std::string> line_masks_of(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const LineSettings& l : scene.style.lines) names.push_back(line_mask_name(l.lineset, l.type));
+    return names;
+}
+
+std::vector<std::string> line_sets_of(const Scene& scene) {
+    std::vector<std::string> names = line_set_names(scene.style.lines);
+    for (std::string& n : names)
+        if (n.empty()) n = kDefaultLineSet;
+    return names;
 }
 
 struct RenderArgs {
@@ -61,7 +68,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     // The renderer keeps what lines need (no second copy). One image: object-space lines are
     // extracted before the GL upload and their data freed first (MeshUse::OneFrame).
     // Line masks render a frame a line type: the line data is kept for them (ManyFrames).
-    const bool many_frames = args.timing > 0 || scene.aovs.contains(Aov::Lines);
+    const bool many_frames = args.timing > 0 || scene.aovs.contains(Aov::Lines) || scene.aovs.contains(Aov::LineSets);
     renderer.set_mesh(std::move(mesh), many_frames ? MeshUse::ManyFrames : MeshUse::OneFrame);
     AovImages aovs;
     Image image = scene.aovs.empty() ? render_scene(renderer, scene, camera, light)
@@ -104,7 +111,8 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     } catch (...) {
         std::error_code ec;
         std::filesystem::remove(args.output, ec);
-        for (const std::string& name : aov_file_names(args.output, scene.aovs, line_types_of(scene)))
+        for (const std::string& name :
+             aov_file_names(args.output, scene.aovs, line_masks_of(scene), line_sets_of(scene)))
             std::filesystem::remove(std::filesystem::path(args.output).parent_path() / name, ec);
         throw;
     }

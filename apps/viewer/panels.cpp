@@ -74,13 +74,48 @@ void style_panel(ViewerSession& s) {
     if (ImGui::ColorEdit4("background", &style.background.x)) s.changed();
 }
 
+// What a line set selects, in the style file's words.
+std::string selection_text(const FaceSelection& f) {
+    std::string out;
+    const auto list = [&](const char* key, const std::vector<std::string>& names) {
+        if (names.empty()) return;
+        out += std::string(out.empty() ? "" : ", ") + key + " ";
+        for (size_t i = 0; i < names.size(); ++i) out += (i ? "|" : "") + names[i];
+    };
+    list("objects", f.objects);
+    list("materials", f.materials);
+    if (f.face_mark)
+        out += std::string(out.empty() ? "" : ", ") + "face-mark " +
+               (*f.face_mark < 0 ? "any" : std::to_string(*f.face_mark));
+    if (out.empty()) out = "every face";
+    return f.invert ? "not (" + out + ")" : out;
+}
+
+// The style's line sets (docs/styles.md), each with its selection and its lines' parameters.
+void line_sets_panel(ViewerSession& s) {
+    std::vector<LineSettings>& lines = s.scene.style.lines;
+    for (const std::string& set : line_set_names(lines)) {
+        if (set.empty()) continue;
+        const auto first =
+            std::find_if(lines.begin(), lines.end(), [&](const LineSettings& l) { return l.lineset == set; });
+        if (!ImGui::TreeNode(("line set " + set).c_str())) continue;
+        ImGui::TextWrapped("%s", selection_text(first->faces).c_str());
+        for (LineSettings& l : lines) {
+            if (l.lineset != set || !ImGui::TreeNode((set + "/" + l.type).c_str(), "%s", l.type.c_str())) continue;
+            if (param_widgets(line_type(l.type).params, l.params)) s.changed();
+            ImGui::TreePop();
+        }
+        ImGui::TreePop();
+    }
+}
+
 void lines_panel(ViewerSession& s) {
     if (!ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) return;
     std::vector<LineSettings>& lines = s.scene.style.lines;
     const std::vector<const LineType*> types = line_types();
     for (size_t i = 0; i < types.size(); ++i) {
-        auto it =
-            std::find_if(lines.begin(), lines.end(), [&](const LineSettings& l) { return l.type == types[i]->name; });
+        auto it = std::find_if(lines.begin(), lines.end(),
+                               [&](const LineSettings& l) { return l.type == types[i]->name && l.lineset.empty(); });
         bool on = it != lines.end();
         const std::string label = (i < 9 ? std::to_string(i + 1) + "  " : "   ") + types[i]->name;
         if (ImGui::Checkbox(label.c_str(), &on)) s.toggle_line_type(i);
@@ -93,6 +128,7 @@ void lines_panel(ViewerSession& s) {
             ImGui::PopID();
         }
     }
+    line_sets_panel(s);
 }
 
 void light_widgets(ViewerSession& s) {

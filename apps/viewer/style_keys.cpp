@@ -24,12 +24,16 @@ Style next_shading_model_style(const Style& style) {
 void toggle_line_type(Style& style, size_t index) {
     const std::vector<const LineType*> types = line_types();
     if (index >= types.size()) return;
+    // The style's own [[lines]]; its line sets' lines (after them) stay as the file has them.
     auto it = std::find_if(style.lines.begin(), style.lines.end(),
-                           [&](const LineSettings& l) { return l.type == types[index]->name; });
-    if (it != style.lines.end())
+                           [&](const LineSettings& l) { return l.type == types[index]->name && l.lineset.empty(); });
+    if (it != style.lines.end()) {
         style.lines.erase(it);
-    else
-        style.lines.push_back({types[index]->name, {}});
+        return;
+    }
+    const auto sets =
+        std::find_if(style.lines.begin(), style.lines.end(), [](const LineSettings& l) { return !l.lineset.empty(); });
+    style.lines.insert(sets, LineSettings{types[index]->name, {}});
 }
 
 }  // namespace inkshade::viewer

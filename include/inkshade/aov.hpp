@@ -22,10 +22,12 @@ enum class Aov : uint8_t {
     Material,  // uint32: material index + 1 (1 for a mesh without materials), 0 = background
     Mask,      // uint8: the fraction of the pixel the model covers (MSAA coverage)
     Lines,     // uint8: one mask per line type the image draws, antialiased
+    LineSets,  // uint8: one mask per line set the image draws (its lines together), antialiased
     Camera,    // OUT.camera.json alone (every other AOV writes it too)
 };
 
-// The AOV names in Aov's order ("depth", "normal", "id", "material", "mask", "lines", "camera").
+// The AOV names in Aov's order ("depth", "normal", "id", "material", "mask", "lines",
+// "lineset-ids", "camera").
 const std::vector<std::string>& aov_names();
 const char* aov_name(Aov aov);
 // The AOV called `name` (any case), or nothing.
@@ -56,6 +58,19 @@ std::string format_aov_set(AovSet set);
 struct LineMask {
     std::string type;             // the line type ("contour", "hull", ...)
     std::vector<uint8_t> pixels;  // width x height, 255 = fully covered by the line
+    std::string lineset;          // its line set ("" = the style's own [[lines]])
+};
+
+// A line's mask name: "lines-TYPE", or "lines-SET-TYPE" for a line of line set SET.
+std::string line_mask_name(const std::string& lineset, const std::string& type);
+
+// The line set of the style's own [[lines]] (every face) as masks and files name it.
+inline constexpr const char* kDefaultLineSet = "default";
+
+// One line set's lines together (Pencil+ 4's line set ID output).
+struct LineSetMask {
+    std::string lineset;          // its name (kDefaultLineSet for the style's own [[lines]])
+    std::vector<uint8_t> pixels;  // width x height, 255 = fully covered by its lines
 };
 
 // The AOVs of one image, each width x height values row-major, top row first (as Image); a
@@ -66,7 +81,8 @@ struct AovImages {
     std::vector<float> normal;  // 3 per pixel; (0, 0, 0) on the background
     std::vector<uint32_t> id, material;
     std::vector<uint8_t> mask;
-    std::vector<LineMask> lines;  // in the order the style draws its line types
+    std::vector<LineMask> lines;        // in the order the style draws its line types
+    std::vector<LineSetMask> linesets;  // in the order the style draws its line sets
 };
 
 // What a camera file records: the camera as framed, the image it made and the model around it.
@@ -88,14 +104,17 @@ std::string aov_path(const std::string& image_path, const std::string& aov, cons
 // Implemented by io. Writes `set`'s files beside `image_path`, each atomically: depth
 // (.depth.exr, float32 channel Z), normal (.normal.png, RGB 16 bits, n * 0.5 + 0.5), id and
 // material (.id.png, .material.png, gray 16 bits; larger ids are clamped to 65535), mask (.mask.png,
-// gray 8 bits), lines (.lines-TYPE.png each, gray 8 bits) and, for any set, the camera file
+// gray 8 bits), lines (.lines-TYPE.png or .lines-SET-TYPE.png each, gray 8 bits), lineset-ids
+// (.lineset-SET.png each, gray 8 bits) and, for any set, the camera file
 // (.camera.json). Returns the file names written (without directories), in that order. Throws
 // RuntimeError("FILE: reason").
 std::vector<std::string> write_aov_files(const std::string& image_path, AovSet set, const AovImages& images,
                                          const CameraRecord& camera);
 
-// The file names write_aov_files writes for `set` (line masks: one for each of `line_types`).
+// The file names write_aov_files writes for `set` (line masks: one for each of `line_masks`,
+// line_mask_name's; line-set masks: one for each of `linesets`).
 std::vector<std::string> aov_file_names(const std::string& image_path, AovSet set,
-                                        const std::vector<std::string>& line_types);
+                                        const std::vector<std::string>& line_masks,
+                                        const std::vector<std::string>& linesets = {});
 
 }  // namespace inkshade

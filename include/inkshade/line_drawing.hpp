@@ -43,7 +43,7 @@ struct LinePath {
 };
 
 struct LineLayer {
-    LineSettings settings;  // the line type and its parameters
+    LineSettings settings;  // the line type, its parameters and its line set
     std::vector<LinePath> visible;
     std::vector<LinePath> hidden;  // only when the type's "hidden" parameter asks for them
 };
@@ -57,9 +57,10 @@ struct FillRegion {
 };
 
 struct LineDrawing {
-    int width = 0, height = 0;      // image size in pixels (the SVG viewBox)
-    glm::vec2 paper_mm{0.0f};       // a drawing sheet's size in mm (the SVG's size); 0: none
-    std::vector<LineLayer> layers;  // one per object-space line type, in the style's order
+    int width = 0, height = 0;  // image size in pixels (the SVG viewBox)
+    glm::vec2 paper_mm{0.0f};   // a drawing sheet's size in mm (the SVG's size); 0: none
+    // One per object-space line type of each line set, in the style's order.
+    std::vector<LineLayer> layers;
     std::vector<FillRegion> fills;  // under the strokes (--svg-fill); empty: none
 };
 
@@ -68,6 +69,7 @@ struct LineDrawing {
 struct ParameterisedLayer {
     std::string type;             // the line type
     std::vector<LinePath> paths;  // points, world, u, closed, level
+    std::string lineset;          // its line set's name
 };
 
 // The state a caller keeps over the frames of one sequence (a turntable, an orbit, an animation)
@@ -115,7 +117,8 @@ public:
     LineExtractor& operator=(const LineExtractor&) = delete;
 
     // The drawing of the object-space line types among `lines` (image-space types are skipped)
-    // seen by `camera` in a width x height image, one layer per type in the order of `lines`.
+    // seen by `camera` in a width x height image, one layer per entry in the order of `lines`,
+    // each drawn where it lies on the faces its line set selects (LineSettings::faces).
     // Throws InputError for a bad size or an unknown type. `timings` receives milliseconds
     // per stage summed over the types: per view "extract", "visibility", "chain", "finish";
     // on the draw that computes them, the once-per-mesh "ray scene", "curvature", ...

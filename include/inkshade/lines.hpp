@@ -2,7 +2,9 @@
 // like the shading models. A style lists the line types it draws ([[lines]] tables); each type
 // registers itself from the file that implements it, so adding one touches nothing else.
 #pragma once
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "inkshade/params.hpp"
@@ -31,11 +33,36 @@ std::vector<ParamSpec> stroke_params(glm::vec3 color, float width_px);
 // deeper".
 constexpr int kMaxOcclusionLevel = 253;
 
-// One line type of a style with its parameter values (missing names take the defaults).
+// Which faces a line set draws on (docs/styles.md, "Line sets"): a face is selected when it
+// matches every criterion given (a list matches when any of its glob patterns does, `*` any
+// run of characters, `?` one character); no criterion selects every face. `invert` selects the
+// faces that do not match instead (Freestyle's exclusive selection).
+struct FaceSelection {
+    std::vector<std::string> materials;  // Mesh::materials[...].name
+    std::vector<std::string> objects;    // Mesh::object_names (glTF node, OBJ `o`/`g`)
+    // Mesh::face_marks: 0 selects unmarked faces, -1 any marked face (1..255), else that mark.
+    std::optional<int> face_mark;
+    bool invert = false;
+    bool everything() const { return materials.empty() && objects.empty() && !face_mark && !invert; }
+    bool operator==(const FaceSelection&) const = default;
+};
+
+// One line type of a style with its parameter values (missing names take the defaults), and
+// the line set it belongs to: its name ("" for the style's own [[lines]]) and face selection.
+// An object-space line is drawn where it lies on a selected face (docs/styles.md).
 struct LineSettings {
     std::string type;
     ParamValues params;
+    std::string lineset;
+    FaceSelection faces;
 };
+
+// The line sets `lines` draws, in order, each once: their names ("" for lines of no line set,
+// the style's own [[lines]]).
+std::vector<std::string> line_set_names(const std::vector<LineSettings>& lines);
+
+// "*" and "?" glob matching of a whole name (case-sensitive, as names in files are).
+bool glob_match(std::string_view pattern, std::string_view name);
 
 // The stroke every line type has, resolved from its settings (defaults filled in).
 struct Stroke {

@@ -139,8 +139,15 @@ struct Mesh {
     std::vector<glm::vec2> uvs;            // per vertex, v = 0 at the image bottom (OBJ); may be empty
     std::vector<Material> materials;       // may be empty (default material)
     std::vector<uint32_t> face_materials;  // per triangle index into materials; may be empty
-    bool welded = false;                   // true when duplicate positions were merged
-    std::vector<std::string> warnings;     // "FILE: problem" lines for the user (e.g. a texture not loaded)
+    // Per triangle, the object it came from (glTF node, OBJ `o`/`g`), an index into
+    // object_names; may be empty (one unnamed object). Line sets select by these names.
+    std::vector<uint32_t> face_objects;
+    std::vector<std::string> object_names;
+    // Per triangle, its face mark (glTF _FACEMARK, OBJ smoothing group, PLY `facemark`;
+    // docs/inputs.md): 0 = unmarked, 1..255; may be empty (none marked).
+    std::vector<uint8_t> face_marks;
+    bool welded = false;                // true when duplicate positions were merged
+    std::vector<std::string> warnings;  // "FILE: problem" lines for the user (e.g. a texture not loaded)
     // The file's cameras and lights in scene order (glTF; empty for other formats), in the
     // coordinates of `positions`.
     std::vector<FileCamera> cameras;

@@ -105,9 +105,11 @@ struct SceneRequest {
     std::string paper, drawing_scale;
     bool svg_fill = false;  // the line drawing's SVG fills the visible faces (LineExtractor::fills)
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
-    // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, camera; any
-    // case), for render_scene's AovImages overload and write_aov_files.
+    // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, lineset-ids,
+    // camera; any case), for render_scene's AovImages overload and write_aov_files.
     std::vector<std::string> aovs;
+    // `--lineset-ids`: the lineset-ids AOV besides `aovs` (unset: only when aovs names it).
+    std::optional<bool> lineset_ids;
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;

@@ -158,7 +158,11 @@ SceneRequest job_request(const BatchJob& job) {
     return r;
 }
 
-AovSet job_aovs(const BatchJob& job) { return aov_set("aov", job.options.aovs); }
+AovSet job_aovs(const BatchJob& job) {
+    AovSet set = aov_set("aov", job.options.aovs);
+    if (job.options.lineset_ids.value_or(false)) set.add(Aov::LineSets);  // the lineset-ids column
+    return set;
+}
 
 std::string model_name(const std::string& model) {
     constexpr std::string_view kBuiltin = "builtin:";

@@ -9,7 +9,8 @@
 namespace inkshade {
 
 const std::vector<std::string>& aov_names() {
-    static const std::vector<std::string> names = {"depth", "normal", "id", "material", "mask", "lines", "camera"};
+    static const std::vector<std::string> names = {"depth", "normal", "id",          "material",
+                                                   "mask",  "lines",  "lineset-ids", "camera"};
     return names;
 }
 
@@ -27,6 +28,10 @@ std::string format_aov_set(AovSet set) {
     for (size_t i = 0; i < aov_names().size(); ++i)
         if (set.contains(Aov(i))) out += (out.empty() ? "" : ",") + aov_names()[i];
     return out;
+}
+
+std::string line_mask_name(const std::string& lineset, const std::string& type) {
+    return lineset.empty() ? "lines-" + type : "lines-" + lineset + "-" + type;
 }
 
 std::string aov_path(const std::string& image_path, const std::string& aov, const std::string& extension) {

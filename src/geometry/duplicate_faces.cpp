@@ -56,17 +56,23 @@ std::vector<uint8_t> find_duplicate_faces(const std::vector<glm::uvec3>& triangl
 
 size_t drop_duplicate_faces(Mesh& mesh) {
     const std::vector<uint8_t> duplicate = find_duplicate_faces(mesh.triangles);
-    const bool materials = mesh.face_materials.size() == mesh.triangles.size();
+    const size_t n = mesh.triangles.size();
+    const bool materials = mesh.face_materials.size() == n;
+    const bool objects = mesh.face_objects.size() == n, marks = mesh.face_marks.size() == n;
     size_t kept = 0;
-    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    for (size_t i = 0; i < n; ++i) {
         if (duplicate[i]) continue;
         mesh.triangles[kept] = mesh.triangles[i];
         if (materials) mesh.face_materials[kept] = mesh.face_materials[i];
+        if (objects) mesh.face_objects[kept] = mesh.face_objects[i];
+        if (marks) mesh.face_marks[kept] = mesh.face_marks[i];
         ++kept;
     }
-    const size_t dropped = mesh.triangles.size() - kept;
+    const size_t dropped = n - kept;
     mesh.triangles.resize(kept);
     if (materials) mesh.face_materials.resize(kept);
+    if (objects) mesh.face_objects.resize(kept);
+    if (marks) mesh.face_marks.resize(kept);
     return dropped;
 }
 

@@ -16,7 +16,8 @@ namespace inkshade::geometry {
 std::vector<uint8_t> find_duplicate_faces(const std::vector<glm::uvec3>& triangles);
 
 // Removes the faces find_duplicate_faces flags, keeping the order of the others and
-// face_materials in step. Vertices are left alone. Returns the number of faces removed.
+// face_materials, face_objects and face_marks in step. Vertices are left alone. Returns the
+// number of faces removed.
 size_t drop_duplicate_faces(Mesh& mesh);
 
 }  // namespace inkshade::geometry

@@ -2,7 +2,8 @@
 // on its own (LineTiming, stage_timer.hpp):
 //   plan        check every layer, then compute the mesh-wide data their types declare they need
 //               (LineTypeNeeds → MeshLineData::prepare; reported per computation) and the ray scene
-//   extract     each layer's segments (world space) from its type's extractor
+//   extract     each layer's segments (world space) from its type's extractor, kept where they
+//               lie on the faces its line set selects (face_selection.hpp)
 //   visibility  split by visibility (ray casting, visibility.hpp), per occlusion level
 //   chain       chain into polylines per level drawn
 //   finish      project to image pixels, drop short chains and smooth (in pixels), then stylised
@@ -16,6 +17,7 @@
 #include <utility>
 
 #include "geometry/chaining.hpp"
+#include "geometry/face_selection.hpp"
 #include "geometry/line_types/mesh_line_data.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
 #include "geometry/path_arc_length.hpp"
@@ -172,11 +174,12 @@ LevelPaths image_paths(const LevelChains& chained, const LineSettings& settings,
 
 // The layer's strokes as the previous frame left them: the index-th layer when it is of this
 // type, else the first of this type.
-const std::vector<LinePath>* previous_paths(const StrokeSequence& sequence, size_t index, const std::string& type) {
+const std::vector<LinePath>* previous_paths(const StrokeSequence& sequence, size_t index, const LineSettings& line) {
+    const auto same = [&](const ParameterisedLayer& l) { return l.type == line.type && l.lineset == line.lineset; };
     const auto& layers = sequence.layers;
-    if (index < layers.size() && layers[index].type == type) return &layers[index].paths;
+    if (index < layers.size() && same(layers[index])) return &layers[index].paths;
     for (const ParameterisedLayer& layer : layers)
-        if (layer.type == type) return &layer.paths;
+        if (same(layer)) return &layer.paths;
     return nullptr;
 }
 
@@ -202,7 +205,7 @@ LinePath matched_chain(const LinePath& p, bool coherent) {
 // for the next frame.
 ParameterisedLayer cohere(LevelPaths& levels, const LineSettings& settings, size_t index, const DrawView& v) {
     StageTimer timer(v.timings, "coherence");
-    const std::vector<LinePath>* previous = previous_paths(*v.sequence, index, settings.type);
+    const std::vector<LinePath>* previous = previous_paths(*v.sequence, index, settings);
     const bool coherent = line_number(settings, "coherence") != 0.0f;
     // Kalnins' propagation by the surface (the previous frame's points projected with this
     // camera), or the previous frame's image points as they are.
@@ -213,7 +216,7 @@ ParameterisedLayer cohere(LevelPaths& levels, const LineSettings& settings, size
         return glm::vec2(float(q.x), float(q.y));
     };
     static const std::vector<LinePath> none;  // the first frame's, or a new layer's
-    ParameterisedLayer record{settings.type, {}};
+    ParameterisedLayer record{settings.type, {}, settings.lineset};
     for (auto& [level, chains] : levels) {
         if (coherent) parameterise_paths(chains, previous ? *previous : none, by_surface ? project : ProjectPoint());
         for (const LinePath& p : chains) record.paths.push_back(matched_chain(p, coherent));
@@ -253,11 +256,14 @@ struct LineExtractor::Impl {
     std::unique_ptr<Mesh> section_mesh;
     std::unique_ptr<RayScene> section_scene;
     std::optional<SectionPlane> section_of_scene;
+    // The line sets' face selections met so far, resolved on the mesh.
+    std::vector<std::pair<FaceSelection, std::unique_ptr<SelectedFaces>>> selections;
     explicit Impl(const Mesh& mesh) : data(mesh) {}
     explicit Impl(Mesh&& mesh) : data(std::move(mesh)) {}
     explicit Impl(std::shared_ptr<const Mesh> mesh) : data(std::move(mesh)) {}
 
     ViewDepthRange depth_range(const Camera& camera, bool reads_depth);
+    const SelectedFaces* selected(const FaceSelection& faces);
     double report_setup(std::vector<LineTiming>* timings);
     void prepare(const MeshLineNeeds& needs, std::vector<LineTiming>* timings);
     const RayScene& ray_scene(const std::optional<SectionPlane>& section, std::vector<LineTiming>* timings);
@@ -273,6 +279,15 @@ ViewDepthRange LineExtractor::Impl::depth_range(const Camera& camera, bool reads
     if (!reads_depth) return {};
     if (!bounds) bounds = data.mesh().bounds();
     return ViewDepthRange::of_sphere(camera, bounds->center(), 0.5f * bounds->diagonal());
+}
+
+// The faces a line set selects, resolved on first use; null when it selects every face.
+const SelectedFaces* LineExtractor::Impl::selected(const FaceSelection& faces) {
+    if (faces.everything()) return nullptr;
+    for (const auto& [selection, resolved] : selections)
+        if (selection == faces) return resolved.get();
+    selections.emplace_back(faces, std::make_unique<SelectedFaces>(data.mesh(), faces));
+    return selections.back().second.get();
 }
 
 // The lazy mesh-wide work since the last call, each computation on its own stage; returns its
@@ -319,7 +334,7 @@ const RayScene& LineExtractor::Impl::ray_scene(const std::optional<SectionPlane>
 }
 
 // Stage "extract": each layer's segments from its type's extractor, cut to the section plane's
-// kept side.
+// kept side and to its line set's faces.
 std::vector<std::vector<LineSegment>> LineExtractor::Impl::extract(const DrawPlan& plan, const Camera& camera,
                                                                    const LineContext& context,
                                                                    std::vector<LineTiming>* timings) {
@@ -333,6 +348,7 @@ std::vector<std::vector<LineSegment>> LineExtractor::Impl::extract(const DrawPla
         StageTimer timer(timings, "extract");
         segments.push_back(layer.type->extract(data, view, *layer.settings));
         if (context.section) clip_to_section(segments.back(), *context.section, scene->tolerance());
+        if (const SelectedFaces* faces = selected(layer.settings->faces)) faces->filter(segments.back());
         // Lazy mesh-wide work done inside (curvature, ridges, hatching) is reported on its own
         // stage, not as per-view extraction.
         timer.exclude(report_setup(timings));
@@ -385,6 +401,7 @@ void LineExtractor::release_mesh_data() {
     impl_->section_scene.reset();
     impl_->section_mesh.reset();
     impl_->section_of_scene.reset();
+    impl_->selections.clear();
     impl_->data.release_derived();
 }
 

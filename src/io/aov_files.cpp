@@ -29,7 +29,8 @@ std::vector<uint16_t> to_16_bits(const std::vector<uint32_t>& ids) {
 }  // namespace
 
 std::vector<std::string> aov_file_names(const std::string& image_path, AovSet set,
-                                        const std::vector<std::string>& line_types) {
+                                        const std::vector<std::string>& line_masks,
+                                        const std::vector<std::string>& linesets) {
     std::vector<std::string> out;
     auto add = [&](Aov aov, const char* ext) {
         if (set.contains(aov)) out.push_back(file_name(aov_path(image_path, aov_name(aov), ext)));
@@ -40,7 +41,10 @@ std::vector<std::string> aov_file_names(const std::string& image_path, AovSet se
     add(Aov::Material, ".png");
     add(Aov::Mask, ".png");
     if (set.contains(Aov::Lines))
-        for (const std::string& type : line_types) out.push_back(file_name(aov_path(image_path, "lines-" + type, ".png")));
+        for (const std::string& name : line_masks) out.push_back(file_name(aov_path(image_path, name, ".png")));
+    if (set.contains(Aov::LineSets))
+        for (const std::string& name : linesets)
+            out.push_back(file_name(aov_path(image_path, "lineset-" + name, ".png")));
     if (!set.empty()) out.push_back(file_name(aov_path(image_path, "camera", ".json")));
     return out;
 }
@@ -88,7 +92,14 @@ std::vector<std::string> write_aov_files(const std::string& image_path, AovSet s
     }
     if (set.contains(Aov::Lines))
         for (const LineMask& m : a.lines) {
-            const std::string path = aov_path(image_path, "lines-" + m.type, ".png");
+            const std::string path = aov_path(image_path, line_mask_name(m.lineset, m.type), ".png");
+            check_size(path, m.pixels.size(), pixels);
+            io::write_png_samples(path, w, h, 1, m.pixels.data());
+            done(path);
+        }
+    if (set.contains(Aov::LineSets))
+        for (const LineSetMask& m : a.linesets) {
+            const std::string path = aov_path(image_path, "lineset-" + m.lineset, ".png");
             check_size(path, m.pixels.size(), pixels);
             io::write_png_samples(path, w, h, 1, m.pixels.data());
             done(path);

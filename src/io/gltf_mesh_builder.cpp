@@ -1,6 +1,8 @@
 // GltfMeshBuilder (gltf_mesh_builder.hpp): primitives (glTF 2.0 section 3.7.2.1) into one Mesh.
 #include "io/gltf_mesh_builder.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>  // as in gltf_container.cpp: tiny_gltf.h needs it with TINYGLTF_NO_FS
 
 #include "io/tiny_gltf_config.hpp"
@@ -33,6 +35,7 @@ void GltfMeshBuilder::add(const GltfInstance& instance, const GltfPose& pose) {
 
 void GltfMeshBuilder::finish() {
     if (!normals_complete_) mesh_.normals.clear();
+    if (!mesh_.face_marks.empty()) mesh_.face_marks.resize(mesh_.triangles.size(), 0);  // later primitives: none
     if (skipped_ > 0)
         mesh_.warnings.push_back(path_ + ": " + std::to_string(skipped_) + " point or line primitive" +
                                  (skipped_ > 1 ? "s" : "") + " skipped (only triangles are drawn)");
@@ -69,10 +72,51 @@ void GltfMeshBuilder::add_primitive(const tinygltf::Primitive& prim, const GltfI
     if (!mesh_.materials[material].mtoon.empty()) attrs.colours.clear();
     append_positions_and_normals(pos, attrs.normals, n, transform);
     append_uvs_and_colours(attrs, base, n, base_colour);
+    const std::vector<uint8_t> marks = face_marks(prim, tris, n, where);
+    const uint32_t object = object_of(instance.node);
+    if (!marks.empty()) mesh_.face_marks.resize(mesh_.triangles.size(), 0);
     for (const glm::uvec3& t : tris) {
         mesh_.triangles.push_back(glm::uvec3(base) + t);
         mesh_.face_materials.push_back(material);
+        mesh_.face_objects.push_back(object);
     }
+    mesh_.face_marks.insert(mesh_.face_marks.end(), marks.begin(), marks.end());
+}
+
+// The object a node's faces belong to for line sets: its name, else its mesh's, else "node N";
+// nodes of one name are one object.
+uint32_t GltfMeshBuilder::object_of(int node) {
+    const tinygltf::Node& gn = model_.nodes[size_t(node)];
+    std::string name = gn.name;
+    if (name.empty() && gn.mesh >= 0) name = model_.meshes[size_t(gn.mesh)].name;
+    if (name.empty()) name = "node " + std::to_string(node);
+    std::vector<std::string>& names = mesh_.object_names;
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return uint32_t(i);
+    names.push_back(std::move(name));
+    return uint32_t(names.size() - 1);
+}
+
+// Per triangle of `tris`, its face mark from the primitive's _FACEMARK attribute (an
+// application-specific attribute, glTF 2.0 section 3.7.2.1): its corners' smallest value,
+// rounded, a value in (0, 1) (a normalized integer) counting as 1, at most 255. Empty without one.
+std::vector<uint8_t> GltfMeshBuilder::face_marks(const tinygltf::Primitive& prim, const std::vector<glm::uvec3>& tris,
+                                                 size_t n, const std::string& where) {
+    const int index = attribute_index(prim, "_FACEMARK");
+    if (index < 0) return {};
+    int comps = 0;
+    const std::vector<float> v = reader_.floats(index, "_FACEMARK of " + where, {1}, comps);
+    if (v.size() != n)
+        reader_.fail("_FACEMARK of " + where + " has " + std::to_string(v.size()) + " values for " + std::to_string(n) +
+                     " vertices");
+    const auto mark = [](float x) {
+        if (!(x > 0.0f)) return uint8_t(0);
+        return uint8_t(x < 1.0f ? 1.0f : std::min(std::round(x), 255.0f));
+    };
+    std::vector<uint8_t> out;
+    out.reserve(tris.size());
+    for (const glm::uvec3& t : tris) out.push_back(std::min({mark(v[t.x]), mark(v[t.y]), mark(v[t.z])}));
+    return out;
 }
 
 // The primitive's triangles over its `n` vertices (section 3.7.2.1 gives the strip and fan

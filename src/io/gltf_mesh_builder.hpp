@@ -2,8 +2,8 @@
 // TRIANGLE_STRIP and TRIANGLE_FAN primitives (points and lines skipped, and counted), each
 // deformed by the pose, placed by its world transform (normals by the inverse transpose; a
 // mirroring transform flips the winding so front faces stay counter-clockwise), with its
-// material. Attributes present in only some primitives are completed (uvs with 0, colours with
-// the material colour) or dropped (normals: load_mesh computes them).
+// material, object (its node's name) and face marks (_FACEMARK). Attributes present in only some primitives are
+// completed (uvs with 0, colours with the material colour) or dropped (normals: load_mesh computes them).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -55,6 +55,9 @@ private:
     std::vector<glm::uvec3> triangles(const tinygltf::Primitive& prim, int mode, size_t n, bool mirror,
                                       const std::string& where);
     Attributes attributes(const tinygltf::Primitive& prim, size_t n, const std::string& where);
+    uint32_t object_of(int node);
+    std::vector<uint8_t> face_marks(const tinygltf::Primitive& prim, const std::vector<glm::uvec3>& tris, size_t n,
+                                    const std::string& where);
     void append_positions_and_normals(const std::vector<float>& positions, const std::vector<float>& normals, size_t n,
                                       const glm::dmat4& transform);
     void append_uvs_and_colours(const Attributes& a, size_t base, size_t n, const glm::vec3& base_colour);

@@ -70,6 +70,7 @@ std::string format_lines_json(const LineDrawing& drawing) {
         for (const LinePath& p : layer.visible) paths.push_back(path_json(p, false));
         for (const LinePath& p : layer.hidden) paths.push_back(path_json(p, true));
         layers.push_back({{"type", type.name},
+                          {"lineset", layer.settings.lineset},
                           {"params", params},
                           {"stroke",
                            {{"color", {clean(stroke.color.r), clean(stroke.color.g), clean(stroke.color.b)}},

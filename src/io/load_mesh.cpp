@@ -40,6 +40,13 @@ void validate(Mesh& mesh, const std::string& path) {
     if (mesh.colors.size() != n) mesh.colors.clear();
     if (mesh.uvs.size() != n) mesh.uvs.clear();
     if (mesh.face_materials.size() != mesh.triangles.size()) mesh.face_materials.clear();
+    if (mesh.face_objects.size() != mesh.triangles.size()) mesh.face_objects.clear();
+    if (mesh.face_marks.size() != mesh.triangles.size()) mesh.face_marks.clear();
+    for (uint32_t o : mesh.face_objects)
+        if (o >= mesh.object_names.size()) {
+            mesh.face_objects.clear();
+            break;
+        }
 
     for (size_t i = 0; i < n; ++i) {
         if (!is_finite(mesh.positions[i]))

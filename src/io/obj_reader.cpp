@@ -135,6 +135,35 @@ Prescan prescan(std::string_view text, const std::string& path) {
     return s;
 }
 
+// What line sets select OBJ faces by (docs/inputs.md): the object of a face is the name of the
+// last `o` or `g` statement before it (tinyobj starts a shape at each), its face mark its
+// smoothing group (`s N`; `s off` and `s 0` unmarked; groups past 255 are mark 255).
+struct ObjFaceLabels {
+    bool objects = false, marks = false;  // any named shape; any face in a smoothing group
+};
+
+ObjFaceLabels obj_face_labels(const std::vector<tinyobj::shape_t>& shapes) {
+    ObjFaceLabels labels;
+    for (const tinyobj::shape_t& shape : shapes) {
+        labels.objects |= !shape.name.empty();
+        for (unsigned g : shape.mesh.smoothing_group_ids) labels.marks |= g != 0;
+    }
+    return labels;
+}
+
+// The index of `name` in `names`, appended when new (shapes of one name are one object).
+uint32_t object_index(std::vector<std::string>& names, const std::string& name) {
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return uint32_t(i);
+    names.push_back(name);
+    return uint32_t(names.size() - 1);
+}
+
+uint8_t smoothing_mark(const tinyobj::shape_t& shape, size_t face) {
+    const auto& groups = shape.mesh.smoothing_group_ids;
+    return face < groups.size() ? uint8_t(std::min<unsigned>(groups[face], 255)) : 0;
+}
+
 // Read-only istream over the mapped file, so tinyobj parses without another copy.
 struct MemoryBuffer : std::streambuf {
     MemoryBuffer(const char* data, size_t size) {
@@ -380,9 +409,11 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
     }
 
     mesh.triangles.reserve(triangulate ? face_total : corner_total);  // exact, or an upper bound
+    const ObjFaceLabels labels = obj_face_labels(shapes);
     size_t face_index = 0;
     for (const tinyobj::shape_t& shape : shapes) {
         const auto& idx = shape.mesh.indices;
+        const uint32_t object = labels.objects ? object_index(mesh.object_names, shape.name) : 0;
         size_t corner = 0;
         for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face_index) {
             size_t n = triangulate ? shape.mesh.num_face_vertices[f] : scan.corners[face_index];
@@ -408,6 +439,8 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
                 uint32_t c = vertex_of(idx[corner + k]);
                 mesh.triangles.emplace_back(a, b, c);
                 if (any_material) mesh.face_materials.push_back(material);
+                if (labels.objects) mesh.face_objects.push_back(object);
+                if (labels.marks) mesh.face_marks.push_back(smoothing_mark(shape, f));
                 b = c;
             }
             corner += n;

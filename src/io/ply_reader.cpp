@@ -3,6 +3,7 @@
 // small value source (no virtual calls, no iostreams), so a 10 M-triangle binary file parses
 // in well under a second. Element counts are checked against the bytes left before anything
 // is allocated.
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <filesystem>
@@ -271,6 +272,9 @@ std::string plural(const Element& e) {
 
 bool is_face_list(const Property& p) { return p.name == "vertex_indices" || p.name == "vertex_index"; }
 
+// A face's mark for line sets (docs/inputs.md): an integer property `facemark`, clamped to 0..255.
+bool is_face_mark(const Property& p) { return p.name == "facemark" && !p.is_list && is_integer(p.type); }
+
 template <class Source>
 void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
     bool have_vertices = false;
@@ -354,9 +358,16 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
             // otherwise load_mesh's validation catches them.
             int64_t limit = have_vertices ? int64_t(mesh.positions.size()) : int64_t(UINT32_MAX);
             mesh.triangles.reserve(mesh.triangles.size() + size_t(e.count));
+            const bool marks = std::any_of(e.properties.begin(), e.properties.end(), is_face_mark);
+            if (marks) mesh.face_marks.resize(mesh.triangles.size(), 0);
             for (uint64_t f = 0; f < e.count; ++f) {
+                uint8_t mark = 0;
                 for (size_t k = 0; k < e.properties.size(); ++k) {
                     const Property& p = e.properties[k];
+                    if (marks && is_face_mark(p)) {
+                        mark = uint8_t(std::clamp<int64_t>(src.integer(p.type), 0, 255));
+                        continue;
+                    }
                     if (int(k) != list) {
                         skip_property(p);
                         continue;
@@ -377,6 +388,7 @@ void read_elements(Source& src, const Header& h, bool binary, Mesh& mesh) {
                     for (size_t j = 1; j + 1 < polygon.size(); ++j)
                         mesh.triangles.emplace_back(polygon[0], polygon[j], polygon[j + 1]);
                 }
+                if (marks) mesh.face_marks.resize(mesh.triangles.size(), mark);  // the face's triangles
             }
         } else if (binary && !e.has_lists()) {
             src.skip(Scalar::U8, e.count * min_record);  // fixed-size records: one jump

@@ -1,6 +1,7 @@
 // SVG 1.1 output of a LineDrawing (the object-space lines, hidden parts removed), laid out for
 // Inkscape and Illustrator: one layer (<g inkscape:groupmode="layer">) per line type holding
-// the stroke style, one <path> per polyline.
+// the stroke style, one <path> per polyline; a line set's layers (ids NAME-TYPE) nested in a
+// layer of its own, <g id="lineset-NAME">.
 //
 // Variable strength: SVG strokes have one width and one opacity, so a polyline whose strength
 // varies (suggestive contours fade in from their trim points) is split into runs of segments
@@ -383,13 +384,21 @@ std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const S
                (background.a < 1.0f ? " fill-opacity=\"" + number(background.a) + "\"" : std::string()) + "/>\n";
     write_fills(out, drawing.fills);
     // Each type's hidden layers (one per occlusion level that has paths, TYPE-hidden-N) go
-    // below its visible one, the deepest lowest.
-    for (const LineLayer& layer : drawing.layers) {
+    // below its visible one, the deepest lowest. A line set's consecutive layers share its group.
+    const std::vector<LineLayer>& layers = drawing.layers;
+    for (size_t i = 0; i < layers.size(); ++i) {
+        const LineLayer& layer = layers[i];
+        const std::string& set = layer.settings.lineset;
+        if (!set.empty() && (i == 0 || layers[i - 1].settings.lineset != set))
+            out += "<g id=\"lineset-" + xml_escape(set) + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" +
+                   xml_escape(set) + "\">\n";
+        const std::string id = set.empty() ? layer.settings.type : set + "-" + layer.settings.type;
         std::map<int, std::vector<LinePath>, std::greater<int>> by_level;
         for (const LinePath& p : layer.hidden) by_level[std::max(p.level, 1)].push_back(p);
         for (const auto& [level, paths] : by_level)
-            write_layer(out, layer.settings.type + "-hidden-" + std::to_string(level), layer, paths, true, options);
-        write_layer(out, layer.settings.type, layer, layer.visible, false, options);
+            write_layer(out, id + "-hidden-" + std::to_string(level), layer, paths, true, options);
+        write_layer(out, id, layer, layer.visible, false, options);
+        if (!set.empty() && (i + 1 == layers.size() || layers[i + 1].settings.lineset != set)) out += "</g>\n";
     }
     out += "</svg>\n";
     return out;

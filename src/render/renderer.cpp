@@ -38,7 +38,7 @@ struct Renderer::Impl {
 
     // set_mesh: the previous mesh is released first, so two are never held at once.
     void stage(std::shared_ptr<Mesh> m, MeshUse use);
-    // GL buffers of cpu_mesh; its colours, uvs and materials are dropped afterwards.
+    // GL buffers of cpu_mesh; its colours, uvs and materials (but their names) are dropped afterwards.
     void upload();
     Image render(const Camera& camera, const Light& light, const ShadingSelection& shading,
                  const std::vector<LineSettings>& lines, const RenderOptions& options, AovImages* aovs,
@@ -96,11 +96,11 @@ void Renderer::Impl::stage(std::shared_ptr<Mesh> m, MeshUse use) {
 
 void Renderer::Impl::upload() {
     mesh = std::make_unique<render::GpuMesh>(*cpu_mesh);
-    // The GL buffers and textures hold these now; the line extractor never reads them.
+    // The GL buffers and textures hold these now; the line extractor reads only the face
+    // materials and the material names (material boundaries, line sets' selections).
     cpu_mesh->colors = {};
     cpu_mesh->uvs = {};
-    cpu_mesh->materials = {};
-    cpu_mesh->face_materials = {};
+    for (Material& m : cpu_mesh->materials) m = Material{.name = std::move(m.name)};
 }
 
 void Renderer::Impl::run(const std::vector<render::PlannedPass>& planned, render::Frame& frame,

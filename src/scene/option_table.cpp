@@ -297,7 +297,7 @@ void add_outputs_and_pose(std::vector<OptionSpec>& t) {
     using K = OptionKind;
     OptionSpec aov = bind({.name = "aov", .kind = K::Names, .value = "NAME,...",
                       .help = "AOVs beside the image: depth, normal, id, material, mask, lines (a mask per line "
-                              "type), camera (docs/aov.md)",
+                              "type), lineset-ids (a mask per line set), camera (docs/aov.md)",
                       .fronts = kRender | kBatch, .hash = HashUse::ImageWhenSet},
                      [](auto& r) -> auto& { return r.aovs; });
     // The hash spells the set (known names, each once, in a fixed order), not the names as given.
@@ -339,6 +339,11 @@ void add_outputs_and_pose(std::vector<OptionSpec>& t) {
                              .fronts = kScene | kBatch | kPython, .choices = {"on", "off"},
                              .hash = HashUse::ImageWhenSet, .metadata = "spring_bones"},
                             [](auto& r) -> auto& { return r.spring_bones; }, std::vector<bool>{true, false}));
+    t.push_back(bind({.name = "lineset-ids", .kind = K::Flag,
+                      .help = "beside the image, one mask per line set, its lines together (.lineset-NAME.png; as "
+                              "the AOV lineset-ids, docs/aov.md)",
+                      .fronts = kRender | kBatch | kPython, .hash = HashUse::ImageWhenSet},
+                     [](auto& r) -> auto& { return r.lineset_ids; }));
 }
 
 std::vector<OptionSpec> make_table() {

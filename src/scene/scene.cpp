@@ -218,7 +218,8 @@ void check_camera_options(const CameraOptions& o, OptionNames names) {
 // The AOV names of the request, each once.
 AovSet parse_aovs(const SceneRequest& r) {
     const std::string option = option_name(r.names, "aov");
-    const AovSet set = aov_set(option, r.aovs);
+    AovSet set = aov_set(option, r.aovs);
+    if (r.lineset_ids.value_or(false)) set.add(Aov::LineSets);
     if (!set.empty() && !r.outputs.image)
         throw InputError(option + ": AOVs come with an image (`render`), not with a line drawing alone");
     return set;

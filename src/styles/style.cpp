@@ -21,6 +21,7 @@
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_scanner.hpp"
+#include "styles/line_sets.hpp"
 #include "styles/toml_prelexer.hpp"
 
 namespace inkshade {
@@ -234,14 +235,17 @@ void apply_override_unchecked(Style& style, const std::string& text) {
         style.shading.params[spec->name] = std::move(v);
         return;
     }
+    // Every line of the type, in the style's own [[lines]] and in every line set.
     std::string drawn;
+    bool found = false;
     for (LineSettings& l : style.lines) {
         if (l.type == line->name) {
-            l.params[spec->name] = std::move(v);
-            return;
+            l.params[spec->name] = v;
+            found = true;
         }
         drawn += (drawn.empty() ? "" : ", ") + l.type;
     }
+    if (found) return;
     throw InputError("the style draws no '" + line->name + "' lines (" +
                      (drawn.empty() ? std::string("it draws none") : "it draws " + drawn) + ")");
 }
@@ -358,8 +362,8 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
         throw InputError(source, "line " + std::to_string(e.source().begin.line) + ": " + what);
     }
     reject_unknown_keys(root,
-                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "line-unit", "light",
-                         "shading", "lines"},
+                        {"description", "background", "base-color", "mesh-colors", "smooth-angle", "up-axis", "line-unit",
+                         "light", "shading", "lines", "lineset"},
                         source, "");
     Style style;
     style.name = stem(source);
@@ -367,6 +371,10 @@ Style parse_style_unchecked(std::string_view text, const std::string& source) {
     parse_light(root, source, style);
     parse_shading(root, source, style);
     parse_lines(root, source, style);
+    styles::parse_line_sets(
+        root, source, style.lines, [&](const toml::table& t) { return parse_line_settings(t, source); },
+        [&](const ParamSpec& spec, const toml::node& node) { return param_value(spec, node, source); });
+    styles::check_image_space_lines(style.lines, source);
     return style;
 }
 
@@ -486,9 +494,13 @@ std::string format_style(const Style& style) {
     out << "\n[shading]\nmodel = " << toml_string(model.name) << "\n";
     write_params(out, model.params, style.shading.params);
     for (const LineSettings& l : style.lines) {
+        if (!l.lineset.empty()) continue;
         out << "\n[[lines]]\ntype = " << toml_string(l.type) << "\n";
         write_params(out, line_type(l.type).params, l.params);
     }
+    styles::write_line_sets(out, style.lines, toml_string, [](std::ostream& o, const LineSettings& l) {
+        write_params(o, line_type(l.type).params, l.params);
+    });
     return out.str();
 }
 

@@ -135,8 +135,8 @@ TEST(AovCli, UnknownAovIsOneLineExitTwoAndNoFile) {
     auto r = run_cli("render builtin:sphere --size 32x32 --aov depth,nromal -o " + dir.file("a.png"));
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
-              "inkshade: --aov: unknown AOV 'nromal' (expected depth, normal, id, material, mask, lines, camera) "
-              "(did you mean 'normal'?)\n");
+              "inkshade: --aov: unknown AOV 'nromal' (expected depth, normal, id, material, mask, lines, lineset-ids, "
+              "camera) (did you mean 'normal'?)\n");
     EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
@@ -182,6 +182,32 @@ TEST(AovCli, BatchWritesEachJobsAovs) {
     EXPECT_EQ(b2.status, 2);
     EXPECT_NE(b2.err.find("bad.csv:2: aov: unknown AOV 'lnies'"), std::string::npos) << b2.err;
     EXPECT_NE(b2.err.find("(did you mean 'lines'?)"), std::string::npos) << b2.err;
+}
+
+}  // namespace
+}  // namespace inkshade::test
+
+namespace inkshade::test {
+namespace {
+
+// `--lineset-ids`: one mask per line set beside the image, named after it, listed as the render
+// prints its outputs; each line set's own type masks with `--aov lines`.
+TEST(AovCli, LineSetIdsWriteOneMaskPerSet) {
+    TempDir dir;
+    const std::string style = dir.write("sets.toml",
+                                        "[shading]\nmodel = \"lambert\"\n[[lines]]\ntype = \"hull\"\n"
+                                        "[[lineset]]\nname = \"plate\"\nobjects = \"Plate\"\n"
+                                        "[[lineset.lines]]\ntype = \"crease\"\n"
+                                        "[[lineset]]\nname = \"bolts\"\nobjects = \"Bolt.*\"\n"
+                                        "[[lineset.lines]]\ntype = \"crease\"\n");
+    const std::string out = dir.file("p.png");
+    auto r = run_cli("render " + std::string(INKSHADE_SOURCE_DIR) + "/examples/cad-part/part.obj --style " + style +
+                     " --size 160x120 --lineset-ids --aov lines -o " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* name : {"p.lineset-default.png", "p.lineset-plate.png", "p.lineset-bolts.png", "p.lines-hull.png",
+                             "p.lines-plate-crease.png", "p.lines-bolts-crease.png"})
+        EXPECT_TRUE(fs::is_regular_file(dir.file(name))) << name;
+    EXPECT_FALSE(fs::exists(dir.file("p.lineset-shaft.png")));
 }
 
 }  // namespace

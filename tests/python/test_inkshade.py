@@ -605,3 +605,45 @@ class SpringBonesTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class LineSetTest(unittest.TestCase):
+    """A style with line sets through Renderer.svg, lines and render(lineset_ids=True)."""
+
+    STYLE = ('[shading]\nmodel = "lambert"\n'
+             '[[lineset]]\nname = "left"\nobjects = "Left"\n[[lineset.lines]]\ntype = "crease"\nwidth = 2.0\n'
+             '[[lineset]]\nname = "right"\nobjects = "Right*"\n[[lineset.lines]]\ntype = "crease"\n')
+
+    @staticmethod
+    def cube_obj(name, x):
+        corners = [(x + (i & 1), (i >> 1) & 1, (i >> 2) & 1) for i in range(8)]
+        quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+        return corners, quads, name
+
+    def test_each_set_draws_the_faces_it_selects(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            obj, style = os.path.join(tmp, "parts.obj"), os.path.join(tmp, "sets.toml")
+            with open(obj, "w") as f:
+                for k, (name, x) in enumerate((("Left", -1.5), ("RightPart", 0.5))):
+                    corners, quads, _ = self.cube_obj(name, x)
+                    f.write(f"o {name}\n")
+                    f.writelines(f"v {a} {b} {c}\n" for a, b, c in corners)
+                    f.writelines("f " + " ".join(str(8 * k + i + 1) for i in q) + "\n" for q in quads)
+            with open(style, "w") as f:
+                f.write(self.STYLE)
+            r = inkshade.Renderer()
+            r.set_mesh(inkshade.load_mesh(obj))
+            view = dict(size=(160, 80), elevation=20, azimuth=20)
+            svg = r.svg(style=style, **view)
+            self.assertIn('<g id="lineset-left"', svg)
+            self.assertIn('<g id="right-crease"', svg)
+            lines = r.lines(style=style, **view)
+            sets = {l["lineset"] for l in lines}
+            self.assertEqual(sets, {"left", "right"})
+            for l in lines:  # the left cube projects left of the image's centre
+                side = l["points"][:, 0] < 80
+                self.assertTrue(np.all(side) if l["lineset"] == "left" else not np.any(side))
+            out = r.render(style, lineset_ids=True, **view)
+            self.assertGreater(np.count_nonzero(out["lineset-left"][:, :80] > 128), 50)
+            self.assertEqual(np.count_nonzero(out["lineset-left"][:, 80:] > 128), 0)
+            self.assertEqual(np.count_nonzero(out["lineset-right"][:, :80] > 128), 0)

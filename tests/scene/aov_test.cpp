@@ -11,6 +11,7 @@
 #include "inkshade/aov.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/scene.hpp"
+#include "inkshade/style.hpp"
 #include "render/render_fixture.hpp"
 
 namespace inkshade {
@@ -221,6 +222,65 @@ TEST(Aov, LineMasksAreTheDrawnLines) {
     }
 }
 
+// Two spheres side by side, objects "L" (x < 0) and "R", materials "left" and "right".
+Mesh two_sphere_objects() {
+    Mesh m;
+    m.object_names = {"L", "R"};
+    m.materials = {Material{.name = "left"}, Material{.name = "right"}};
+    for (uint32_t part = 0; part < 2; ++part) {
+        const Mesh s = builtin::sphere(32, 64);
+        const auto base = uint32_t(m.positions.size());
+        for (const glm::vec3& p : s.positions) m.positions.push_back(p + glm::vec3(part == 0 ? -2.5f : 2.5f, 0, 0));
+        for (const glm::vec3& n : s.normals) m.normals.push_back(n);
+        for (const glm::uvec3& t : s.triangles) {
+            m.triangles.push_back(t + glm::uvec3(base));
+            m.face_objects.push_back(part);
+            m.face_materials.push_back(part);
+        }
+    }
+    return m;
+}
+
+// Each line set's mask holds its lines alone: the contours of the sphere it selects (by object,
+// by material: the renderer keeps the material names), and nothing on the other sphere
+// (Pencil+ 4's line set IDs).
+TEST(Aov, LineSetMasksHoldEachSetsLinesAlone) {
+    const Mesh mesh = two_sphere_objects();
+    shared_renderer().set_mesh(mesh);
+    SceneRequest r;
+    r.model = "builtin:sphere";
+    r.size = {240, 120};
+    r.style_data = parse_style(
+        "[shading]\nmodel = \"lambert\"\n"
+        "[[lineset]]\nname = \"left\"\nobjects = \"L\"\n[[lineset.lines]]\ntype = \"contour\"\nwidth = 2.0\n"
+        "[[lineset]]\nname = \"right\"\nmaterials = \"right\"\n[[lineset.lines]]\ntype = \"contour\"\nwidth = 2.0\n",
+        "sets.toml");
+    r.lineset_ids = true;
+    const Scene scene = make_scene(r);
+    ASSERT_TRUE(scene.aovs.contains(Aov::LineSets));
+    const Camera camera = scene.frame(mesh);
+    AovImages aovs;
+    render_scene(shared_renderer(), scene, camera, scene.light(mesh.bounds(), camera), aovs);
+    ASSERT_EQ(aovs.linesets.size(), 2u);
+    EXPECT_EQ(aovs.linesets[0].lineset, "left");
+    EXPECT_EQ(aovs.linesets[1].lineset, "right");
+    for (size_t set = 0; set < 2; ++set) {
+        SCOPED_TRACE(set);
+        int drawn = 0, wrong_side = 0;
+        const std::vector<uint8_t>& mask = aovs.linesets[set].pixels;
+        ASSERT_EQ(mask.size(), size_t(240 * 120));
+        for (size_t i = 0; i < mask.size(); ++i) {
+            if (mask[i] < 128) continue;
+            ++drawn;
+            wrong_side += (int(i % 240) < 120) != (set == 0);
+        }
+        EXPECT_GT(drawn, 150);  // a contour circle of radius ~30 px, 2 px wide
+        EXPECT_EQ(wrong_side, 0);
+    }
+    EXPECT_EQ(aov_file_names("out/a.png", scene.aovs, {}, {"left", "right"}),
+              (std::vector<std::string>{"a.lineset-left.png", "a.lineset-right.png", "a.camera.json"}));
+}
+
 TEST(Aov, UnknownNameIsRejectedWithTheClosest) {
     SceneRequest r;
     r.aovs = {"depth", "nromal"};
@@ -229,8 +289,8 @@ TEST(Aov, UnknownNameIsRejectedWithTheClosest) {
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "--aov: unknown AOV 'nromal' (expected depth, normal, id, material, mask, lines, camera) (did you "
-                  "mean 'normal'?)");
+                  "--aov: unknown AOV 'nromal' (expected depth, normal, id, material, mask, lines, lineset-ids, "
+                  "camera) (did you mean 'normal'?)");
     }
     r.aovs = {"Depth", "depth"};
     EXPECT_THROW(make_scene(r), InputError);

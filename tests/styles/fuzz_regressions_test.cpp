@@ -80,7 +80,7 @@ TEST(StyleFuzzRegressions, NonAsciiOutsideStringsIsAnErrorBeforeTomlSeesIt) {
     EXPECT_EQ(
         error_of("description = \"\"\"\xc3\xa9\n\xe2\x80\x94 \\\n   x\"\"\"\"\"\ntext = '''\xc3\xa9'''\n" + model),
         "my.toml: unknown key 'text' (allowed: description, background, base-color, mesh-colors, smooth-angle, "
-        "up-axis, line-unit, light, shading, lines)");
+        "up-axis, line-unit, light, shading, lines, lineset)");
 }
 
 // toml++ nests a table per dot of a key and frees them recursively: a key of 300000 dots (a
@@ -106,7 +106,7 @@ TEST(StyleFuzzRegressions, DeeplyDottedKeysAreRefusedBeforeTheStackOverflows) {
 TEST(StyleFuzzRegressions, ErrorsQuotingControlCharactersStayOneLine) {
     EXPECT_EQ(error_of("\"a\\r\\nb\" = 1\n[shading]\nmodel = \"lambert\"\n"),
               "my.toml: unknown key 'a??b' (allowed: description, background, base-color, mesh-colors, smooth-angle, "
-              "up-axis, line-unit, light, shading, lines)");
+              "up-axis, line-unit, light, shading, lines, lineset)");
     EXPECT_EQ(error_of("[shading]\nmodel = \"lam\\rbert\"\n").find_first_of("\r\n"), std::string::npos);
     Style style = parse_style("[shading]\nmodel = \"phong\"\n", "my.toml");
     try {

@@ -24,8 +24,28 @@ auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, 
     return result;
 }
 
-// Positions (padded for Embree), triangles, unit normals, hard-edge shading normals and face
-// materials of `mesh`, nothing else.
+// The material names (line sets select by them) and diffuse colours (the SVG's fills);
+// textures and other parameters are not read here.
+std::vector<Material> material_names(const std::vector<Material>& materials) {
+    std::vector<Material> names(materials.size());
+    for (size_t i = 0; i < materials.size(); ++i) {
+        names[i].name = materials[i].name;
+        names[i].diffuse = materials[i].diffuse;
+    }
+    return names;
+}
+
+// What line sets select faces by (face_selection.hpp), moved or copied from `from`.
+template <class M>
+void take_selection_fields(Mesh& to, M&& from) {
+    to.materials = material_names(from.materials);
+    to.face_objects = std::forward<M>(from).face_objects;
+    to.object_names = std::forward<M>(from).object_names;
+    to.face_marks = std::forward<M>(from).face_marks;
+}
+
+// Positions (padded for Embree), triangles, unit normals, hard-edge shading normals, face
+// materials and what line sets select by, of `mesh`, nothing else.
 std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Mesh& mesh) {
     auto m = std::make_shared<Mesh>();
     m->positions = std::move(positions);
@@ -35,7 +55,7 @@ std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Me
     m->shading_normal_ids = mesh.shading_normal_ids;
     m->shading_normals = mesh.shading_normals;
     m->face_materials = mesh.face_materials;
-    m->materials = mesh.materials;  // their colours fill the SVG (--svg-fill)
+    take_selection_fields(*m, mesh);
     ensure_vertex_normals(*m);
     return m;
 }
@@ -59,8 +79,8 @@ MeshLineData::MeshLineData(Mesh&& mesh) {
     lines.shading_normal_ids = std::move(mesh.shading_normal_ids);
     lines.shading_normals = std::move(mesh.shading_normals);
     lines.face_materials = std::move(mesh.face_materials);  // material-boundary
-    lines.materials = std::move(mesh.materials);            // their colours fill the SVG
-    mesh = Mesh();  // colours and uvs are not needed here
+    take_selection_fields(lines, std::move(mesh));
+    mesh = Mesh();  // colours, uvs and the materials themselves are not needed here
     reserve_embree_padding(lines.positions);
     ensure_vertex_normals(lines);
     mesh_ = std::make_shared<const Mesh>(std::move(lines));
