@@ -139,6 +139,10 @@ struct Mesh {
     std::vector<glm::vec2> uvs;            // per vertex, v = 0 at the image bottom (OBJ); may be empty
     std::vector<Material> materials;       // may be empty (default material)
     std::vector<uint32_t> face_materials;  // per triangle index into materials; may be empty
+    // The file's line primitives (OBJ `l`, glTF LINES, LINE_STRIP, LINE_LOOP), one entry per
+    // segment: two indices into positions, welded and moved with them. Not part of any face:
+    // the renderer's surfaces ignore them; the line type `loose` draws them.
+    std::vector<glm::uvec2> line_segments;
     bool welded = false;                   // true when duplicate positions were merged
     std::vector<std::string> warnings;     // "FILE: problem" lines for the user (e.g. a texture not loaded)
     // The file's cameras and lights in scene order (glTF; empty for other formats), in the

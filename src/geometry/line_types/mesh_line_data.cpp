@@ -24,8 +24,8 @@ auto timed(std::vector<std::pair<std::string, double>>& log, const char* stage, 
     return result;
 }
 
-// Positions (padded for Embree), triangles, unit normals, hard-edge shading normals and face
-// materials of `mesh`, nothing else.
+// Positions (padded for Embree), triangles, unit normals, hard-edge shading normals, face
+// materials and loose line segments of `mesh`, nothing else.
 std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Mesh& mesh) {
     auto m = std::make_shared<Mesh>();
     m->positions = std::move(positions);
@@ -35,6 +35,7 @@ std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Me
     m->shading_normal_ids = mesh.shading_normal_ids;
     m->shading_normals = mesh.shading_normals;
     m->face_materials = mesh.face_materials;
+    m->line_segments = mesh.line_segments;
     ensure_vertex_normals(*m);
     return m;
 }
@@ -58,6 +59,7 @@ MeshLineData::MeshLineData(Mesh&& mesh) {
     lines.shading_normal_ids = std::move(mesh.shading_normal_ids);
     lines.shading_normals = std::move(mesh.shading_normals);
     lines.face_materials = std::move(mesh.face_materials);  // material-boundary
+    lines.line_segments = std::move(mesh.line_segments);    // loose
     mesh = Mesh();  // colours, uvs and the materials themselves are not needed here
     reserve_embree_padding(lines.positions);
     ensure_vertex_normals(lines);
