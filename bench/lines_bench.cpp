@@ -190,18 +190,20 @@ void BM_SvgBezierFit(benchmark::State& state) {
 }
 
 // A view of the 100 k teapot (builtin:teapot:subdivisions=40) on a warm extractor: the contour
-// alone (arg 0), then with the five newer kinds beside it (arg 1: light-contour,
-// material-boundary, clip-boundary, silhouette, external-contour); the difference is what those
-// kinds cost a frame (issue 34: at most 0.1 s).
+// alone (arg 0), then with the newer kinds beside it (arg 1: light-contour, material-boundary,
+// clip-boundary, silhouette, external-contour, cast-shadow, loose), or with cast-shadow alone
+// (arg 2: its rays towards the default key light); the difference is what those kinds cost a
+// frame (issue 34: at most 0.1 s).
 void BM_LinesNewKinds(benchmark::State& state) {
     static Mesh mesh = builtin::teapot(40);
     static const Camera camera = frame_camera(mesh.bounds(), CameraOptions{}, 1.0f);
     static LineExtractor extractor(mesh);
     std::vector<LineSettings> lines = {{"contour", {}}};
-    if (state.range(0) != 0)
-        for (const char* type :
-             {"light-contour", "material-boundary", "clip-boundary", "silhouette", "external-contour"})
+    if (state.range(0) == 1)
+        for (const char* type : {"light-contour", "material-boundary", "clip-boundary", "silhouette",
+                                 "external-contour", "cast-shadow", "loose"})
             lines.push_back({type, {}});
+    if (state.range(0) == 2) lines.push_back({"cast-shadow", {}});
     extractor.draw(camera, 1024, 1024, lines);  // mesh-wide data and the ray scene, untimed
     size_t paths = 0;
     for (auto _ : state) {
@@ -216,7 +218,7 @@ void BM_LinesNewKinds(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_LinesNewKinds)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinesNewKinds)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HatchingSetup)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HatchingField)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SvgBezierFit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);

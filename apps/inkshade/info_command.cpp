@@ -126,6 +126,8 @@ Command add_info_command(CLI::App& app) {
         std::printf("model:                %s\n", model->c_str());
         std::printf("vertices:             %zu\n", s.vertices);
         std::printf("triangles:            %zu\n", s.triangles);
+        // OBJ `l`, glTF LINES / LINE_STRIP / LINE_LOOP: drawn by the `loose` line type.
+        if (!mesh.line_segments.empty()) std::printf("loose line segments:  %zu\n", mesh.line_segments.size());
         std::printf("edges:                %zu\n", s.edges);
         std::printf("bounding box min:     %g %g %g\n", b.min.x, b.min.y, b.min.z);
         std::printf("bounding box max:     %g %g %g\n", b.max.x, b.max.y, b.max.z);

@@ -146,6 +146,10 @@ struct Mesh {
     // Per triangle, its face mark (glTF _FACEMARK, OBJ smoothing group, PLY `facemark`;
     // docs/inputs.md): 0 = unmarked, 1..255; may be empty (none marked).
     std::vector<uint8_t> face_marks;
+    // The file's line primitives (OBJ `l`, glTF LINES, LINE_STRIP, LINE_LOOP), one entry per
+    // segment: two indices into positions, welded and moved with them. Not part of any face:
+    // the renderer's surfaces ignore them; the line type `loose` draws them.
+    std::vector<glm::uvec2> line_segments;
     bool welded = false;                // true when duplicate positions were merged
     std::vector<std::string> warnings;  // "FILE: problem" lines for the user (e.g. a texture not loaded)
     // The file's cameras and lights in scene order (glTF; empty for other formats), in the

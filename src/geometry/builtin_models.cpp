@@ -210,6 +210,28 @@ Mesh teapot(int subdivisions) {
     return m;
 }
 
+void add_ground(Mesh& mesh, int cells) {
+    require(cells >= 1 && cells <= 4096, "ground", "cells must be in 1..4096");
+    const BoundingBox box = mesh.bounds();
+    const float half = 1.25f * std::max(box.max.x - box.min.x, box.max.z - box.min.z);
+    const glm::vec3 centre(box.center().x, box.min.y, box.center().z);
+    const uint32_t base = uint32_t(mesh.positions.size());
+    const bool normals = mesh.normals.size() == mesh.positions.size();
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            mesh.positions.push_back(centre + glm::vec3(half * (2.0f * i / cells - 1.0f), 0.0f,
+                                                        half * (1.0f - 2.0f * j / cells)));
+            if (normals) mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
+        }
+    const auto idx = [&](int i, int j) { return base + uint32_t(j * (cells + 1) + i); };
+    // Rows run towards −z, so (i, j) → (i + 1, j) → (i + 1, j + 1) turns counter-clockwise seen from +y.
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            mesh.triangles.emplace_back(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1));
+            mesh.triangles.emplace_back(idx(i, j), idx(i + 1, j + 1), idx(i, j + 1));
+        }
+}
+
 std::vector<std::string> names() { return {"sphere", "torus", "torus-knot", "teapot"}; }
 
 namespace {
@@ -290,10 +312,12 @@ Mesh by_name(const std::string& name) {
         return torus_knot(o.integer("p", 2), o.integer("q", 3), o.real("tube", 0.15f), a, b);
     }
     if (model == "teapot") {
-        BuiltinOptions o(spec, opts, {"subdivisions"});
-        int n = o.integer("subdivisions", 16);
-        check_size(spec, 64.0 * n * n);
-        return teapot(n);
+        BuiltinOptions o(spec, opts, {"subdivisions", "ground"});
+        int n = o.integer("subdivisions", 16), g = o.integer("ground", 0);
+        check_size(spec, 64.0 * n * n + 2.0 * g * g);
+        Mesh m = teapot(n);
+        if (g != 0) add_ground(m, g);
+        return m;
     }
     throw InputError(spec, "unknown built-in model (choose sphere, torus, torus-knot, teapot)");
 }

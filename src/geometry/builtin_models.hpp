@@ -22,7 +22,13 @@ Mesh torus_knot(int p = 2, int q = 3, float tube_radius = 0.15f, int segments = 
 // side and welded; y up, base on y = 0.
 Mesh teapot(int subdivisions = 16);
 
-// "sphere", "torus", "torus-knot", "teapot" -> mesh; throws InputError for an unknown name.
+// A floor under `mesh`: a square of cells × cells quads (two triangles each, facing +y) in the
+// plane of its lowest point, 2.5 times its larger horizontal extent wide and centred under it,
+// for it to stand on and cast its shadows onto (`builtin:teapot:ground=N`).
+void add_ground(Mesh& mesh, int cells);
+
+// "sphere", "torus", "torus-knot", "teapot" -> mesh ("teapot:ground=N" with add_ground);
+// throws InputError for an unknown name.
 Mesh by_name(const std::string& name);
 std::vector<std::string> names();
 

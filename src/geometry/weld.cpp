@@ -144,6 +144,8 @@ void weld(Mesh& mesh, const WeldOptions& options) {
     if (n >= kNone) throw InputError("too many vertices to weld (limit 2^32 - 1)");
     for (const glm::uvec3& t : mesh.triangles)
         if (t.x >= n || t.y >= n || t.z >= n) throw InputError("triangle index out of range");
+    for (const glm::uvec2& l : mesh.line_segments)
+        if (l.x >= n || l.y >= n) throw InputError("line segment index out of range");
 
     // Bounds over finite positions only: a NaN/inf vertex never merges and must not poison
     // the epsilon.
@@ -223,6 +225,7 @@ void weld(Mesh& mesh, const WeldOptions& options) {
     if (reps.size() == n) return;  // nothing merged: leave the mesh untouched
 
     for (glm::uvec3& t : mesh.triangles) t = glm::uvec3(remap[t.x], remap[t.y], remap[t.z]);
+    for (glm::uvec2& l : mesh.line_segments) l = glm::uvec2(remap[l.x], remap[l.y]);
     compact(mesh.normals, reps, n);
     compact(mesh.colors, reps, n);
     compact(mesh.uvs, reps, n);

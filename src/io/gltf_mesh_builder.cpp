@@ -37,14 +37,18 @@ void GltfMeshBuilder::finish() {
     if (!normals_complete_) mesh_.normals.clear();
     if (!mesh_.face_marks.empty()) mesh_.face_marks.resize(mesh_.triangles.size(), 0);  // later primitives: none
     if (skipped_ > 0)
-        mesh_.warnings.push_back(path_ + ": " + std::to_string(skipped_) + " point or line primitive" +
-                                 (skipped_ > 1 ? "s" : "") + " skipped (only triangles are drawn)");
+        mesh_.warnings.push_back(path_ + ": " + std::to_string(skipped_) + " point primitive" +
+                                 (skipped_ > 1 ? "s" : "") + " skipped (only triangles and lines are drawn)");
 }
 
 void GltfMeshBuilder::add_primitive(const tinygltf::Primitive& prim, const GltfInstance& instance, const GltfPose& pose,
                                     const std::string& where) {
     const glm::dmat4& transform = instance.transform;
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) {
+        add_lines(prim, instance, mode, where);
+        return;
+    }
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         ++skipped_;
         return;
@@ -117,6 +121,47 @@ std::vector<uint8_t> GltfMeshBuilder::face_marks(const tinygltf::Primitive& prim
     out.reserve(tris.size());
     for (const glm::uvec3& t : tris) out.push_back(std::min({mark(v[t.x]), mark(v[t.y]), mark(v[t.z])}));
     return out;
+}
+
+// A LINES, LINE_LOOP or LINE_STRIP primitive (section 3.7.2.1 gives the orders): its vertices
+// placed by the instance's transform and its segments kept as Mesh::line_segments. Vertices
+// that only lines use get a placeholder unit normal (faces never read it) so that the file's
+// normals stay complete.
+void GltfMeshBuilder::add_lines(const tinygltf::Primitive& prim, const GltfInstance& instance, int mode,
+                                const std::string& where) {
+    const int position = attribute_index(prim, "POSITION");
+    if (position < 0) {
+        mesh_.warnings.push_back(path_ + ": " + where + " has no POSITION attribute; skipped");
+        return;
+    }
+    int comps = 0;
+    const std::vector<float> pos = reader_.floats(position, "POSITION of " + where, {3}, comps);
+    const size_t n = pos.size() / 3;
+    if (n == 0) return;
+    if (n > kMaxGltfVertices - mesh_.positions.size())
+        reader_.fail("more than " + std::to_string(kMaxGltfVertices) + " vertices in the scene");
+    std::vector<uint32_t> corners;
+    if (prim.indices >= 0) {
+        corners = reader_.indices(prim.indices, "indices of " + where, n);
+    } else {
+        corners.resize(n);
+        for (size_t i = 0; i < n; ++i) corners[i] = uint32_t(i);
+    }
+    const size_t base = mesh_.positions.size();
+    append_positions_and_normals(pos, std::vector<float>(normals_complete_ ? 3 * n : 0, 0.0f), n, instance.transform);
+    if (normals_complete_)
+        for (size_t i = base; i < base + n; ++i) mesh_.normals[i] = glm::vec3(0.0f, 0.0f, 1.0f);
+    append_uvs_and_colours(Attributes{}, base, n, glm::vec3(0.8f));
+    const auto emit = [&](uint32_t a, uint32_t b) {
+        if (a != b) mesh_.line_segments.emplace_back(uint32_t(base) + a, uint32_t(base) + b);
+    };
+    const size_t m = corners.size();
+    if (mode == TINYGLTF_MODE_LINE) {
+        for (size_t i = 0; i + 1 < m; i += 2) emit(corners[i], corners[i + 1]);
+    } else {
+        for (size_t i = 0; i + 1 < m; ++i) emit(corners[i], corners[i + 1]);
+        if (mode == TINYGLTF_MODE_LINE_LOOP && m > 2) emit(corners[m - 1], corners[0]);
+    }
 }
 
 // The primitive's triangles over its `n` vertices (section 3.7.2.1 gives the strip and fan

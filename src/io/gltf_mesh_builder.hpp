@@ -1,5 +1,6 @@
 // A glTF scene's mesh instances appended to one Mesh (glTF 2.0 section 3.7): TRIANGLES,
-// TRIANGLE_STRIP and TRIANGLE_FAN primitives (points and lines skipped, and counted), each
+// TRIANGLE_STRIP and TRIANGLE_FAN primitives (points skipped, and counted; lines kept as
+// Mesh::line_segments, placed by their node but not deformed by a pose), each
 // deformed by the pose, placed by its world transform (normals by the inverse transpose; a
 // mirroring transform flips the winding so front faces stay counter-clockwise), with its
 // material, object (its node's name) and face marks (_FACEMARK). Attributes present in only some primitives are
@@ -37,7 +38,7 @@ public:
 
     // Drops incomplete normals and warns about skipped primitives.
     void finish();
-    size_t skipped() const { return skipped_; }  // point and line primitives
+    size_t skipped() const { return skipped_; }  // point primitives
 
 private:
     // The optional vertex attributes of a primitive, `n` elements each where present.
@@ -52,6 +53,7 @@ private:
 
     void add_primitive(const tinygltf::Primitive& prim, const GltfInstance& instance, const GltfPose& pose,
                        const std::string& where);
+    void add_lines(const tinygltf::Primitive& prim, const GltfInstance& instance, int mode, const std::string& where);
     std::vector<glm::uvec3> triangles(const tinygltf::Primitive& prim, int mode, size_t n, bool mirror,
                                       const std::string& where);
     Attributes attributes(const tinygltf::Primitive& prim, size_t n, const std::string& where);

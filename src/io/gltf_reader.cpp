@@ -59,6 +59,7 @@ Mesh read_gltf(const std::string& path, const Pose& pose) {
         if (builder.skipped() > 0)
             throw InputError(path, "no triangles (only point or line primitives: " + std::to_string(builder.skipped()) +
                                        " skipped)");
+        if (!mesh.line_segments.empty()) throw InputError(path, "no triangles (only line primitives)");
         throw InputError(path, "no triangles (the scene has no mesh)");
     }
     return mesh;

@@ -68,6 +68,9 @@ void validate(Mesh& mesh, const std::string& path) {
                 throw InputError(path, "triangle " + std::to_string(t) + " refers to vertex " +
                                            std::to_string(mesh.triangles[t][k]) + " but the mesh has " +
                                            std::to_string(n) + " vertices");
+    for (size_t l = 0; l < mesh.line_segments.size(); ++l)
+        if (mesh.line_segments[l].x >= n || mesh.line_segments[l].y >= n)
+            throw InputError(path, "line segment " + std::to_string(l) + " refers to a vertex the mesh does not have");
     for (uint32_t m : mesh.face_materials)
         if (m >= mesh.materials.size()) {
             mesh.face_materials.clear();
@@ -126,6 +129,7 @@ void weld_keeping_attributes(Mesh& mesh, float epsilon) {
     if (colors) gather(vcolors, mesh.colors);
     if (normals) gather(vnormals, mesh.normals);
     for (glm::uvec3& t : mesh.triangles) t = glm::uvec3(remap[t.x], remap[t.y], remap[t.z]);
+    for (glm::uvec2& l : mesh.line_segments) l = glm::uvec2(remap[l.x], remap[l.y]);
     mesh.positions.swap(positions);
     mesh.uvs.swap(vuvs);
     mesh.colors.swap(vcolors);

@@ -446,6 +446,27 @@ Mesh read_obj(const std::string& path, bool& is_soup) {
             corner += n;
         }
     }
+    // `l` polylines: each pair of consecutive corners a loose segment, on the vertex a face
+    // already made at that position when there is one (a line's corners carry no normal).
+    for (const tinyobj::shape_t& shape : shapes) {
+        const auto& idx = shape.lines.indices;
+        size_t corner = 0;
+        for (int count : shape.lines.num_line_vertices) {
+            if (count < 0 || corner + size_t(count) > idx.size())
+                throw InputError(path, "line corner counts do not match the parsed lines");
+            uint32_t prev = kNone;
+            for (size_t k = corner; k < corner + size_t(count); ++k) {
+                const int v = idx[k].vertex_index;
+                if (v < 0 || size_t(v) >= nv) throw InputError(path, "line refers to a vertex that does not exist");
+                const uint32_t id = keyed && first[size_t(v)] != kNone
+                                        ? first[size_t(v)]
+                                        : vertex_of({v, all_normals ? 0 : -1, all_uvs ? 0 : -1});
+                if (prev != kNone && prev != id) mesh.line_segments.emplace_back(prev, id);
+                prev = id;
+            }
+            corner += size_t(count);
+        }
+    }
     is_soup = positions_repeat(attrib.vertices);
     return mesh;
 }

@@ -191,6 +191,29 @@ TEST(LinesCommand, NewerLineKindsAndSectionPlane) {
     }
 }
 
+// An OBJ's `l` lines: `info` counts their segments, `lines --lines loose` draws them (a line
+// through a box sticks out on both sides, so some of it is seen from any side).
+TEST(LinesCommand, LooseLinesOfAnObj) {
+    TempDir dir;
+    std::string obj;
+    for (int i = 0; i < 8; ++i)
+        obj += std::string("v ") + (i & 1 ? "1" : "-1") + (i & 2 ? " 1" : " -1") + (i & 4 ? " 1\n" : " -1\n");
+    obj += "v -2 0 0\nv 2 0 0\nv -2 0.2 0.2\nv 0 0.2 0.2\nv 2 0.2 0.2\n";
+    obj += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+    obj += "l 9 10\nl 11 12 13\n";
+    const std::string model = dir.write("box.obj", obj);
+    auto r = run_cli("info " + model);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("loose line segments:  3\n"), std::string::npos) << r.out;
+    r = run_cli("lines " + model + " --size 320x240 --lines contour,loose -o " + dir.file("b.svg") + " --lines-json " +
+                dir.file("b.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto json = nlohmann::json::parse(slurp(dir.file("b.json")));
+    ASSERT_EQ(json["layers"].size(), 2u);
+    EXPECT_EQ(json["layers"][1]["type"], "loose");
+    EXPECT_FALSE(json["layers"][1]["paths"].empty());
+}
+
 // The rtsc line types beyond contours: each has its SVG layer with paths on the teapot, in the
 // order asked for, and its JSON layer with the parameters; bad values are one-line errors.
 TEST(LinesCommand, IsophotesTopoAndHighlightLayers) {
@@ -408,9 +431,9 @@ TEST(LinesCommand, ImageSpaceTypeIsRejectedWithChoices) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --lines: 'hull' is drawn in the image by `inkshade render`, not as vector lines (choose "
-              "apparent-ridge, border, clip-boundary, contour, crease, external-contour, hatch, intersection, "
-              "isophote, light-contour, material-boundary, principal-highlight, ridge, silhouette, suggestive, "
-              "suggestive-highlight, topo, valley)\n");
+              "apparent-ridge, border, cast-shadow, clip-boundary, contour, crease, external-contour, hatch, "
+              "intersection, isophote, light-contour, loose, material-boundary, principal-highlight, ridge, "
+              "silhouette, suggestive, suggestive-highlight, topo, valley)\n");
     // Seven object-space types at once: each has its layer, in the order given, and the
     // torus seen from 45° above (closed, smooth, no sharp edges, not crossing itself) has
     // contours, suggestive contours on its inner side and ridges, but no creases, no borders

@@ -155,6 +155,27 @@ TEST(BuiltinModels, TeapotStandsOnYZero) {
     EXPECT_NEAR(b.max.z, 2.0f, 1e-5f);
 }
 
+// builtin:teapot:ground=N: N × N quads facing up in the plane y = 0 the teapot stands on, under
+// its centre, wider than it.
+TEST(BuiltinModels, TeapotOnTheGround) {
+    const Mesh plain = teapot(8);
+    const Mesh m = by_name("teapot:subdivisions=8,ground=10");
+    ASSERT_EQ(m.positions.size(), plain.positions.size() + 121);
+    ASSERT_EQ(m.triangles.size(), plain.triangles.size() + 200);
+    ASSERT_EQ(m.normals.size(), m.positions.size());
+    const BoundingBox teapot_box = plain.bounds(), box = m.bounds();
+    EXPECT_EQ(box.min.y, 0.0f);
+    EXPECT_LT(box.min.x, teapot_box.min.x);
+    EXPECT_GT(box.max.z, teapot_box.max.z);
+    for (size_t f = plain.triangles.size(); f < m.triangles.size(); ++f) {
+        const glm::uvec3 t = m.triangles[f];
+        const glm::vec3 n = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+        EXPECT_GT(n.y, 0.0f);  // counter-clockwise seen from above
+        EXPECT_EQ(m.positions[t.x].y, 0.0f);
+    }
+    EXPECT_THROW(by_name("teapot:ground=-1"), InputError);
+}
+
 TEST(BuiltinModels, TeapotTessellationCounts) {
     // 32 patches of 2n² triangles, less the n zero-area triangles of each of the 8 cusp
     // patches (knob top, bottom centre).

@@ -622,16 +622,24 @@ TEST(GltfReader, VrmZeroBlendModesCullModeAndRenderQueuesAreConverted) {
     EXPECT_EQ(m.materials[3].render_order, 0);
 }
 
-TEST(GltfReader, PointsAndLinesAreSkippedWithAWarning) {
+TEST(GltfReader, LinesAreKeptAndPointsSkippedWithAWarning) {
     TempDir dir;
     GltfBuilder g;
     int tri = triangle_mesh(g);
-    int pos = g.floats({0, 0, 0, 1, 0, 0}, "VEC3", 3);
-    int lines = g.mesh({{"POSITION", pos}}, -1, -1, kLines);
-    g.scene({g.node({{"mesh", tri}}), g.node({{"mesh", lines}})});
+    int pos = g.floats({0, 0, 0, 1, 0, 0, 1, 1, 0}, "VEC3", 3);
+    int lines = g.mesh({{"POSITION", pos}}, -1, -1, kLines);  // 3 vertices: one segment, one left over
+    int loop = g.mesh({{"POSITION", pos}}, -1, -1, 2);        // LINE_LOOP: three segments
+    int points = g.mesh({{"POSITION", pos}}, -1, -1, kPoints);
+    g.scene({g.node({{"mesh", tri}}), g.node({{"mesh", lines}, {"translation", {0, 0, 5}}}),
+             g.node({{"mesh", loop}}), g.node({{"mesh", points}})});
     Mesh m = load_mesh(dir.write("mixed.glb", g.glb()));
     EXPECT_EQ(m.triangle_count(), 1u);
-    EXPECT_TRUE(has_warning(m, "1 point or line primitive skipped"));
+    ASSERT_EQ(m.line_segments.size(), 4u);
+    // Placed by their node's transform.
+    EXPECT_EQ(m.positions[m.line_segments[0].x], glm::vec3(0, 0, 5));
+    EXPECT_EQ(m.positions[m.line_segments[0].y], glm::vec3(1, 0, 5));
+    EXPECT_EQ(m.positions[m.line_segments[3].y], glm::vec3(0, 0, 0));  // the loop closes
+    EXPECT_TRUE(has_warning(m, "1 point primitive skipped"));
 }
 
 // --- bad input: one line naming the file and the problem, never a crash ---------------------

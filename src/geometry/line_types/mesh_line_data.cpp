@@ -45,7 +45,7 @@ void take_selection_fields(Mesh& to, M&& from) {
 }
 
 // Positions (padded for Embree), triangles, unit normals, hard-edge shading normals, face
-// materials and what line sets select by, of `mesh`, nothing else.
+// materials, loose line segments and what line sets select by, of `mesh`, nothing else.
 std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Mesh& mesh) {
     auto m = std::make_shared<Mesh>();
     m->positions = std::move(positions);
@@ -56,6 +56,7 @@ std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Me
     m->shading_normals = mesh.shading_normals;
     m->face_materials = mesh.face_materials;
     take_selection_fields(*m, mesh);
+    m->line_segments = mesh.line_segments;
     ensure_vertex_normals(*m);
     return m;
 }
@@ -80,6 +81,7 @@ MeshLineData::MeshLineData(Mesh&& mesh) {
     lines.shading_normals = std::move(mesh.shading_normals);
     lines.face_materials = std::move(mesh.face_materials);  // material-boundary
     take_selection_fields(lines, std::move(mesh));
+    lines.line_segments = std::move(mesh.line_segments);    // loose
     mesh = Mesh();  // colours, uvs and the materials themselves are not needed here
     reserve_embree_padding(lines.positions);
     ensure_vertex_normals(lines);

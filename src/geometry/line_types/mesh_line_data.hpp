@@ -40,8 +40,8 @@ public:
     // not even sane, a copy is made as above). Only positions, triangles, normals and face materials are read.
     explicit MeshLineData(std::shared_ptr<const Mesh> mesh);
 
-    // Positions, triangles, unit normals, face materials and materials (colours or uvs are there
-    // when shared, unread).
+    // Positions, triangles, unit normals, face materials, materials (names and colours) and
+    // loose line segments (colours or uvs are there when shared, unread).
     const Mesh& mesh() const { return *mesh_; }
     const std::vector<glm::vec3>& normals() const { return mesh_->normals; }
 
