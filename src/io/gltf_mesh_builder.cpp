@@ -140,13 +140,7 @@ void GltfMeshBuilder::add_lines(const tinygltf::Primitive& prim, const GltfInsta
     if (n == 0) return;
     if (n > kMaxGltfVertices - mesh_.positions.size())
         reader_.fail("more than " + std::to_string(kMaxGltfVertices) + " vertices in the scene");
-    std::vector<uint32_t> corners;
-    if (prim.indices >= 0) {
-        corners = reader_.indices(prim.indices, "indices of " + where, n);
-    } else {
-        corners.resize(n);
-        for (size_t i = 0; i < n; ++i) corners[i] = uint32_t(i);
-    }
+    const std::vector<uint32_t> corners = vertex_indices(prim, n, where);
     const size_t base = mesh_.positions.size();
     append_positions_and_normals(pos, std::vector<float>(normals_complete_ ? 3 * n : 0, 0.0f), n, instance.transform);
     if (normals_complete_)
@@ -164,18 +158,20 @@ void GltfMeshBuilder::add_lines(const tinygltf::Primitive& prim, const GltfInsta
     }
 }
 
+std::vector<uint32_t> GltfMeshBuilder::vertex_indices(const tinygltf::Primitive& prim, size_t n,
+                                                      const std::string& where) {
+    if (prim.indices >= 0) return reader_.indices(prim.indices, "indices of " + where, n);
+    std::vector<uint32_t> all(n);
+    for (size_t i = 0; i < n; ++i) all[i] = uint32_t(i);
+    return all;
+}
+
 // The primitive's triangles over its `n` vertices (section 3.7.2.1 gives the strip and fan
 // orders), its indices read and the scene's vertex and triangle limits checked; `mirror` (a
 // mirroring transform) swaps two corners so the front face stays counter-clockwise.
 std::vector<glm::uvec3> GltfMeshBuilder::triangles(const tinygltf::Primitive& prim, int mode, size_t n, bool mirror,
                                                    const std::string& where) {
-    std::vector<uint32_t> corners;
-    if (prim.indices >= 0) {
-        corners = reader_.indices(prim.indices, "indices of " + where, n);
-    } else {
-        corners.resize(n);
-        for (size_t i = 0; i < n; ++i) corners[i] = uint32_t(i);
-    }
+    const std::vector<uint32_t> corners = vertex_indices(prim, n, where);
     if (n > kMaxGltfVertices - mesh_.positions.size())
         reader_.fail("more than " + std::to_string(kMaxGltfVertices) + " vertices in the scene");
 

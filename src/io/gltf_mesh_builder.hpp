@@ -56,6 +56,8 @@ private:
     void add_lines(const tinygltf::Primitive& prim, const GltfInstance& instance, int mode, const std::string& where);
     std::vector<glm::uvec3> triangles(const tinygltf::Primitive& prim, int mode, size_t n, bool mirror,
                                       const std::string& where);
+    // The primitive's vertex indices: its index accessor's (checked against `n`), else 0..n-1.
+    std::vector<uint32_t> vertex_indices(const tinygltf::Primitive& prim, size_t n, const std::string& where);
     Attributes attributes(const tinygltf::Primitive& prim, size_t n, const std::string& where);
     uint32_t object_of(int node);
     std::vector<uint8_t> face_marks(const tinygltf::Primitive& prim, const std::vector<glm::uvec3>& tris, size_t n,

@@ -12,19 +12,11 @@
 #include "geometry/normals.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
+#include "support/off_text.hpp"
 #include "support/temp_dir.hpp"
 
 namespace inkshade::geometry {
 namespace {
-
-std::string off_text(const Mesh& m) {
-    std::ostringstream out;
-    out.precision(9);
-    out << "OFF\n" << m.positions.size() << " " << m.triangles.size() << " 0\n";
-    for (const glm::vec3& p : m.positions) out << p.x << " " << p.y << " " << p.z << "\n";
-    for (const glm::uvec3& t : m.triangles) out << "3 " << t.x << " " << t.y << " " << t.z << "\n";
-    return out.str();
-}
 
 // Share of the edges of two faces whose face normals differ by more than `degrees`.
 double sharp_edge_share(const Mesh& m, float degrees) {
@@ -43,7 +35,7 @@ TEST(NoisyScanContour, DefaultAutoSmoothDrawsTheSilhouetteCircleOnly) {
     const Mesh sphere = test::noisy_sphere(64, 0.2f);
     ASSERT_GT(sharp_edge_share(sphere, 30.0f), 0.05);  // the noise exceeds the default angle often
     test::TempDir dir;
-    const Mesh loaded = load_mesh(dir.write("scan.off", off_text(sphere)));  // default --smooth-angle 30
+    const Mesh loaded = load_mesh(dir.write("scan.off", test::off_text(sphere)));  // default --smooth-angle 30
 
     Camera camera;
     camera.eye = {0.6f, 0.8f, 4.0f};

@@ -16,19 +16,11 @@
 #include "geometry/visibility.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/line_drawing.hpp"
+#include "support/off_text.hpp"
 #include "support/temp_dir.hpp"
 
 namespace inkshade::geometry {
 namespace {
-
-std::string off_text(const Mesh& m) {
-    std::ostringstream out;
-    out.precision(9);
-    out << "OFF\n" << m.positions.size() << " " << m.triangles.size() << " 0\n";
-    for (const glm::vec3& p : m.positions) out << p.x << " " << p.y << " " << p.z << "\n";
-    for (const glm::uvec3& t : m.triangles) out << "3 " << t.x << " " << t.y << " " << t.z << "\n";
-    return out.str();
-}
 
 // Angle-weighted vertex normals, computed here in double (not with src/geometry/normals.cpp).
 std::vector<glm::dvec3> angle_weighted_normals(const Mesh& m) {
@@ -102,7 +94,7 @@ TEST(SmoothContour, CoarseCadPartDrawsTheVertexNormalsZeroCrossings) {
     test::TempDir dir;
     LoadOptions options;
     options.smooth_angle = 180.0f;  // rtsc's normals: averaged across every edge
-    const Mesh loaded = load_mesh(dir.write("part.off", off_text(part)), options);
+    const Mesh loaded = load_mesh(dir.write("part.off", test::off_text(part)), options);
     ASSERT_FALSE(loaded.has_hard_edges());
     const std::vector<glm::dvec3> normals = angle_weighted_normals(part);
 
