@@ -102,6 +102,14 @@ std::vector<Flat> project_faces(const Mesh& mesh, const ImageProjection& proj, c
         if (poly.size() < 3) continue;
         std::vector<glm::dvec3> image(poly.size());
         for (size_t i = 0; i < poly.size(); ++i) image[i] = proj.project(glm::vec3(poly[i]));
+        // Kept within a guard frame far outside the image, so Clipper's integers never overflow;
+        // depth is affine in the image, so the cut points keep exact depths.
+        const double guard = 64.0 * std::max(proj.width(), proj.height());
+        for (int axis = 0; axis < 2; ++axis) {
+            image = clip(image, [&](const glm::dvec3& q) { return q[axis] - guard; });
+            image = clip(image, [&](const glm::dvec3& q) { return -guard - q[axis]; });
+        }
+        if (image.size() < 3) continue;
         std::vector<glm::dvec2> outline(image.size());
         for (size_t i = 0; i < image.size(); ++i) outline[i] = glm::dvec2(image[i]);
         const double a = area(outline);

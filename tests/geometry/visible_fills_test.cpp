@@ -109,6 +109,16 @@ TEST(VisibleFills, RegionsStayInTheImage) {
     EXPECT_NEAR(region_area(fills[0]), 120.0 * 100.0, 1e-2);
 }
 
+// A plate many orders of magnitude larger than the view (its corners far past any integer
+// range of the polygon clipper at 1/1024 px) still fills exactly the image.
+TEST(VisibleFills, HugeFacesAreCutBeforeClipping) {
+    Mesh m;
+    add_quad(m, {0.0f, 0.0f, 0.0f}, 1.0e6f, 0);
+    const auto fills = visible_fills(m, ortho_camera(1.0e-9f), 100, 100, std::nullopt, glm::vec3(1.0f));
+    ASSERT_EQ(fills.size(), 1u);
+    EXPECT_NEAR(region_area(fills[0]), 100.0 * 100.0, 1e-2);
+}
+
 // A section plane through the centre, cutting away the half towards the camera: the inside
 // of the far half shows, the whole disc of the sphere's radius (orthographic).
 TEST(VisibleFills, SectionOpensTheSphere) {
