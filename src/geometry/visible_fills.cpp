@@ -96,9 +96,8 @@ std::vector<Flat> project_faces(const Mesh& mesh, const ImageProjection& proj, c
         std::vector<glm::dvec3> poly = {glm::dvec3(mesh.positions[t.x]), glm::dvec3(mesh.positions[t.y]),
                                         glm::dvec3(mesh.positions[t.z])};
         if (section) poly = clip(poly, [&](const glm::dvec3& p) { return section->distance(glm::vec3(p)); });
-        poly = clip(poly, [&](const glm::dvec3& p) {
-            return double(camera.near_plane) - proj.view_depth(glm::vec3(p));
-        });
+        poly =
+            clip(poly, [&](const glm::dvec3& p) { return double(camera.near_plane) - proj.view_depth(glm::vec3(p)); });
         if (poly.size() < 3) continue;
         std::vector<glm::dvec3> image(poly.size());
         for (size_t i = 0; i < poly.size(); ++i) image[i] = proj.project(glm::vec3(poly[i]));
@@ -139,7 +138,8 @@ std::vector<Flat> project_faces(const Mesh& mesh, const ImageProjection& proj, c
 cl::Path to_path(const std::vector<glm::dvec2>& poly) {
     cl::Path path;
     path.reserve(poly.size());
-    for (const glm::dvec2& q : poly) path.emplace_back(cl::cInt(std::llround(q.x * kUnits)), cl::cInt(std::llround(q.y * kUnits)));
+    for (const glm::dvec2& q : poly)
+        path.emplace_back(cl::cInt(std::llround(q.x * kUnits)), cl::cInt(std::llround(q.y * kUnits)));
     return path;
 }
 
@@ -263,7 +263,8 @@ std::vector<FillRegion> visible_fills(const Mesh& mesh, const Camera& camera, in
         if (groups.empty() || groups.back().size() >= 16) groups.emplace_back();
         groups.back().insert(groups.back().end(), pieces[i].begin(), pieces[i].end());
     }
-    const cl::Path frame = to_path({{0.0, 0.0}, {double(width), 0.0}, {double(width), double(height)}, {0.0, double(height)}});
+    const cl::Path frame =
+        to_path({{0.0, 0.0}, {double(width), 0.0}, {double(width), double(height)}, {0.0, double(height)}});
     std::vector<FillRegion> regions;
     for (auto& [material, groups] : by_material) {
         // The joined pieces, cut to the image.
@@ -279,7 +280,8 @@ std::vector<FillRegion> visible_fills(const Mesh& mesh, const Camera& camera, in
         for (const cl::Path& path : joined) {
             std::vector<glm::vec2> ring;
             ring.reserve(path.size());
-            for (const cl::IntPoint& q : path) ring.emplace_back(float(double(q.X) / kUnits), float(double(q.Y) / kUnits));
+            for (const cl::IntPoint& q : path)
+                ring.emplace_back(float(double(q.X) / kUnits), float(double(q.Y) / kUnits));
             region.rings.push_back(std::move(ring));
         }
         regions.push_back(std::move(region));

@@ -89,9 +89,9 @@ void apply_drawing_sheet(const SceneRequest& r, Scene& scene) {
         scene.size_from_camera = false;  // the sheet, not a file camera, gives the aspect
         if (!r.drawing_scale.empty()) {
             const float scale = parse_drawing_scale(name("scale"), r.drawing_scale);
-            for (auto [set, option] : {std::pair{!r.file_camera.empty(), "camera"},
-                                       std::pair{bool(r.camera.ortho_height), "ortho-height"},
-                                       std::pair{bool(r.camera.distance), "distance"}})
+            for (auto [set, option] :
+                 {std::pair{!r.file_camera.empty(), "camera"}, std::pair{bool(r.camera.ortho_height), "ortho-height"},
+                  std::pair{bool(r.camera.distance), "distance"}})
                 if (set)
                     throw InputError(name("scale") + " and " + name(option) +
                                      " are alternatives: a drawing to scale sets the view's extent");

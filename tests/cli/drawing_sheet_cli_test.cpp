@@ -107,7 +107,8 @@ TEST(DrawingSheet, Iso128HiddenAndSectionLines) {
 TEST(DrawingSheet, MillimetresWithoutASheetAreCssPixels) {
     TempDir dir;
     {
-        std::ofstream(dir.file("mm.toml")) << "line-unit = \"mm\"\n[shading]\nmodel = \"flat\"\n[[lines]]\ntype = \"crease\"\nwidth = 1.0\n";
+        std::ofstream(dir.file("mm.toml"))
+            << "line-unit = \"mm\"\n[shading]\nmodel = \"flat\"\n[[lines]]\ntype = \"crease\"\nwidth = 1.0\n";
         std::ofstream(dir.file("cm.toml")) << "line-unit = \"cm\"\n[shading]\nmodel = \"flat\"\n";
     }
     auto r = run_cli("lines " + write_box(dir) + " --style " + dir.file("mm.toml") + " -o " + dir.file("c.svg"));

@@ -28,7 +28,8 @@ double ring_area(const std::vector<glm::vec2>& ring) {
 double region_area(const FillRegion& r) {
     double outer = 0.0, holes = 0.0, largest = 0.0;
     for (const auto& ring : r.rings) largest = std::max(largest, std::abs(ring_area(ring)));
-    for (const auto& ring : r.rings) (std::abs(ring_area(ring)) == largest ? outer : holes) += std::abs(ring_area(ring));
+    for (const auto& ring : r.rings)
+        (std::abs(ring_area(ring)) == largest ? outer : holes) += std::abs(ring_area(ring));
     return outer - holes;
 }
 
