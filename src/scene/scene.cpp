@@ -294,6 +294,8 @@ void check_request(const SceneRequest& r) {
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
     check_file_scene_alternatives(r);
     parse_aovs(r);
+    if (r.svg_fill && !r.outputs.line_drawing)
+        throw InputError(name("svg-fill") + ": fills come with an SVG line drawing (`lines`), not with an image alone");
 }
 
 Scene make_scene(const SceneRequest& r) {

@@ -499,6 +499,12 @@ TEST(LinesCommand, SvgFillUnderTheStrokes) {
     r = run_cli("lines builtin:sphere --size 200x200 --lines contour -o " + dir.file("n.svg"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(dir.file("n.svg")).find("id=\"fills\""), std::string::npos);
+    // An image has no SVG to fill: said, not ignored.
+    r = run_cli("render builtin:sphere --size 64x64 --svg-fill -o " + dir.file("r.png"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--svg-fill: fills come with an SVG line drawing"), std::string::npos) << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("r.png")));
 }
 
 }  // namespace
