@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <map>
 
+#include "geometry/orientation.hpp"
 #include "geometry/visibility.hpp"
 
 namespace inkshade::geometry {
@@ -65,30 +66,12 @@ double depth_at(const Flat& f, glm::dvec2 q) {
     return f.z[0] + b1 * (f.z[1] - f.z[0]) + b2 * (f.z[2] - f.z[0]);
 }
 
-bool closed_mesh(const Mesh& mesh) {
-    std::vector<uint64_t> edges;
-    edges.reserve(mesh.triangles.size() * 3);
-    for (const glm::uvec3& t : mesh.triangles)
-        for (int e = 0; e < 3; ++e) {
-            const uint64_t a = t[e], b = t[(e + 1) % 3];
-            edges.push_back(std::min(a, b) << 32 | std::max(a, b));
-        }
-    std::sort(edges.begin(), edges.end());
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        if (j - i != 2) return false;
-        i = j;
-    }
-    return !edges.empty();
-}
-
 // The faces' visible pieces projected: clipped by the section and near planes, fanned into
 // triangles, counter-clockwise in the image; back faces left out on a closed mesh.
 std::vector<Flat> project_faces(const Mesh& mesh, const ImageProjection& proj, const Camera& camera,
                                 const std::optional<SectionPlane>& section) {
     // A section opens a closed mesh: its inside, back faces, shows through the cut.
-    const bool cull = !section && closed_mesh(mesh);
+    const bool cull = !section && is_closed_outward(mesh);
     const bool materials = mesh.face_materials.size() == mesh.triangles.size();
     std::vector<Flat> flats;
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {

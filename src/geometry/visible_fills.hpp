@@ -16,7 +16,7 @@ namespace inkshade::geometry {
 // cross in space keep one depth order over their whole overlap, which is convex, so one test
 // at its centroid decides), then the parts are joined per material. Faces on the cut-away
 // side of `section` and in front of the near plane are clipped off first; on a closed mesh
-// (every edge shared by two faces) without a section, back faces are skipped, hidden by the
+// (is_closed_outward) without a section, back faces are skipped, hidden by the
 // front ones.
 // Faces that cross each other are ordered at the centroid of their overlap. `base_color`
 // fills a mesh without materials.
