@@ -317,12 +317,11 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
     }
     // Hidden levels are dashed by the viewer unless the layer's own dash pattern already cut
     // its strokes into dashes.
-    double dash_sum = 0.0;
-    for (float v : line_param(layer.settings, "dash")) dash_sum += double(v);
-    if (hidden && dash_sum <= 0.0) {
+    const auto total = [](const ParamValue& pattern) { return std::accumulate(pattern.begin(), pattern.end(), 0.0); };
+    if (hidden && total(line_param(layer.settings, "dash")) <= 0.0) {
         const ParamValue& pattern = line_param(layer.settings, "hidden-dash");
         std::string dashes;
-        if (std::accumulate(pattern.begin(), pattern.end(), 0.0) > 0.0) {
+        if (total(pattern) > 0.0) {
             for (float v : pattern) dashes += (dashes.empty() ? "" : " ") + number(v);
         } else {
             // Dashes scale with the stroke so thick hidden lines still read as dashed.
@@ -349,8 +348,9 @@ void write_layer(std::string& out, const std::string& id, const LineLayer& layer
 // layer under the strokes.
 void write_fills(std::string& out, const std::vector<FillRegion>& fills) {
     if (fills.empty()) return;
-    out += "<g id=\"fills\" inkscape:groupmode=\"layer\" inkscape:label=\"fills\" stroke=\"none\" "
-           "fill-rule=\"evenodd\">\n";
+    out +=
+        "<g id=\"fills\" inkscape:groupmode=\"layer\" inkscape:label=\"fills\" stroke=\"none\" "
+        "fill-rule=\"evenodd\">\n";
     for (const FillRegion& region : fills) {
         std::string d;
         for (const std::vector<glm::vec2>& ring : region.rings) {
