@@ -52,6 +52,9 @@ struct LineSegment {
     // of one function (isophotes, topographic lines: the level's index). Chaining joins only
     // ends of one isoline: two levels crossing the same mesh edge share its node key.
     uint32_t isoline = 0;
+    // An intersection whose two objects differ in priority (intersection_priority.hpp): it
+    // belongs to `face`'s object alone, so a line set selects it by `face` only.
+    bool owned = false;
 };
 
 // The contour's name for the shared segment type.

@@ -60,7 +60,7 @@ SelectedFaces::SelectedFaces(const Mesh& mesh, const FaceSelection& selection)
 }
 
 bool SelectedFaces::keeps(const LineSegment& s) const {
-    for (uint32_t f : {s.face, s.face_b})
+    for (uint32_t f : {s.face, s.owned ? kNoFace : s.face_b})
         if (f < selected_.size() && selected_[f]) return true;
     const auto vertex = [](uint64_t key) { return uint32_t(key >> 32) == uint32_t(key); };
     if (!vertex(s.edge_a) || !vertex(s.edge_b)) return false;

@@ -22,7 +22,8 @@ class SelectedFaces {
 public:
     SelectedFaces(const Mesh& mesh, const FaceSelection& selection);
     // A segment is kept when it lies on a selected face: the face it crosses or, for an
-    // intersection or a hard-edge contour, its second face; for a line along a mesh edge
+    // intersection (unless its owner is decided by priority: LineSegment::owned) or a
+    // hard-edge contour, its second face; for a line along a mesh edge
     // (crease, border, material boundary) either face of that edge, found by position as those
     // types find their edges (Freestyle selects an edge when either of its faces is selected).
     bool keeps(const LineSegment& s) const;

@@ -22,8 +22,12 @@ void assign_intersection_owners(std::vector<LineSegment>& segments, const std::v
         const uint32_t k = face < objects.size() ? objects[face] : kNoObject;
         return k < priorities.size() ? priorities[k] : 0.0f;
     };
-    for (LineSegment& s : segments)
-        if (s.face_b != kNoFace && priority(s.face_b) > priority(s.face)) std::swap(s.face, s.face_b);
+    for (LineSegment& s : segments) {
+        if (s.face_b == kNoFace) continue;
+        const float a = priority(s.face), b = priority(s.face_b);
+        if (b > a) std::swap(s.face, s.face_b);
+        s.owned = a != b;
+    }
 }
 
 }  // namespace inkshade::geometry

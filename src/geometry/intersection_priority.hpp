@@ -16,8 +16,10 @@ namespace inkshade::geometry {
 std::vector<uint32_t> object_numbers(const std::vector<uint32_t>& face_objects);
 
 // Swaps face and face_b of each segment whose face_b's object has the higher priority
-// (`priorities[k]` for object k, 0 past the list), so that `face` is on the owner; on a tie the
-// segment stays as extracted (face < face_b). `objects`: object_numbers, one per face.
+// (`priorities[k]` for object k, 0 past the list), so that `face` is on the owner, and marks it
+// `owned` when the priorities differ (a line set then takes it by its owner's face alone, as
+// Line Art gives the line to the owner's collection); on a tie the segment stays as extracted
+// (face < face_b) and belongs to both objects. `objects`: object_numbers, one per face.
 void assign_intersection_owners(std::vector<LineSegment>& segments, const std::vector<uint32_t>& objects,
                                 const std::vector<float>& priorities);
 

@@ -1,11 +1,13 @@
 // Intersection priority (Line Art): two boxes crossing, the line where they meet belongs to the
-// box of higher priority — every segment's `face` is on it — whichever box comes first.
+// box of higher priority — every segment's `face` is on it — whichever box comes first, and
+// only that box's line set draws it.
 #include "geometry/intersection_priority.hpp"
 
 #include <gtest/gtest.h>
 
 #include "analytic_meshes.hpp"
 #include "geometry/connected_objects.hpp"
+#include "geometry/face_selection.hpp"
 #include "geometry/intersection_lines.hpp"
 #include "geometry/line_types/object_line_registry.hpp"
 #include "geometry/visibility.hpp"
@@ -55,6 +57,27 @@ TEST(IntersectionPriority, TheLineBelongsToTheHigherPriorityBox) {
     expect_owner({3.0f, 1.0f}, false);  // A over B
     expect_owner({0.0f}, false);        // a tie: as extracted, the lower face (box A's)
     expect_owner({1.0f}, false);        // B past the list: priority 0
+}
+
+TEST(IntersectionPriority, ALineSetTakesTheLinesItsObjectOwns) {
+    // Each box selected by a line set: the line where they cross is drawn by both sets on a
+    // tie, and by the higher-priority box's set alone when the priorities differ.
+    Mesh mesh = two_boxes();
+    mesh.object_names = {"A", "B"};
+    for (uint32_t f = 0; f < 24; ++f) mesh.face_objects.push_back(f < 12 ? 0u : 1u);
+    const SelectedFaces in_a(mesh, {.objects = {"A"}}), in_b(mesh, {.objects = {"B"}});
+    const auto kept = [&](const SelectedFaces& set, const std::vector<float>& priorities) {
+        std::vector<LineSegment> segments = owned_segments(mesh, priorities);
+        set.filter(segments);
+        return segments.size();
+    };
+    const size_t count = extract_intersections(mesh).size();
+    EXPECT_EQ(kept(in_a, {0.0f}), count);
+    EXPECT_EQ(kept(in_b, {0.0f}), count);
+    EXPECT_EQ(kept(in_a, {0.0f, 2.0f}), 0u);
+    EXPECT_EQ(kept(in_b, {0.0f, 2.0f}), count);
+    EXPECT_EQ(kept(in_a, {3.0f, 1.0f}), count);
+    EXPECT_EQ(kept(in_b, {3.0f, 1.0f}), 0u);
 }
 
 }  // namespace
