@@ -32,7 +32,7 @@ struct BatchArgs {
     std::string format = "png";
     SceneOptions scene;  // the option table's batch options: the defaults of the manifest's columns
     std::string shard;
-    bool force = false, dry_run = false, quiet = false;
+    bool force = false, dry_run = false, quiet = false, transforms_json = false;
 };
 
 // Set by SIGINT/SIGTERM; run_batch checks it between jobs. Lock-free, so the handler may.
@@ -153,6 +153,7 @@ int run_batch_command(const BatchArgs& args, const CLI::App& cmd) {
     BatchOptions options;
     options.output_dir = args.output;
     options.force = args.force;
+    options.transforms_json = args.transforms_json;
     options.stop = &g_stop;
     BatchProgressPrinter printer(::isatty(STDERR_FILENO) != 0, args.quiet);
     BatchSummary summary;
@@ -194,6 +195,9 @@ Command add_batch_command(CLI::App& app) {
     args->scene.add_to(*cmd, kBatch, /*model=*/false, false, " (where the manifest gives none)");
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");
+    cmd->add_flag("--transforms-json", args->transforms_json,
+                  "at the end, write transforms.json (instant-ngp / nerfstudio cameras) in each output directory, "
+                  "listing its complete jobs");
     cmd->add_flag("--dry-run", args->dry_run, "list the jobs (stem, model, style, view, size, formats) and exit");
     cmd->add_flag("-q,--quiet", args->quiet, "print failures and the summary only");
     return [args, cmd] { return run_batch_command(*args, *cmd); };
