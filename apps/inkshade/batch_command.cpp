@@ -34,7 +34,7 @@ struct BatchArgs {
     SceneOptions scene;  // the option table's batch options: the defaults of the manifest's columns
     std::string shard;
     std::string layout = "folder", shard_size = "1GB", shard_prefix = "shard", verify;
-    bool force = false, dry_run = false, quiet = false;
+    bool force = false, dry_run = false, quiet = false, transforms_json = false;
 };
 
 // Set by SIGINT/SIGTERM; run_batch checks it between jobs. Lock-free, so the handler may.
@@ -135,6 +135,8 @@ BatchOptions layout_options(const BatchArgs& args, const CLI::App& cmd) {
             if (cmd.count(option)) throw InputError(std::string(option) + ": only with --layout webdataset");
         return o;
     }
+    // transforms.json names image files beside it; a shard's images are inside tar files.
+    if (args.transforms_json) throw InputError("--transforms-json: only with --layout folder");
     o.shard_size = parse_shard_size(args.shard_size);
     if (args.shard_prefix.empty() || args.shard_prefix.front() == '.' ||
         args.shard_prefix.find('/') != std::string::npos)
@@ -193,6 +195,7 @@ int run_batch_command(const BatchArgs& args, const CLI::App& cmd) {
 
     options.output_dir = args.output;
     options.force = args.force;
+    options.transforms_json = args.transforms_json;
     options.stop = &g_stop;
     BatchProgressPrinter printer(::isatty(STDERR_FILENO) != 0, args.quiet);
     BatchSummary summary;
@@ -245,6 +248,9 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--verify", args->verify,
                     "check DIR against the jobs instead of rendering: every job present and its files readable");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");
+    cmd->add_flag("--transforms-json", args->transforms_json,
+                  "at the end, write transforms.json (instant-ngp / nerfstudio cameras) in each output directory, "
+                  "listing its complete jobs");
     cmd->add_flag("--dry-run", args->dry_run, "list the jobs (stem, model, style, view, size, formats) and exit");
     cmd->add_flag("-q,--quiet", args->quiet, "print failures and the summary only");
     return [args, cmd] { return run_batch_command(*args, *cmd); };

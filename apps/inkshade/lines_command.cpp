@@ -20,6 +20,7 @@
 #include "inkshade/scene.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_scanner.hpp"
+#include "mesh_export.hpp"
 #include "mesh_warnings.hpp"
 #include "output_path.hpp"
 #include "scene_options.hpp"
@@ -120,6 +121,7 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
                                           " (write .svg, .png, .jpg or .jpeg)");
     }
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);
+    MeshExport exported(request);
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
     request.hidden = args.hidden;
@@ -132,6 +134,7 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
     double load_ms = 0.0;
     Mesh mesh = load_scene_model(scene, load_ms);
     const Camera camera = scene.frame(mesh);
+    exported.keep(mesh);
 
     const size_t triangles = mesh.triangle_count();
     LineExtractor extractor(std::move(mesh));  // takes the mesh's arrays: no copy
@@ -148,6 +151,7 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
     };
     if (args.lines_json.empty()) {
         write_output();
+        exported.write({args.output});
         return 0;
     }
     // Both files or neither: the JSON is removed again if the drawing cannot be written.
@@ -159,6 +163,7 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
         std::filesystem::remove(args.lines_json, ec);
         throw;
     }
+    exported.write({args.output, args.lines_json});
     return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "inkshade/error.hpp"
 #include "inkshade/io.hpp"
 #include "inkshade/scene.hpp"
+#include "mesh_export.hpp"
 #include "mesh_warnings.hpp"
 #include "output_path.hpp"
 #include "scene_options.hpp"
@@ -53,12 +54,14 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     const ImageOutput output = image_output(args.output, args.image);
     if (!args.save_style.empty()) check_output_path("--save-style", args.save_style);
     request.added_lines = split_names(args.lines).value_or(std::vector<std::string>{});
+    MeshExport exported(request);
     Scene scene = make_scene(request);
     if (scene.model.empty()) throw InputError("MODEL is required (a mesh file or builtin:NAME), or --scene FILE");
     check_background(output, scene.options.background);
     const RenderOptions& options = scene.options;
     double load_ms = 0.0;
     Mesh mesh = load_scene_model(scene, load_ms);
+    exported.keep(mesh);
     const BoundingBox box = mesh.bounds();
     const Camera camera = scene.frame(mesh);
     const Light light = scene.light(box, camera);
@@ -108,6 +111,7 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
     try {  // every file or none: the image and the AOVs beside it are removed when a later file fails
         if (!scene.aovs.empty()) write_aov_files(args.output, scene.aovs, aovs, camera_record(scene, camera, box));
         if (!args.save_style.empty()) save_style(args.save_style, scene.style);
+        exported.write({});
     } catch (...) {
         std::error_code ec;
         std::filesystem::remove(args.output, ec);

@@ -23,6 +23,8 @@ struct BatchView {
     std::string name;  // the file-name part of the job's stem: "az045_el30", "cam1", "front"
     CameraOptions camera;
     std::string file_camera;  // a camera of the model file instead (SceneRequest::file_camera)
+    // An orbit view turned about its view axis (roll_view); unset: none.
+    std::optional<float> roll_degrees;
 };
 
 struct BatchOutputs {
@@ -36,6 +38,7 @@ struct BatchJob {
     BatchView view;
     BatchOutputs outputs;
     std::string stem;    // outputs without extension, relative to the output directory
+    std::string name;    // the model part of the stems (NAME), and of NAME.mesh.EXT (export-mesh)
     std::string source;  // where the job comes from, for messages: "jobs.csv:7", "--models"
     // The job's scene options: those of the option table that batch takes (inkshade/options.hpp:
     // size, samples, projection and framing, up axis, smooth angle, lights, AOVs, occlusion
@@ -62,14 +65,19 @@ struct BatchDefaults {
 };
 
 // A view list: items separated by ',' or ';' —
-//   orbitAxE          A azimuths i*360/A (from 0) at each of E elevations k*90/E (from 0):
+//   orbit:AxE, orbitAxE  A azimuths i*360/A (from 0) at each of E elevations k*90/E (from 0):
 //                     orbit8x3 = 24 views at elevations 0, 30, 60
 //   turntable:N[:EL]  N azimuths i*360/N at elevation EL (default 20)
+//   fibonacci:N       the Fibonacci lattice's N directions (docs/cli.md), fibN_III
+//   ico:LEVEL         an icosahedron's vertices subdivided LEVEL (0..4) times, icoL_III
+//   random:N:SEED[:roll=DEG][:dist=LO-HI]  N uniform directions from SplitMix64(SEED), with a
+//                     roll in [-DEG, DEG] and a distance in [LO, HI] when given, rndSEED_III
 //   AZ:EL[:DIST]      one orbit view (degrees; distance in world units, default auto-framed)
 //   camera=NAME       the model file's camera NAME (or index; glTF), as `render --camera`
 // and, separated from other items by ';' only (its vectors hold commas), an explicit camera
 //   eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]   (target default: the model centre)
-// Views are named azAAA_elEE[_dD] (azimuth zero-padded to 3 digits), explicit cameras camN
+// Views are named azAAA_elEE[_dD] (azimuth zero-padded to 3 digits), the sets on the sphere
+// PREFIX_III (view index zero-padded to the digits of N - 1, at least 3), explicit cameras camN
 // (N counts them from 1) unless named, file cameras camera-NAME (characters other than
 // letters, digits, - _ . as _). Throws InputError("view 'ITEM': problem") for a bad
 // item, and for a duplicate name or an empty list.
@@ -179,6 +187,9 @@ struct BatchOptions {
     // bytes (a sample bigger than it gets a shard of its own); shards are PREFIX-000000.tar, ...
     uint64_t shard_size = 1'000'000'000;
     std::string shard_prefix = "shard";
+    // At the end of the run, each directory of the jobs' images gets transforms.json, listing
+    // its complete jobs (a resumed run's too; docs/cli.md#batch).
+    bool transforms_json = false;
     // Checked between jobs: once true, run_batch returns after the job in progress (a signal
     // handler may set it). Nothing partial is left: every file is written atomically.
     const std::atomic<bool>* stop = nullptr;
@@ -207,6 +218,8 @@ struct BatchSummary {
 // when a closed shard holds its sample with its job hash. Shards holding a sample that is no
 // longer a job with that hash are removed with every later one, and their jobs rendered again;
 // the last shard is reopened (copied, then extended) while the next sample still fits in it.
+// Last, with options.transforms_json (folder layout only), each directory of the jobs' images
+// gets transforms.json.
 BatchSummary run_batch(const std::vector<BatchJob>& jobs, const BatchOptions& options,
                        const BatchProgress& progress = {});
 

@@ -110,6 +110,9 @@ struct SceneRequest {
     std::vector<std::string> aovs;
     // `--lineset-ids`: the lineset-ids AOV besides `aovs` (unset: only when aovs names it).
     std::optional<bool> lineset_ids;
+    // `--export-mesh`: the mesh as loaded and framed, written as FILE.obj or FILE.ply (write_mesh);
+    // in batch the format alone, `obj` or `ply`: OUTPUT_DIR/NAME.mesh.EXT once per model. Empty: none.
+    std::string export_mesh;
 
     SceneOutputs outputs;
     OptionNames names = OptionNames::Cli;

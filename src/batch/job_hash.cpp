@@ -81,6 +81,7 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     text += "view=" + job.view.name + " az=" + optional_number(c.azimuth_degrees) +
             " el=" + optional_number(c.elevation_degrees) + " dist=" + optional_number(c.distance) +
             " eye=" + optional_vec3(c.eye) + " target=" + optional_vec3(c.target) + " up=" + optional_vec3(c.up);
+    if (job.view.roll_degrees) text += " roll=" + number(*job.view.roll_degrees);  // only when set: earlier hashes stay
     // Options added after a job was hashed write nothing at their default, so the job keeps its hash.
     text += hashed_options(r, /*view_line=*/true) + "\n";
     text += "size=" + std::to_string(r.size.x) + "x" + std::to_string(r.size.y) +

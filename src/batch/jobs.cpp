@@ -34,7 +34,18 @@ std::string style_stem_name(const std::string& style) {
     return file_safe(style);
 }
 
+// Whether two jobs' meshes are the same: one model in one pose (export-mesh writes it once).
+bool same_mesh(const BatchJob& a, const BatchJob& b) {
+    const SceneRequest &x = a.options, &y = b.options;
+    return a.model == b.model && x.animation == y.animation && x.time == y.time && x.expressions == y.expressions &&
+           x.morphs == y.morphs && x.spring_bones == y.spring_bones;
+}
+
 }  // namespace
+
+std::string mesh_file_stem(const BatchJob& job) {
+    return job.options.export_mesh.empty() ? std::string() : job.name + ".mesh." + job.options.export_mesh;
+}
 
 std::string trim(std::string_view text) {
     const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
@@ -106,6 +117,9 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
     }
     const std::string name = group.name.empty() ? model_name(group.model) : group.name;
     check_relative_stem("name", name);
+    if (!group.options.export_mesh.empty() && group.options.export_mesh != "obj" && group.options.export_mesh != "ply")
+        throw InputError("export-mesh: batch takes obj or ply (it writes NAME.mesh.EXT in the output directory), got " +
+                         io::quote_token(group.options.export_mesh));
     if (!group.output.empty()) {
         check_relative_stem("output", group.output);
         if (views.size() * styles.size() != 1)
@@ -119,6 +133,7 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
             job.style = style;
             job.outputs = group.outputs;
             job.stem = group.output.empty() ? name + "/" + style_stem_name(style) + "/" + view.name : group.output;
+            job.name = name;
             job.view = std::move(view);
             job.source = group.source;
             job.options = group.options;
@@ -128,8 +143,15 @@ void expand_group(const JobGroup& group, std::vector<BatchJob>& out) {
 }
 
 void check_unique_stems(const std::vector<BatchJob>& jobs) {
-    std::map<std::string, const BatchJob*> seen;
+    std::map<std::string, const BatchJob*> seen, meshes;
     for (const BatchJob& job : jobs) {
+        if (const std::string mesh = mesh_file_stem(job); !mesh.empty()) {
+            auto [it, fresh] = meshes.emplace(mesh, &job);
+            if (!fresh && !same_mesh(job, *it->second))
+                throw InputError(io::one_line(job.source + ": export-mesh " + mesh + " (" + job.model +
+                                              ") is also written by " + it->second->source + " (" + it->second->model +
+                                              ") with another model or pose; give the lines different names"));
+        }
         auto [it, fresh] = seen.emplace(job.stem, &job);
         if (!fresh)
             throw InputError(io::one_line(job.source + ": output " + job.stem + " (" + job.model + ", " + job.style +

@@ -29,8 +29,14 @@ JobGroup default_group(const BatchDefaults& defaults);
 // the source: the caller knows where the group came from.
 void expand_group(const JobGroup& group, std::vector<BatchJob>& out);
 
-// Throws InputError("SOURCE: output STEM is also written by SOURCE2") for a shared stem.
+// Throws InputError("SOURCE: output STEM is also written by SOURCE2") for a shared stem, and
+// for an export-mesh file that two jobs would write from different models or poses.
 void check_unique_stems(const std::vector<BatchJob>& jobs);
+
+// The file export-mesh writes for the job, relative to the output directory: NAME.mesh.obj or
+// NAME.mesh.ply; empty when the job asks for none. check_unique_stems checks that jobs sharing
+// one have the same model and pose.
+std::string mesh_file_stem(const BatchJob& job);
 
 // Non-empty trimmed items of `text` split at any of `separators`.
 std::vector<std::string> split_list(std::string_view text, std::string_view separators);

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "batch/jobs.hpp"
 #include "inkshade/options.hpp"
 #include "inkshade/version.hpp"
 
@@ -137,6 +138,7 @@ std::string format_metadata(const JobRecord& r) {
                  {"azimuth_degrees", optional_number(job.view.camera.azimuth_degrees)},
                  {"elevation_degrees", optional_number(job.view.camera.elevation_degrees)},
                  {"distance", optional_number(job.view.camera.distance)}};
+    if (job.view.roll_degrees) j["view"]["roll_degrees"] = number(*job.view.roll_degrees);
     add_options(request, /*nested=*/true, j);
     if (!job.view.file_camera.empty()) j["view"]["file_camera"] = job.view.file_camera;  // camera=NAME
     add_options(request, /*nested=*/false, j);
@@ -160,6 +162,10 @@ std::string format_metadata(const JobRecord& r) {
         outputs["svg"] = file + ".svg";
         j["svg_lines"] = r.svg_lines;
     }
+    if (const std::string mesh = mesh_file_stem(job); !mesh.empty())  // relative to the metadata, as the others
+        outputs["mesh"] = std::filesystem::path(mesh)
+                              .lexically_relative(std::filesystem::path(job.stem).parent_path())
+                              .generic_string();
     if (const AovSet aovs = job_aovs(job); !aovs.empty()) {
         outputs["aov"] = r.aov_files;
         j["aov"] = format_aov_set(aovs);
@@ -178,6 +184,9 @@ bool job_complete(const std::string& output_dir, const BatchJob& job, const std:
     std::error_code ec;
     if ((job.outputs.png && !std::filesystem::is_regular_file(job_file(output_dir, job, ".png"), ec)) ||
         (job.outputs.svg && !std::filesystem::is_regular_file(job_file(output_dir, job, ".svg"), ec)))
+        return false;
+    if (const std::string mesh = mesh_file_stem(job);
+        !mesh.empty() && !std::filesystem::is_regular_file(std::filesystem::path(output_dir) / mesh, ec))
         return false;
     std::ifstream in(job_file(output_dir, job, ".json"), std::ios::binary);
     if (!in) return false;

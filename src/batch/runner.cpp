@@ -8,7 +8,10 @@
 #include <set>
 
 #include "batch/job_style.hpp"
+#include "batch/mesh_export.hpp"
 #include "batch/metadata.hpp"
+#include "batch/transforms_json.hpp"
+#include "batch/view_roll.hpp"
 #include "batch/webdataset_shards.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
@@ -119,6 +122,7 @@ public:
             shards_->close();
             std::filesystem::remove_all(shards_->staging(), ec);
         }
+        if (options_.transforms_json && !shards_) batch::write_transforms_json(options_.output_dir, jobs_, hashes_);
         summary_.interrupted = stopping() && settled_ < jobs_.size();
         summary_.seconds = ms_since(start_) / 1000.0;
         return summary_;  // `next` waits here for a load still running (interrupted)
@@ -231,6 +235,11 @@ private:
 
     void render_model(const ModelGroup& group, LoadedModel& model) {
         if (!model.mesh) return fail_model(group, model.error);
+        try {
+            batch::write_mesh_files(options_.output_dir, jobs_, group.pending, *model.mesh);  // export-mesh
+        } catch (const std::exception& e) {
+            return fail_model(group, e.what());
+        }
         if (group.model != sequences_model_) {  // jobs are model-major: a model's sequences end here
             sequences_.clear();
             sequences_model_ = group.model;
@@ -297,6 +306,7 @@ private:
         request.style = job.style;
         request.outputs = {.image = true, .line_drawing = true};
         Scene scene = make_scene(request);
+        if (job.view.roll_degrees) batch::roll_view(scene.camera, *job.view.roll_degrees);  // random:...:roll=
         scene.apply_file_scene(*model.mesh);  // a bad camera fails the job; its warnings are not kept
         const Camera camera = scene.frame(*model.mesh);
         JobFiles files;

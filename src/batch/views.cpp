@@ -1,5 +1,7 @@
-// View lists of batch jobs (parse_views, inkshade/batch.hpp): orbits, turntables, single
-// azimuth/elevation views and explicit cameras, each with a stable file-name part.
+// View lists of batch jobs (parse_views, inkshade/batch.hpp): orbits, turntables, view sets on
+// the sphere (Fibonacci, icosphere, seeded random), single azimuth/elevation views and explicit
+// cameras, each with a stable file-name part.
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <set>
 
 #include "batch/jobs.hpp"
+#include "batch/sphere_directions.hpp"
 #include "inkshade/error.hpp"
 #include "io/text_scanner.hpp"
 
@@ -16,10 +19,13 @@ namespace inkshade {
 namespace {
 
 constexpr int kMaxViewsPerItem = 3600;
+constexpr int kMaxIcoLevel = 4;               // 2562 views; level 5 would be 10242
 constexpr float kTurntableElevation = 20.0f;  // the auto-framing default (kDefaultElevation)
 
 const char* kGrammar =
-    "orbitAxE, turntable:N[:EL], AZ:EL[:DIST], camera=NAME or eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]";
+    "orbit:AxE (or orbitAxE), turntable:N[:EL], fibonacci:N, ico:LEVEL, random:N:SEED[:roll=DEG][:dist=LO-HI], "
+    "AZ:EL[:DIST], camera=NAME or eye=X,Y,Z [target=X,Y,Z] [up=X,Y,Z] [name=NAME]";
+const char* kRandomGrammar = "expected random:N:SEED[:roll=DEG][:dist=LO-HI], e.g. random:100:7:roll=15:dist=2-3";
 
 [[noreturn]] void bad(const std::string& item, const std::string& why) {
     throw InputError("view " + io::quote_token(item) + ": " + why);
@@ -77,12 +83,12 @@ void check_count(const std::string& item, int n, int max) {
 // orbitAxE, turntable:N[:EL] or AZ:EL[:DIST].
 void parse_orbit_item(const std::string& item, std::vector<BatchView>& out) {
     if (item.starts_with("orbit")) {
-        const std::string rest = item.substr(5);
+        const std::string rest = item.substr(item.starts_with("orbit:") ? 6 : 5);
         const size_t x = rest.find('x');
         int a = 0, e = 0;
         if (x == std::string::npos || !integer(std::string_view(rest).substr(0, x), a) ||
             !integer(std::string_view(rest).substr(x + 1), e))
-            bad(item, "expected orbitAxE, e.g. orbit8x3");
+            bad(item, "expected orbit:AxE or orbitAxE, e.g. orbit:8x3");
         check_count(item, a, kMaxViewsPerItem);
         check_count(item, e, 90);
         for (int k = 0; k < e; ++k)
@@ -109,6 +115,88 @@ void parse_orbit_item(const std::string& item, std::vector<BatchView>& out) {
     check_elevation(item, el);
     if (parts.size() == 3 && !(dist > 0.0f)) bad(item, "distance must be positive");
     out.push_back(orbit_view(az, el, parts.size() == 3 ? std::optional<float>(dist) : std::nullopt));
+}
+
+// View i of a set on the sphere: its direction as azimuth and elevation (auto-framed distance),
+// named PREFIX_III with the index zero-padded to the digits of the set's last index (at least 3).
+BatchView sphere_view(const glm::dvec3& direction, const std::string& prefix, int i, int n) {
+    const glm::dvec2 ae = batch::azimuth_elevation(direction);
+    BatchView v;
+    v.camera.azimuth_degrees = float(ae.x);
+    v.camera.elevation_degrees = float(ae.y);
+    const int width = std::max<int>(3, int(std::to_string(n - 1).size()));
+    char index[32];
+    std::snprintf(index, sizeof index, "%0*d", width, i);
+    v.name = prefix + "_" + index;
+    return v;
+}
+
+// "A-B" with 0 < A <= B: the random set's distance range.
+bool distance_range(std::string_view text, float& lo, float& hi) {
+    const size_t dash = text.find('-', 1);
+    return dash != std::string_view::npos && number(text.substr(0, dash), lo) && number(text.substr(dash + 1), hi) &&
+           lo > 0.0f && lo <= hi;
+}
+
+// random:N:SEED[:roll=DEG][:dist=LO-HI]. Each view takes four draws of SplitMix64(SEED), so its
+// direction does not depend on the options: u1, u2 its direction (uniform_direction), u3 its
+// roll DEG (2 u3 - 1), u4 its distance LO + (HI - LO) u4.
+void parse_random_item(const std::string& item, std::vector<BatchView>& out) {
+    const std::vector<std::string> parts = batch::split_list(item, ":");
+    int n = 0;
+    uint64_t seed = 0;
+    if (parts.size() < 3 || parts.size() > 5 || item.find("::") != std::string::npos || parts[0] != "random" ||
+        !integer(parts[1], n))
+        bad(item, kRandomGrammar);
+    const auto [ptr, ec] = std::from_chars(parts[2].data(), parts[2].data() + parts[2].size(), seed);
+    if (ec != std::errc() || ptr != parts[2].data() + parts[2].size()) bad(item, "SEED must be an integer 0..2^64-1");
+    check_count(item, n, kMaxViewsPerItem);
+    std::optional<float> roll;
+    std::optional<std::pair<float, float>> dist;
+    for (size_t k = 3; k < parts.size(); ++k) {
+        float a = 0, b = 0;
+        if (parts[k].starts_with("roll=") && !roll && number(std::string_view(parts[k]).substr(5), a)) {
+            if (!(a >= 0.0f && a <= 180.0f)) bad(item, "roll must be in 0..180 degrees");
+            roll = a;
+        } else if (parts[k].starts_with("dist=") && !dist) {
+            if (!distance_range(std::string_view(parts[k]).substr(5), a, b))
+                bad(item, "dist must be LO-HI with 0 < LO <= HI (world units), e.g. dist=2-3");
+            dist = std::pair(a, b);
+        } else {
+            bad(item, kRandomGrammar);
+        }
+    }
+    batch::SplitMix64 random(seed);
+    for (int i = 0; i < n; ++i) {
+        BatchView v = sphere_view(batch::uniform_direction(random), "rnd" + std::to_string(seed), i, n);
+        const double u3 = random.uniform(), u4 = random.uniform();
+        if (roll) v.roll_degrees = float(double(*roll) * (2.0 * u3 - 1.0));
+        if (dist) v.camera.distance = float(double(dist->first) + double(dist->second - dist->first) * u4);
+        out.push_back(std::move(v));
+    }
+}
+
+// fibonacci:N, ico:LEVEL or random:...; false for an item of another kind.
+bool parse_sphere_item(const std::string& item, std::vector<BatchView>& out) {
+    if (item.starts_with("random")) {
+        parse_random_item(item, out);
+        return true;
+    }
+    const bool fibonacci = item.starts_with("fibonacci");
+    if (!fibonacci && !item.starts_with("ico")) return false;
+    const std::vector<std::string> parts = batch::split_list(item, ":");
+    int n = 0;
+    if (parts.size() != 2 || parts[0] != (fibonacci ? "fibonacci" : "ico") || !integer(parts[1], n))
+        bad(item, fibonacci ? "expected fibonacci:N, e.g. fibonacci:100" : "expected ico:LEVEL, e.g. ico:2");
+    if (fibonacci) check_count(item, n, kMaxViewsPerItem);
+    if (!fibonacci && (n < 0 || n > kMaxIcoLevel))
+        bad(item, "LEVEL must be in 0.." + std::to_string(kMaxIcoLevel) + " (10 x 4^LEVEL + 2 views)");
+    const std::vector<glm::dvec3> directions =
+        fibonacci ? batch::fibonacci_directions(n) : batch::icosphere_directions(n);
+    const std::string prefix = (fibonacci ? "fib" : "ico") + std::to_string(n);
+    for (size_t i = 0; i < directions.size(); ++i)
+        out.push_back(sphere_view(directions[i], prefix, int(i), int(directions.size())));
+    return true;
 }
 
 glm::vec3 vec3_value(const std::string& item, const std::string& key, const std::string& text) {
@@ -178,6 +266,7 @@ std::vector<BatchView> parse_views(const std::string& text) {
                 views.push_back(file_camera_view(item));
                 continue;
             }
+            if (parse_sphere_item(item, views)) continue;
             if (item.find('=') != std::string::npos)
                 bad(item, "an explicit camera starts with eye= and is separated from other views by ';'");
             parse_orbit_item(item, views);

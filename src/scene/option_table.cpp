@@ -344,6 +344,11 @@ void add_outputs_and_pose(std::vector<OptionSpec>& t) {
                               "the AOV lineset-ids, docs/aov.md)",
                       .fronts = kRender | kBatch | kPython, .hash = HashUse::ImageWhenSet},
                      [](auto& r) -> auto& { return r.lineset_ids; }));
+    t.push_back(bind({.name = "export-mesh", .kind = K::Text, .value = "FILE.obj|FILE.ply",
+                      .help = "also write the mesh in the world coordinates of the camera files (re-projects onto "
+                              "the image); batch: obj or ply, DIR/NAME.mesh.EXT once per model (docs/cli.md)",
+                      .fronts = kRender | kLines | kBatch},
+                     [](auto& r) -> auto& { return r.export_mesh; }));
 }
 
 std::vector<OptionSpec> make_table() {

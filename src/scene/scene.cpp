@@ -11,8 +11,10 @@
 
 #include "core/name_suggestion.hpp"
 #include "inkshade/error.hpp"
+#include "inkshade/mesh_writer.hpp"
 #include "inkshade/options.hpp"
 #include "io/mtoon_detection.hpp"
+#include "io/text_scanner.hpp"
 #include "scene/file_scene.hpp"
 #include "scene/option_name.hpp"
 
@@ -294,6 +296,10 @@ void check_request(const SceneRequest& r) {
     if (!r.outputs.image && !r.outputs.line_drawing) throw InputError("the request asks for no output");
     check_file_scene_alternatives(r);
     parse_aovs(r);
+    if (!r.export_mesh.empty() && !is_mesh_export_path(r.export_mesh) && r.export_mesh != "obj" &&
+        r.export_mesh != "ply")
+        throw InputError(name("export-mesh") + ": expected FILE.obj or FILE.ply (batch: obj or ply), got " +
+                         io::quote_token(r.export_mesh));
     if (r.svg_fill && !r.outputs.line_drawing)
         throw InputError(name("svg-fill") + ": fills come with an SVG line drawing (`lines`), not with an image alone");
 }
