@@ -341,9 +341,11 @@ private:
             std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
         if (job.outputs.png)
             write_png(batch::job_file(options_.output_dir, job, ".png"), files.image, job.options.bit_depth);
-        if (const AovSet aovs = job_aovs(job); !aovs.empty())
+        if (const AovSet aovs = job_aovs(job); !aovs.empty()) {
             files.record.aov_files =
                 write_aov_files(batch::job_file(options_.output_dir, job, ".png"), aovs, files.aovs, files.camera);
+            files.record.fields = files.aovs.field_scales;
+        }
         if (job.outputs.svg)
             write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
         files.record.timings_ms.emplace_back("write", ms_since(start));
