@@ -170,7 +170,8 @@ py::array owning_array(std::vector<T>&& values, std::vector<py::ssize_t> shape) 
 
 // render(aov=[...]): {"image": ..., "depth": float32 (h, w), "normal": float32 (h, w, 3), "id" and
 // "material": uint32 (h, w), "mask", "lines-TYPE" (or "lines-SET-TYPE") and "lineset-SET": uint8 (h, w),
-// "camera": the camera file's dict}.
+// the surface fields "ndotv", "kr", "dwkr", "k1", "k2": float32 (h, w), "pdir1", "pdir2": float32
+// (h, w, 2), "shading-s0" ...: float32 (h, w), "camera": the camera file's dict (with "fields")}.
 py::dict aov_dict(Image&& image, AovImages&& aovs, AovSet set, const CameraRecord& camera) {
     const py::ssize_t h = aovs.height, w = aovs.width;
     py::dict out;
@@ -184,7 +185,17 @@ py::dict aov_dict(Image&& image, AovImages&& aovs, AovSet set, const CameraRecor
         out[py::str(line_mask_name(m.lineset, m.type))] = owning_array(std::move(m.pixels), {h, w});
     for (LineSetMask& m : aovs.linesets)
         out[py::str("lineset-" + m.lineset)] = owning_array(std::move(m.pixels), {h, w});
-    out["camera"] = py::module_::import("json").attr("loads")(format_camera_json(camera));
+    for (Aov a : {Aov::Ndotv, Aov::Kr, Aov::Dwkr, Aov::K1, Aov::K2, Aov::Pdir1, Aov::Pdir2}) {
+        if (!set.contains(a)) continue;
+        const int channels = field_channels(a);
+        out[aov_name(a)] = channels == 1 ? owning_array(std::move(field_buffer(aovs, a)), {h, w})
+                                         : owning_array(std::move(field_buffer(aovs, a)), {h, w, channels});
+    }
+    for (size_t k = 0; k < aovs.shading.size(); ++k)
+        out[py::str("shading-s" + std::to_string(k))] = owning_array(std::move(aovs.shading[k]), {h, w});
+    CameraRecord record = camera;
+    if (!set.fields().empty()) record.fields = aovs.field_scales;
+    out["camera"] = py::module_::import("json").attr("loads")(format_camera_json(record));
     return out;
 }
 
@@ -468,7 +479,8 @@ void def_renderer(py::module_& m) {
             ("RGBA uint8 array (height, width, 4), top row first, uint16 with bit_depth=16: the PNG `inkshade "
              "render` writes for the same options (style '': the mesh file's default, vrm for a file with MToon "
              "materials, else lambert); `lines` adds line types to the style, as `inkshade render "
-             "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, camera) a dict instead: "
+             "--lines`. With aov=[names] (depth, normal, id, material, mask, lines, ndotv, kr, dwkr, k1, k2, pdir1, "
+             "pdir2, shading-scales, camera) a dict instead: "
              "'image', one array per AOV ('lines-TYPE' per line type) and 'camera' (docs/aov.md). Keywords:" +
              keyword_doc(kPython))
                 .c_str())

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,11 +24,20 @@ enum class Aov : uint8_t {
     Mask,      // uint8: the fraction of the pixel the model covers (MSAA coverage)
     Lines,     // uint8: one mask per line type the image draws, antialiased
     LineSets,  // uint8: one mask per line set the image draws (its lines together), antialiased
-    Camera,    // OUT.camera.json alone (every other AOV writes it too)
+    // The surface fields (float32, before any threshold, 0 on the background; docs/aov.md):
+    Ndotv,  // n·v: interpolated smooth normal, per-pixel view vector
+    Kr,     // radial curvature κr (DeCarlo et al. 2003)
+    Dwkr,   // D_w κr, its derivative along the projected view vector
+    K1,     // principal curvatures, k1 >= k2 (Rusinkiewicz 2004)
+    K2,
+    Pdir1,  // 2 x float32: the principal directions in image space, unit (x right, y down)
+    Pdir2,
+    ShadingScales,  // Lambert n·l with normals smoothed at kShadingScales widths
+    Camera,         // OUT.camera.json alone (every other AOV writes it too)
 };
 
 // The AOV names in Aov's order ("depth", "normal", "id", "material", "mask", "lines",
-// "lineset-ids", "camera").
+// "lineset-ids", "ndotv", "kr", "dwkr", "k1", "k2", "pdir1", "pdir2", "shading-scales", "camera").
 const std::vector<std::string>& aov_names();
 const char* aov_name(Aov aov);
 // The AOV called `name` (any case), or nothing.
@@ -39,10 +49,17 @@ public:
     constexpr void add(Aov a) { bits_ |= bit(a); }
     constexpr bool contains(Aov a) const { return (bits_ & bit(a)) != 0; }
     constexpr bool empty() const { return bits_ == 0; }
-    // Those drawn by the renderer's aov pass (depth, normal, id, material, mask).
+    // Those made by the renderer's aov pass (depth, normal, id, material, mask, the surface fields).
     constexpr AovSet gpu() const {
+        AovSet s = fields();
+        s.bits_ |= bits_ & (bit(Aov::Depth) | bit(Aov::Normal) | bit(Aov::Id) | bit(Aov::Material) | bit(Aov::Mask));
+        return s;
+    }
+    // The surface fields (ndotv ... shading-scales), computed from the visible face at each pixel.
+    constexpr AovSet fields() const {
         AovSet s;
-        s.bits_ = bits_ & (bit(Aov::Depth) | bit(Aov::Normal) | bit(Aov::Id) | bit(Aov::Material) | bit(Aov::Mask));
+        for (Aov a : {Aov::Ndotv, Aov::Kr, Aov::Dwkr, Aov::K1, Aov::K2, Aov::Pdir1, Aov::Pdir2, Aov::ShadingScales})
+            if (contains(a)) s.add(a);
         return s;
     }
     constexpr bool operator==(const AovSet&) const = default;
@@ -73,6 +90,20 @@ struct LineSetMask {
     std::vector<uint8_t> pixels;  // width x height, 255 = fully covered by its lines
 };
 
+// The widths of the shading-scales AOV (OUT.shading-s0.png, ...).
+inline constexpr int kShadingScales = 5;
+
+// What makes the surface fields comparable across meshes and views (the camera file's
+// "fields"): rtsc's feature size of the mesh (world units), the 90th percentile of |value| over
+// the visible pixels of each curvature field asked for (Neural Contours divides by it), and the
+// smoothing widths of shading-scales (world units, finest first).
+struct FieldScales {
+    float feature_size = 0.0f;
+    std::vector<std::pair<std::string, float>> p90;  // ("kr", ...) in Aov's order
+    std::vector<float> shading_sigmas;
+    bool empty() const { return feature_size == 0.0f && p90.empty() && shading_sigmas.empty(); }
+};
+
 // The AOVs of one image, each width x height values row-major, top row first (as Image); a
 // buffer not asked for is empty.
 struct AovImages {
@@ -83,7 +114,17 @@ struct AovImages {
     std::vector<uint8_t> mask;
     std::vector<LineMask> lines;        // in the order the style draws its line types
     std::vector<LineSetMask> linesets;  // in the order the style draws its line sets
+    // The surface fields: one float per pixel (pdir1, pdir2: two), 0 on the background.
+    std::vector<float> ndotv, kr, dwkr, k1, k2, pdir1, pdir2;
+    std::vector<std::vector<float>> shading;  // shading-scales: n·l in [0, 1] per width, finest first
+    FieldScales field_scales;                 // with any field
 };
+
+// The buffer of a surface field (`aov` one of AovSet::fields() but shading-scales), and its
+// floats per pixel.
+std::vector<float>& field_buffer(AovImages& images, Aov aov);
+const std::vector<float>& field_buffer(const AovImages& images, Aov aov);
+int field_channels(Aov aov);
 
 // What a camera file records: the camera as framed, the image it made and the model around it.
 struct CameraRecord {
@@ -91,12 +132,17 @@ struct CameraRecord {
     int width = 0, height = 0;
     UpAxis up_axis = UpAxis::PosY;
     BoundingBox bounds;  // the model's, world units
+    FieldScales fields;  // with a surface field: written as "fields"
 };
 
 // Implemented by io. The camera file (docs/aov.md): K (pixels, OpenCV convention), the
 // world-to-camera matrix (OpenGL view matrix and the OpenCV one), projection, near/far, image
 // size, up axis, model bounds.
 std::string format_camera_json(const CameraRecord& record);
+
+// Implemented by io. The camera file's "fields" as JSON text: {"feature_size": ..., "p90":
+// {"kr": ..., ...}, "shading_sigmas": [...]}, members absent when not computed.
+std::string format_field_scales(const FieldScales& scales);
 
 // "out/a.png" + "depth" + ".exr" -> "out/a.depth.exr": the files beside an image.
 std::string aov_path(const std::string& image_path, const std::string& aov, const std::string& extension);
@@ -105,9 +151,10 @@ std::string aov_path(const std::string& image_path, const std::string& aov, cons
 // (.depth.exr, float32 channel Z), normal (.normal.png, RGB 16 bits, n * 0.5 + 0.5), id and
 // material (.id.png, .material.png, gray 16 bits; larger ids are clamped to 65535), mask (.mask.png,
 // gray 8 bits), lines (.lines-TYPE.png or .lines-SET-TYPE.png each, gray 8 bits), lineset-ids
-// (.lineset-SET.png each, gray 8 bits) and, for any set, the camera file
-// (.camera.json). Returns the file names written (without directories), in that order. Throws
-// RuntimeError("FILE: reason").
+// (.lineset-SET.png each, gray 8 bits), the surface fields (.NAME.exr, float32 channel Y, or X
+// and Y for pdir1/pdir2), shading-scales (.shading-s0.png ..., gray 16 bits) and, for any set,
+// the camera file (.camera.json, with images.field_scales as "fields"). Returns the file names written (without
+// directories), in that order. Throws RuntimeError("FILE: reason").
 std::vector<std::string> write_aov_files(const std::string& image_path, AovSet set, const AovImages& images,
                                          const CameraRecord& camera);
 

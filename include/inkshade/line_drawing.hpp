@@ -16,6 +16,10 @@
 
 namespace inkshade {
 
+namespace geometry {
+class MeshLineData;  // geometry/line_types/mesh_line_data.hpp (the library's own)
+}
+
 // One polyline in image coordinates: pixels, origin at the top-left corner of the image, y
 // down (SVG's convention; pixel (i, j) covers [i, i+1] x [j, j+1]). A new per-point attribute
 // is listed in for_each_point_attribute too (src/geometry/path_attributes.hpp), which every
@@ -139,6 +143,11 @@ public:
     // the normal curvature along the view vector projected onto the tangent plane), as the
     // `kr` debug view shows it. Curvature is computed on the first call and kept.
     std::vector<float> radial_curvature(const Camera& camera);
+
+    // The mesh-wide data the object-space lines extract from (positions, normals, curvature,
+    // feature size; geometry/line_types/mesh_line_data.hpp), computed on first use and kept:
+    // the surface-field AOVs read it (render/field_vertices.hpp).
+    geometry::MeshLineData& mesh_data();
 
     // Frees the mesh-wide data (curvature, adjacency, creases, the ray scene: about 700 MB at
     // 10 M triangles); the next draw computes again what it needs.

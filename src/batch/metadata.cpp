@@ -169,6 +169,7 @@ std::string format_metadata(const JobRecord& r) {
     if (const AovSet aovs = job_aovs(job); !aovs.empty()) {
         outputs["aov"] = r.aov_files;
         j["aov"] = format_aov_set(aovs);
+        if (!aovs.fields().empty()) j["fields"] = Json::parse(format_field_scales(r.fields));
     }
     j["outputs"] = outputs;
     j["renderer"] = r.gl_renderer.empty() ? Json(nullptr) : Json(r.gl_renderer);

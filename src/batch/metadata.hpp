@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "inkshade/aov.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/camera.hpp"
 
@@ -22,6 +23,7 @@ struct JobRecord {
     std::string gl_renderer;                                 // empty when no PNG was rendered
     std::vector<std::pair<std::string, double>> timings_ms;  // "load", "render", "svg", "write"
     std::vector<std::string> aov_files;                      // write_aov_files's names
+    FieldScales fields;                                      // with a surface-field AOV (docs/aov.md)
 };
 
 // STEM.json text (docs/cli.md#batch lists the fields), keys in a fixed order.

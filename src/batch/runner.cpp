@@ -355,9 +355,11 @@ private:
         const auto start = Clock::now();
         std::filesystem::create_directories(std::filesystem::path(batch::job_file(root, job, "")).parent_path());
         if (job.outputs.png) write_png(batch::job_file(root, job, ".png"), files.image, job.options.bit_depth);
-        if (const AovSet aovs = job_aovs(job); !aovs.empty())
+        if (const AovSet aovs = job_aovs(job); !aovs.empty()) {
             files.record.aov_files =
                 write_aov_files(batch::job_file(root, job, ".png"), aovs, files.aovs, files.camera);
+            files.record.fields = files.aovs.field_scales;
+        }
         if (job.outputs.svg) write_svg(batch::job_file(root, job, ".svg"), files.drawing, files.background);
         files.record.timings_ms.emplace_back("write", ms_since(start));
         // Last: the metadata marks the job complete (batch::job_complete).

@@ -3,14 +3,17 @@
 #include "inkshade/aov.hpp"
 
 #include <filesystem>
+#include <stdexcept>
+#include <utility>
 
 #include "core/name_suggestion.hpp"
 
 namespace inkshade {
 
 const std::vector<std::string>& aov_names() {
-    static const std::vector<std::string> names = {"depth", "normal", "id",          "material",
-                                                   "mask",  "lines",  "lineset-ids", "camera"};
+    static const std::vector<std::string> names = {
+        "depth", "normal", "id", "material", "mask",  "lines", "lineset-ids",    "ndotv",
+        "kr",    "dwkr",   "k1", "k2",       "pdir1", "pdir2", "shading-scales", "camera"};
     return names;
 }
 
@@ -29,6 +32,25 @@ std::string format_aov_set(AovSet set) {
         if (set.contains(Aov(i))) out += (out.empty() ? "" : ",") + aov_names()[i];
     return out;
 }
+
+std::vector<float>& field_buffer(AovImages& images, Aov aov) {
+    return const_cast<std::vector<float>&>(field_buffer(std::as_const(images), aov));
+}
+
+const std::vector<float>& field_buffer(const AovImages& images, Aov aov) {
+    switch (aov) {
+        case Aov::Ndotv: return images.ndotv;
+        case Aov::Kr: return images.kr;
+        case Aov::Dwkr: return images.dwkr;
+        case Aov::K1: return images.k1;
+        case Aov::K2: return images.k2;
+        case Aov::Pdir1: return images.pdir1;
+        case Aov::Pdir2: return images.pdir2;
+        default: throw std::invalid_argument(std::string("not a field AOV: ") + aov_name(aov));
+    }
+}
+
+int field_channels(Aov aov) { return aov == Aov::Pdir1 || aov == Aov::Pdir2 ? 2 : 1; }
 
 std::string line_mask_name(const std::string& lineset, const std::string& type) {
     return lineset.empty() ? "lines-" + type : "lines-" + lineset + "-" + type;

@@ -405,6 +405,8 @@ void LineExtractor::release_mesh_data() {
     impl_->data.release_derived();
 }
 
+MeshLineData& LineExtractor::mesh_data() { return impl_->data; }
+
 std::vector<float> LineExtractor::radial_curvature(const Camera& camera) {
     MeshLineData& d = impl_->data;
     return geometry::radial_curvature(d.mesh(), d.normals(), d.curvature(), camera).kr;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include "inkshade/aov.hpp"
 #include "inkshade/error.hpp"
@@ -26,6 +27,31 @@ std::vector<uint16_t> to_16_bits(const std::vector<uint32_t>& ids) {
     return out;
 }
 
+// The surface fields written as EXR, in Aov's order.
+constexpr Aov kFloatFields[] = {Aov::Ndotv, Aov::Kr, Aov::Dwkr, Aov::K1, Aov::K2, Aov::Pdir1, Aov::Pdir2};
+
+std::string shading_name(int scale) { return "shading-s" + std::to_string(scale); }
+
+// A field's EXR: channel Y (one float a pixel) or X and Y (pdir1, pdir2).
+void write_field(const std::string& path, const AovImages& a, Aov aov) {
+    const std::vector<float>& v = field_buffer(a, aov);
+    const size_t channels = size_t(field_channels(aov));
+    check_size(path, v.size(), size_t(a.width) * size_t(a.height) * channels);
+    if (channels == 1)
+        io::write_exr(path, a.width, a.height, {{"Y", v.data(), 1}});
+    else
+        io::write_exr(path, a.width, a.height, {{"X", v.data(), 2}, {"Y", v.data() + 1, 2}});
+}
+
+// n·l in [0, 1] as 16-bit gray: round(v · 65535).
+void write_shading(const std::string& path, const AovImages& a, const std::vector<float>& v) {
+    check_size(path, v.size(), size_t(a.width) * size_t(a.height));
+    std::vector<uint16_t> gray(v.size());
+    std::transform(v.begin(), v.end(), gray.begin(),
+                   [](float x) { return uint16_t(std::lround(std::clamp(x, 0.0f, 1.0f) * 65535.0f)); });
+    io::write_png_samples(path, a.width, a.height, 1, gray.data());
+}
+
 }  // namespace
 
 std::vector<std::string> aov_file_names(const std::string& image_path, AovSet set,
@@ -45,6 +71,10 @@ std::vector<std::string> aov_file_names(const std::string& image_path, AovSet se
     if (set.contains(Aov::LineSets))
         for (const std::string& name : linesets)
             out.push_back(file_name(aov_path(image_path, "lineset-" + name, ".png")));
+    for (Aov aov : kFloatFields) add(aov, ".exr");
+    if (set.contains(Aov::ShadingScales))
+        for (int k = 0; k < kShadingScales; ++k)
+            out.push_back(file_name(aov_path(image_path, shading_name(k), ".png")));
     if (!set.empty()) out.push_back(file_name(aov_path(image_path, "camera", ".json")));
     return out;
 }
@@ -104,9 +134,24 @@ std::vector<std::string> write_aov_files(const std::string& image_path, AovSet s
             io::write_png_samples(path, w, h, 1, m.pixels.data());
             done(path);
         }
+    for (Aov aov : kFloatFields)
+        if (set.contains(aov)) {
+            const std::string path = path_of(aov, ".exr");
+            write_field(path, a, aov);
+            done(path);
+        }
+    if (set.contains(Aov::ShadingScales))
+        for (int k = 0; k < kShadingScales; ++k) {
+            const std::string path = aov_path(image_path, shading_name(k), ".png");
+            if (size_t(k) >= a.shading.size()) throw RuntimeError(path + ": no such shading scale was rendered");
+            write_shading(path, a, a.shading[size_t(k)]);
+            done(path);
+        }
     if (!set.empty()) {
         const std::string path = path_of(Aov::Camera, ".json");
-        io::write_file_atomic(path, format_camera_json(camera));
+        CameraRecord record = camera;
+        if (!set.fields().empty()) record.fields = a.field_scales;
+        io::write_file_atomic(path, format_camera_json(record));
         done(path);
     }
     return written;

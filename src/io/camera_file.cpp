@@ -59,7 +59,25 @@ std::string pretty(const Json& j) {
     return out + "}\n";
 }
 
+Json field_scales_json(const FieldScales& f) {
+    Json out = Json::object();
+    if (f.feature_size > 0.0f) out["feature_size"] = number(f.feature_size);
+    if (!f.p90.empty()) {
+        Json p90 = Json::object();
+        for (const auto& [name, value] : f.p90) p90[name] = number(value);
+        out["p90"] = p90;
+    }
+    if (!f.shading_sigmas.empty()) {
+        Json sigmas = Json::array();
+        for (float s : f.shading_sigmas) sigmas.push_back(number(s));
+        out["shading_sigmas"] = sigmas;
+    }
+    return out;
+}
+
 }  // namespace
+
+std::string format_field_scales(const FieldScales& scales) { return field_scales_json(scales).dump(); }
 
 std::string format_camera_json(const CameraRecord& r) {
     const Camera& c = r.camera;
@@ -98,6 +116,7 @@ std::string format_camera_json(const CameraRecord& r) {
     j["up"] = vec3(c.up);
     j["up_axis"] = up_axis_name(r.up_axis);
     j["model_bounds"] = {{"min", vec3(r.bounds.min)}, {"max", vec3(r.bounds.max)}};
+    if (!r.fields.empty()) j["fields"] = field_scales_json(r.fields);
     j["conventions"] = {
         {"pixel", "(u, v) = (column + 0.5, row + 0.5), row 0 at the top"},
         {"depth", "distance along the view axis (-z in world_to_camera's space), 0 = background"},

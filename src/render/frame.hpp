@@ -11,6 +11,7 @@
 #include "inkshade/image.hpp"
 #include "inkshade/line_drawing.hpp"
 #include "inkshade/renderer.hpp"
+#include "render/field_vertices.hpp"
 #include "render/frame_targets.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/pass.hpp"
@@ -43,6 +44,7 @@ struct Frame {
     std::map<std::string, std::vector<float>> view_attributes;  // ViewAttributes, by provider
     Image image;                                                // Image
     AovImages* aovs = nullptr;                                  // Aov: where options.aovs go (null: none asked)
+    std::optional<FieldVertices> field_vertices;                // ViewAttributes: the surface fields' (fields pass)
 
     // The style's settings of line type `type` (the last when listed twice), or null.
     const LineSettings* line(const std::string& type) const;

@@ -298,9 +298,10 @@ namespace {
 // so the image is the same. Meshes below the size draw in one call, as before.
 constexpr GLsizei kChunkIndices = 3 * (GLsizei(1) << 20);
 
-void draw_indices(size_t first, GLsizei count) {
+void draw_indices(size_t first, GLsizei count, const std::function<void(uint32_t)>& before = {}) {
     while (count > 0) {
         const GLsizei n = std::min(count, kChunkIndices);
+        if (before) before(uint32_t(first / 3));
         glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * sizeof(uint32_t)));
         first += size_t(n);
         count -= n;
@@ -313,6 +314,11 @@ void draw_indices(size_t first, GLsizei count) {
 void GpuMesh::draw() const {
     glBindVertexArray(vao_.id());
     draw_indices(0, index_count_);
+}
+
+void GpuMesh::draw(const std::function<void(uint32_t first_face)>& before) const {
+    glBindVertexArray(vao_.id());
+    draw_indices(0, index_count_, before);
 }
 
 const Material* GpuMesh::range_material(size_t range) const {

@@ -40,6 +40,9 @@ public:
     explicit GpuMesh(const Mesh& mesh);
     // All faces in one call (depth, hull and G-buffer passes).
     void draw() const;
+    // The same, `before` called before each draw call with the index of its first face (a large
+    // mesh is drawn in several: gl_PrimitiveID counts from 0 in each).
+    void draw(const std::function<void(uint32_t first_face)>& before) const;
 
     // Uvs and a texture are uploaded: shaders read them under INKSHADE_BASE_TEXTURE.
     bool textured() const { return !textures_.empty(); }

@@ -295,11 +295,16 @@ void add_light(std::vector<OptionSpec>& t) {
 // What else a job writes, then its pose: the job hash's image line in its order.
 void add_outputs_and_pose(std::vector<OptionSpec>& t) {
     using K = OptionKind;
-    OptionSpec aov = bind({.name = "aov", .kind = K::Names, .value = "NAME,...",
-                      .help = "AOVs beside the image: depth, normal, id, material, mask, lines (a mask per line "
-                              "type), lineset-ids (a mask per line set), camera (docs/aov.md)",
-                      .fronts = kRender | kBatch, .hash = HashUse::ImageWhenSet},
-                     [](auto& r) -> auto& { return r.aovs; });
+    OptionSpec aov = bind(
+        {.name = "aov",
+         .kind = K::Names,
+         .value = "NAME,...",
+         .help = "AOVs beside the image: depth, normal, id, material, mask, lines (a mask per line "
+                 "type), lineset-ids (a mask per line set), the surface fields ndotv, kr, dwkr, k1, k2, "
+                 "pdir1, pdir2 (float EXR) and shading-scales, camera (docs/aov.md)",
+         .fronts = kRender | kBatch,
+         .hash = HashUse::ImageWhenSet},
+        [](auto& r) -> auto& { return r.aovs; });
     // The hash spells the set (known names, each once, in a fixed order), not the names as given.
     aov.hash_text = [](const OptionValue& v) {
         return format_aov_set(aov_set("aov", std::get<std::vector<std::string>>(v)));

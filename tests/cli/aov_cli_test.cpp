@@ -136,7 +136,7 @@ TEST(AovCli, UnknownAovIsOneLineExitTwoAndNoFile) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
               "inkshade: --aov: unknown AOV 'nromal' (expected depth, normal, id, material, mask, lines, lineset-ids, "
-              "camera) (did you mean 'normal'?)\n");
+              "ndotv, kr, dwkr, k1, k2, pdir1, pdir2, shading-scales, camera) (did you mean 'normal'?)\n");
     EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 

@@ -399,6 +399,33 @@ class AovTest(unittest.TestCase):
             with open(os.path.join(tmp, "a.camera.json")) as f:
                 self.assertEqual(json.load(f), self.r.render(size=(64, 48), aov=["camera"])["camera"])
 
+    def test_surface_fields(self):
+        # docs/aov.md's surface fields on the unit sphere: k1 = k2 = kr = 1, n.v from the camera,
+        # pdir as unit 2-vectors, the camera's p90 factors numpy's.
+        names = ["depth", "ndotv", "kr", "k1", "k2", "pdir1", "shading-scales"]
+        out = self.r.render(size=(96, 64), azimuth=20, elevation=30, aov=names)
+        fg = out["depth"] > 0
+        for name in ("ndotv", "kr", "k1", "k2", "shading-s0", "shading-s4"):
+            self.assertEqual((out[name].dtype, out[name].shape), (np.float32, (64, 96)), name)
+            self.assertFalse(np.any(out[name][~fg]), name)  # 0 on the background
+        self.assertEqual(out["pdir1"].shape, (64, 96, 2))
+        self.assertLess(np.max(np.abs(np.linalg.norm(out["pdir1"][fg], axis=1) - 1)), 1e-4)
+        for name in ("kr", "k1", "k2"):
+            self.assertLess(np.max(np.abs(out[name][fg] - 1)), 0.01, name)
+        cam = out["camera"]
+        K = np.array(cam["K"])
+        cam_to_world = np.linalg.inv(np.array(cam["world_to_camera_opencv"]))
+        v, u = np.nonzero(fg)
+        d = out["depth"][v, u]
+        x = (u + 0.5 - K[0, 2]) / K[0, 0] * d
+        y = (v + 0.5 - K[1, 2]) / K[1, 1] * d
+        p = (cam_to_world @ np.stack([x, y, d, np.ones_like(d)]))[:3].T
+        view = np.array(cam["eye"]) - p
+        ndotv = np.sum(p / np.linalg.norm(p, axis=1)[:, None] * view / np.linalg.norm(view, axis=1)[:, None], axis=1)
+        self.assertLess(np.max(np.abs(out["ndotv"][v, u] - ndotv)), 2e-3)
+        for name in ("kr", "k1", "k2"):
+            self.assertAlmostEqual(cam["fields"]["p90"][name], np.percentile(np.abs(out[name][fg]), 90), places=5)
+
     def test_bad_name_and_batch(self):
         with self.assertRaisesRegex(ValueError, r"^aov: unknown AOV 'nromal' .*\(did you mean 'normal'\?\)$"):
             self.r.render(aov=["nromal"])

@@ -290,7 +290,7 @@ TEST(Aov, UnknownNameIsRejectedWithTheClosest) {
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
                   "--aov: unknown AOV 'nromal' (expected depth, normal, id, material, mask, lines, lineset-ids, "
-                  "camera) (did you mean 'normal'?)");
+                  "ndotv, kr, dwkr, k1, k2, pdir1, pdir2, shading-scales, camera) (did you mean 'normal'?)");
     }
     r.aovs = {"Depth", "depth"};
     EXPECT_THROW(make_scene(r), InputError);

@@ -8,6 +8,7 @@
 #include "geometry/connected_objects.hpp"
 #include "geometry/feature_size.hpp"
 #include "geometry/intersection_lines.hpp"
+#include "geometry/multiscale_normals.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/visibility.hpp"
 
@@ -104,6 +105,16 @@ void MeshLineData::release_derived() {
     hard_edges_.reset();
     hatching_.reset();
     face_objects_.reset();
+    smoothed_normals_.reset();
+}
+
+const std::vector<std::vector<glm::vec3>>& MeshLineData::smoothed_normals(const std::vector<float>& sigmas) {
+    if (!smoothed_normals_ || smoothing_sigmas_ != sigmas) {
+        smoothed_normals_ =
+            timed(setup_timings_, "smoothed normals", [&] { return multiscale_normals(*mesh_, normals(), sigmas); });
+        smoothing_sigmas_ = sigmas;
+    }
+    return *smoothed_normals_;
 }
 
 const std::vector<uint32_t>& MeshLineData::face_objects() {

@@ -83,6 +83,9 @@ public:
     const std::vector<uint32_t>& face_objects();
     // Hatching strokes with these options (trace_hatching; the last options asked for are kept).
     const Hatching& hatching(const HatchOptions& options);
+    // normals() smoothed at each of `sigmas` (multiscale_normals; the last widths asked for are
+    // kept): the shading-scales AOV's.
+    const std::vector<std::vector<glm::vec3>>& smoothed_normals(const std::vector<float>& sigmas);
 
     // Names and milliseconds of the lazy computations done since the last call (for
     // LineExtractor's timings), then cleared.
@@ -108,6 +111,8 @@ private:
     std::optional<Hatching> hatching_;
     std::optional<std::vector<uint32_t>> face_objects_;
     HatchOptions hatch_options_;
+    std::optional<std::vector<std::vector<glm::vec3>>> smoothed_normals_;
+    std::vector<float> smoothing_sigmas_;
     TimingLog setup_timings_;
 };
 

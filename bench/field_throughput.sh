@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Images per second of `inkshade batch` with every surface-field AOV on against images only:
+# VIEWS turntable views of MODEL at SIZE in STYLE (docs/benchmarks.md, docs/aov.md).
+#   bench/field_throughput.sh [BUILD_DIR]    MODEL=builtin:teapot:subdivisions=30 RUNS=3 VIEWS=100
+#                                            SIZE=512x512 STYLE=lambert
+# Each run times both whole commands (start-up, model load and shader compile included),
+# alternating which goes first; the medians over runs and their ratio (fields / images) are
+# printed last. The acceptance: ratio >= 0.5 on a 75 k-face mesh.
+set -euo pipefail
+build=${1:-build}
+runs=${RUNS:-3}
+views=${VIEWS:-100}
+size=${SIZE:-512x512}
+model=${MODEL:-builtin:teapot:subdivisions=30}  # 57 600 triangles
+style=${STYLE:-lambert}
+fields=ndotv,kr,dwkr,k1,k2,pdir1,pdir2,shading-scales
+bin="$build/inkshade"
+export MESA_SHADER_CACHE_DISABLE=true
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+now() { date +%s.%N; }
+median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+
+printf 'model,views,styles\n"%s",turntable:%d:20,%s\n' "$model" "$views" "$style" >"$tmp/jobs.csv"
+echo "== images only vs all fields ($fields): $model, $views views, $size, style $style, $runs runs"
+echo "   machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'), load average $(cut -d' ' -f1-3 /proc/loadavg)"
+: >"$tmp/images"
+: >"$tmp/fields"
+one() {  # KIND [--aov LIST]: prints images/s
+  rm -rf "$tmp/out"
+  local t0 t1
+  t0=$(now)
+  "$bin" batch "$tmp/jobs.csv" -o "$tmp/out" --size "$size" --quiet "${@:2}" >/dev/null
+  t1=$(now)
+  awk -v n="$views" -v a="$t0" -v b="$t1" 'BEGIN {printf "%.3f\n", n / (b - a)}' | tee -a "$tmp/$1"
+}
+for run in $(seq "$runs"); do
+  if ((run % 2)); then
+    i=$(one images); f=$(one fields --aov "$fields")
+  else
+    f=$(one fields --aov "$fields"); i=$(one images)
+  fi
+  printf '  run %d: images only %6.2f images/s, all fields %6.2f images/s\n' "$run" "$i" "$f"
+done
+i=$(median <"$tmp/images")
+f=$(median <"$tmp/fields")
+awk -v i="$i" -v f="$f" 'BEGIN {printf "median: images only %.2f images/s, all fields %.2f images/s, ratio %.2f\n", i, f, f / i}'
