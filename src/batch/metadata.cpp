@@ -156,10 +156,9 @@ std::string format_metadata(const JobRecord& r) {
     j["lines"] = r.lines;
     Json outputs = Json::object();
     if (job.outputs.png) outputs["png"] = file + ".png";
-    if (job.outputs.svg) {
-        outputs["svg"] = file + ".svg";
-        j["svg_lines"] = r.svg_lines;
-    }
+    if (job.outputs.svg) outputs["svg"] = file + ".svg";
+    if (job.outputs.lines_json) outputs["lines_json"] = file + ".lines.json";
+    if (job.outputs.svg || job.outputs.lines_json) j["svg_lines"] = r.svg_lines;
     if (const AovSet aovs = job_aovs(job); !aovs.empty()) {
         outputs["aov"] = r.aov_files;
         j["aov"] = format_aov_set(aovs);
@@ -177,7 +176,8 @@ std::string format_metadata(const JobRecord& r) {
 bool job_complete(const std::string& output_dir, const BatchJob& job, const std::string& hash) {
     std::error_code ec;
     if ((job.outputs.png && !std::filesystem::is_regular_file(job_file(output_dir, job, ".png"), ec)) ||
-        (job.outputs.svg && !std::filesystem::is_regular_file(job_file(output_dir, job, ".svg"), ec)))
+        (job.outputs.svg && !std::filesystem::is_regular_file(job_file(output_dir, job, ".svg"), ec)) ||
+        (job.outputs.lines_json && !std::filesystem::is_regular_file(job_file(output_dir, job, ".lines.json"), ec)))
         return false;
     std::ifstream in(job_file(output_dir, job, ".json"), std::ios::binary);
     if (!in) return false;

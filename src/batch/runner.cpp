@@ -179,7 +179,7 @@ private:
             complete_[i] = !options_.force && batch::job_complete(options_.output_dir, job, hashes_[i]);
             if (complete_[i]) continue;
             group.pending.push_back(i);
-            group.svg |= job.outputs.svg;
+            group.svg |= job.outputs.svg || job.outputs.lines_json;
             group.png |= job.outputs.png || !job.options.aovs.empty();
             ++to_render_;
         }
@@ -326,7 +326,7 @@ private:
             record.timings_ms.emplace_back("render", ms_since(start));
             record.gl_renderer = gl_renderer_;
         }
-        if (job.outputs.svg) {
+        if (job.outputs.svg || job.outputs.lines_json) {
             const auto start = Clock::now();
             files.drawing = draw_scene_lines(*model.extractor, scene, camera, nullptr, &sequence.svg);
             record.timings_ms.emplace_back("svg", ms_since(start));
@@ -346,6 +346,9 @@ private:
                 write_aov_files(batch::job_file(options_.output_dir, job, ".png"), aovs, files.aovs, files.camera);
         if (job.outputs.svg)
             write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
+        if (job.outputs.lines_json)
+            io::write_file_atomic(batch::job_file(options_.output_dir, job, ".lines.json"),
+                                  format_lines_json(files.drawing, job.options.lines_json_detail));
         files.record.timings_ms.emplace_back("write", ms_since(start));
         // Last: the metadata marks the job complete (batch::job_complete).
         io::write_file_atomic(batch::job_file(options_.output_dir, job, ".json"), batch::format_metadata(files.record));
