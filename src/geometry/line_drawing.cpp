@@ -437,8 +437,12 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         return drawing;
     }
     Impl& m = *impl_;
-    const DrawView view{ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth), timings,
-                        sequence, m.data.mesh(), context.surface};
+    const DrawView view{ImageProjection(camera, width, height),
+                        m.depth_range(camera, plan.reads_depth),
+                        timings,
+                        sequence,
+                        m.data.mesh(),
+                        context.surface};
     m.prepare(plan.mesh, timings);
     const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, context, timings);
     const EdgeNeighbours around = m.fold_surroundings(plan, segments, timings);

@@ -103,7 +103,8 @@ TEST(LinesJsonDetail, WorldPointsReprojectThroughTheCameraFile) {
                 std::string(" --size 320x240 --up-axis z --azimuth 30 --elevation 25 ") + projection;
             auto r = run_cli("lines " + std::string(model) + camera +
                              " --lines contour,suggestive --hidden --set contour.dash=6,3 --lines-json-detail full"
-                             " --lines-json " + dir.file("l.json") + " -o " + dir.file("l.svg"));
+                             " --lines-json " +
+                             dir.file("l.json") + " -o " + dir.file("l.svg"));
             ASSERT_EQ(r.status, 0) << r.err;
             r = run_cli("render " + std::string(model) + camera + " --aov camera -o " + dir.file("r.png"));
             ASSERT_EQ(r.status, 0) << r.err;
@@ -144,8 +145,8 @@ TEST(LinesJsonDetail, FullAddsKeysToTheBasicFile) {
 
 TEST(LinesJsonDetail, BadValuesAreOneLineExitTwo) {
     TempDir dir;
-    auto r = run_cli("lines builtin:sphere --size 32x32 -o " + dir.file("a.svg") + " --lines-json " + dir.file("a.json") +
-                     " --lines-json-detail fulll");
+    auto r = run_cli("lines builtin:sphere --size 32x32 -o " + dir.file("a.svg") + " --lines-json " +
+                     dir.file("a.json") + " --lines-json-detail fulll");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("--lines-json-detail"), std::string::npos) << r.err;
