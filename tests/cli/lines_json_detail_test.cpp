@@ -120,6 +120,42 @@ TEST(LinesJsonDetail, WorldPointsReprojectThroughTheCameraFile) {
         }
 }
 
+// A file's loose lines lie on no triangle: face -1, weights 0, and their world points still
+// project onto their image points; the box's creases carry its faces.
+TEST(LinesJsonDetail, LooseLinesHaveNoFace) {
+    TempDir dir;
+    std::string obj;
+    for (int i = 0; i < 8; ++i)
+        obj += std::string("v ") + (i & 1 ? "1" : "-1") + (i & 2 ? " 1" : " -1") + (i & 4 ? " 1\n" : " -1\n");
+    obj += "v -2 0 0\nv 2 0 0\nf 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\nl 9 10\n";
+    const std::string model = dir.write("box.obj", obj);
+    const std::string camera = " --size 320x240 --azimuth 30 --elevation 25";
+    auto r = run_cli("lines " + model + camera + " --lines crease,loose -o " + dir.file("b.svg") +
+                     " --lines-json-detail full --lines-json " + dir.file("b.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli("render " + model + camera + " --aov camera -o " + dir.file("r.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json lines = json::parse(slurp(dir.file("b.json")));
+    const json cam = json::parse(slurp(dir.file("r.camera.json")));
+    ASSERT_EQ(lines["layers"].size(), 2u);
+    size_t loose = 0, crease = 0;
+    for (const json& layer : lines["layers"])
+        for (const json& path : layer["paths"])
+            for (size_t i = 0; i < path["points"].size(); ++i) {
+                EXPECT_LT(glm::length(reproject(cam, vec3(path["world"][i])) - vec2(path["points"][i])), 0.01);
+                if (layer["type"] == "loose") {
+                    EXPECT_EQ(path["face"][i], -1);
+                    EXPECT_EQ(vec3(path["barycentric"][i]), glm::dvec3(0.0));
+                    ++loose;
+                } else {
+                    EXPECT_GE(path["face"][i].get<int>(), 0);
+                    ++crease;
+                }
+            }
+    EXPECT_GT(loose, 1u);
+    EXPECT_GT(crease, 4u);
+}
+
 // Basic is the default and the file without the detail; full adds keys to each path and
 // changes nothing else.
 TEST(LinesJsonDetail, FullAddsKeysToTheBasicFile) {
