@@ -1,5 +1,6 @@
 // `inkshade batch MANIFEST -o DIR` / `inkshade batch --models DIR --views V --styles S -o DIR`:
-// models x views x styles into images, SVGs and metadata; resumable and shardable
+// models x views x styles into images, SVGs and metadata, in folders or WebDataset tar shards;
+// resumable, shardable and verifiable
 // (docs/cli.md#batch, docs/cluster.md).
 #include <unistd.h>
 
@@ -32,6 +33,7 @@ struct BatchArgs {
     std::string format = "png";
     SceneOptions scene;  // the option table's batch options: the defaults of the manifest's columns
     std::string shard;
+    std::string layout = "folder", shard_size = "1GB", shard_prefix = "shard", verify;
     bool force = false, dry_run = false, quiet = false;
 };
 
@@ -126,14 +128,52 @@ std::string formats(const BatchOutputs& o) {
     return out;
 }
 
+// Where the jobs go: the layout, and for WebDataset the shard size and prefix; with --shard K/N
+// the prefix gains "-KofN", so the workers of one manifest write distinct shard files.
+BatchOptions layout_options(const BatchArgs& args, const CLI::App& cmd) {
+    BatchOptions o;
+    o.layout = parse_layout(args.layout);
+    if (o.layout != BatchLayout::WebDataset) {
+        for (const char* option : {"--shard-size", "--shard-prefix"})
+            if (cmd.count(option)) throw InputError(std::string(option) + ": only with --layout webdataset");
+        return o;
+    }
+    o.shard_size = parse_shard_size(args.shard_size);
+    if (args.shard_prefix.empty() || args.shard_prefix.front() == '.' ||
+        args.shard_prefix.find('/') != std::string::npos)
+        throw InputError("--shard-prefix: expected a file name without '/' that does not start with '.', got '" +
+                         args.shard_prefix + "'");
+    o.shard_prefix = args.shard_prefix;
+    if (!args.shard.empty()) {
+        int k = 1, n = 1;
+        parse_shard(args.shard, k, n);
+        const std::string total = std::to_string(n), index = std::to_string(k);
+        o.shard_prefix += "-" + std::string(total.size() - index.size(), '0') + index + "of" + total;
+    }
+    return o;
+}
+
+// --verify DIR: one line per problem on stdout, a summary line; exit 1 when there is any.
+int verify_command(const std::vector<BatchJob>& jobs, BatchOptions options, const std::string& dir) {
+    options.output_dir = dir;
+    const std::vector<std::string> problems = verify_batch(jobs, options);
+    for (const std::string& p : problems) std::printf("%s\n", p.c_str());
+    std::printf("verify: %zu jobs, %zu problem%s\n", jobs.size(), problems.size(), problems.size() == 1 ? "" : "s");
+    return problems.empty() ? 0 : 1;
+}
+
 int run_batch_command(const BatchArgs& args, const CLI::App& cmd) {
     if (args.manifest.empty() == args.models.empty())
         throw InputError("give a MANIFEST or --models DIR (one of the two)");
-    if (args.output.empty() && !args.dry_run) throw InputError("-o DIR: the output directory is required");
+    if (!args.verify.empty() && !args.output.empty()) throw InputError("--verify DIR: give it instead of -o DIR");
+    if (args.output.empty() && !args.dry_run && args.verify.empty())
+        throw InputError("-o DIR: the output directory is required");
     const BatchDefaults defaults = defaults_from(args, cmd);
+    BatchOptions options = layout_options(args, cmd);
     std::vector<BatchJob> jobs =
         args.models.empty() ? load_manifest(args.manifest, defaults) : expand_jobs(find_models(args.models), defaults);
     check_styles(jobs);
+    if (options.layout == BatchLayout::WebDataset) check_webdataset_keys(jobs);  // across every shard's jobs
     const size_t all = jobs.size();
     if (!args.shard.empty()) {
         int k = 1, n = 1;
@@ -142,6 +182,7 @@ int run_batch_command(const BatchArgs& args, const CLI::App& cmd) {
     } else {
         jobs = batch_order(std::move(jobs));
     }
+    if (!args.verify.empty()) return verify_command(jobs, options, args.verify);
 
     if (args.dry_run) {
         for (const BatchJob& j : jobs)
@@ -153,7 +194,6 @@ int run_batch_command(const BatchArgs& args, const CLI::App& cmd) {
     }
     check_output_dir(args.output);
 
-    BatchOptions options;
     options.output_dir = args.output;
     options.force = args.force;
     options.stop = &g_stop;
@@ -196,6 +236,17 @@ Command add_batch_command(CLI::App& app) {
         ->capture_default_str();
     args->scene.add_to(*cmd, kBatch, /*model=*/false, false, " (where the manifest gives none)");
     cmd->add_option("--shard", args->shard, "render only shard K of N (K = 1..N; contiguous blocks of the job list)");
+    cmd->add_option("--layout", args->layout,
+                    "folder (DIR/STEM.png, ...) or webdataset (tar shards DIR/PREFIX-000000.tar, one sample a job)")
+        ->capture_default_str();
+    cmd->add_option("--shard-size", args->shard_size,
+                    "webdataset: close a shard before it passes this size (1GB, 256MiB, bytes)")
+        ->capture_default_str();
+    cmd->add_option("--shard-prefix", args->shard_prefix,
+                    "webdataset: shard file names PREFIX-000000.tar (with --shard K/N: PREFIX-KofN-000000.tar)")
+        ->capture_default_str();
+    cmd->add_option("--verify", args->verify,
+                    "check DIR against the jobs instead of rendering: every job present and its files readable");
     cmd->add_flag("--force", args->force, "render complete jobs again (default: skip them)");
     cmd->add_flag("--dry-run", args->dry_run, "list the jobs (stem, model, style, view, size, formats) and exit");
     cmd->add_flag("-q,--quiet", args->quiet, "print failures and the summary only");

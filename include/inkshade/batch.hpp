@@ -149,9 +149,39 @@ struct BatchEvent {
 };
 using BatchProgress = std::function<void(const BatchEvent&)>;
 
+// How run_batch lays out the jobs' files in the output directory (docs/cli.md#batch).
+enum class BatchLayout {
+    Folder,      // DIR/STEM.png, DIR/STEM.json, ... as the stems name them
+    WebDataset,  // tar shards DIR/PREFIX-000000.tar, ...: one sample per job, KEY.png, KEY.json, ...
+};
+
+// "folder" or "webdataset" as --layout takes it. Throws InputError naming the choices.
+BatchLayout parse_layout(const std::string& text);
+
+// A job's WebDataset sample key: its stem with every '.' as '_' (WebDataset splits a file name
+// into key and extension at the first dot of its last path component): "box/toon/az022.5_el30"
+// -> "box/toon/az022_5_el30".
+std::string webdataset_key(const std::string& stem);
+
+// Throws InputError("SOURCE: ...") when two jobs' stems give the same key.
+void check_webdataset_keys(const std::vector<BatchJob>& jobs);
+
+// A shard's size as --shard-size takes it: bytes, or a number with a unit, SI (kB, MB, GB,
+// TB: powers of 1000) or binary (KiB, MiB, GiB, TiB), case ignored: "1GB", "256MiB",
+// "1.5GB", "1000000". Throws InputError for zero, a negative or a malformed size.
+uint64_t parse_shard_size(const std::string& text);
+
+// PREFIX-NNNNNN.tar (index zero-padded to 6 digits, WebDataset's shard naming).
+std::string webdataset_shard_name(const std::string& prefix, size_t index);
+
 struct BatchOptions {
     std::string output_dir;  // created when missing
     bool force = false;      // render complete jobs again
+    BatchLayout layout = BatchLayout::Folder;
+    // WebDataset layout: a shard is closed before the sample that would take it past this many
+    // bytes (a sample bigger than it gets a shard of its own); shards are PREFIX-000000.tar, ...
+    uint64_t shard_size = 1'000'000'000;
+    std::string shard_prefix = "shard";
     // Checked between jobs: once true, run_batch returns after the job in progress (a signal
     // handler may set it). Nothing partial is left: every file is written atomically.
     const std::atomic<bool>* stop = nullptr;
@@ -175,7 +205,20 @@ struct BatchSummary {
 // is loaded once, the next one on a worker thread while the current one renders. A model that
 // cannot be loaded fails its jobs and the batch goes on; so does a job that fails. Throws
 // RuntimeError only when no OpenGL context can be made or the output directory cannot be.
+// In the WebDataset layout the jobs are written into a staging folder, then packed one sample a
+// job into the open shard (a temporary, renamed when the shard is closed); a job is complete
+// when a closed shard holds its sample with its job hash. Shards holding a sample that is no
+// longer a job with that hash are removed with every later one, and their jobs rendered again;
+// the last shard is reopened (copied, then extended) while the next sample still fits in it.
 BatchSummary run_batch(const std::vector<BatchJob>& jobs, const BatchOptions& options,
                        const BatchProgress& progress = {});
+
+// Checks a batch's output (options.output_dir, in options.layout) against its jobs: every job
+// present with its metadata's job hash, every file its metadata lists present, and each file
+// readable (PNG signature and IEND chunk, JSON parses, EXR magic and every chunk inside the file,
+// SVG closed); in the WebDataset layout also every shard readable and no sample twice or
+// unknown. One line per problem ("STEM: what is wrong", "SHARD: what is wrong"), none when the
+// output is complete.
+std::vector<std::string> verify_batch(const std::vector<BatchJob>& jobs, const BatchOptions& options);
 
 }  // namespace inkshade

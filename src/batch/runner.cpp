@@ -5,8 +5,11 @@
 #include <future>
 #include <map>
 #include <memory>
+#include <set>
 
+#include "batch/job_style.hpp"
 #include "batch/metadata.hpp"
+#include "batch/webdataset_shards.hpp"
 #include "inkshade/batch.hpp"
 #include "inkshade/error.hpp"
 #include "inkshade/image.hpp"
@@ -21,33 +24,13 @@ namespace inkshade {
 
 namespace {
 
+using batch::model_bytes;
+using batch::resolve_style;
+using batch::ResolvedStyle;
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// A job's style, loaded once for the whole batch to check it and hash its text.
-struct ResolvedStyle {
-    std::string toml;   // format_style: hashed and recorded, so an edited style file re-renders
-    std::string error;  // the style does not load: every job of the style fails with this
-    std::optional<float> smooth_angle;
-    NormalWeighting normal_weighting = NormalWeighting::Angle;  // Scene::normal_weighting
-};
-
-ResolvedStyle resolve_style(const std::string& name) {
-    ResolvedStyle r;
-    try {
-        SceneRequest request;
-        request.style = name;
-        const Scene scene = make_scene(request);
-        r.toml = format_style(scene.style);
-        r.smooth_angle = scene.style.smooth_angle;
-        r.normal_weighting = scene.normal_weighting;
-    } catch (const std::exception& e) {
-        r.error = e.what();
-    }
-    return r;
 }
 
 // A model ready to render: loaded, and with its line extractor when a job writes SVG (its
@@ -78,13 +61,6 @@ LoadedModel load_model(const std::string& path, bool lines, LoadOptions options)
     return m;
 }
 
-int64_t model_bytes(const std::string& path) {
-    if (path.starts_with("builtin:")) return -1;
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    return ec ? -1 : int64_t(size);
-}
-
 // The jobs of one model, in batch order.
 struct ModelGroup {
     std::string model;
@@ -103,13 +79,18 @@ public:
 
     BatchSummary run() {
         summary_.total = jobs_.size();
-        plan();
         std::error_code ec;
         std::filesystem::create_directories(options_.output_dir, ec);
         std::error_code dir_ec;
         if (!std::filesystem::is_directory(options_.output_dir, dir_ec))
             throw RuntimeError(options_.output_dir + ": cannot create the output directory" +
                                (ec ? " (" + ec.message() + ")" : ""));
+        if (options_.layout == BatchLayout::WebDataset) {
+            check_webdataset_keys(jobs_);
+            shards_ = std::make_unique<batch::WebDatasetShards>(options_.output_dir, options_.shard_prefix,
+                                                                options_.shard_size);
+        }
+        plan();
 
         // One load ahead: while the current model renders, the next one with work loads.
         std::future<LoadedModel> next;
@@ -133,6 +114,10 @@ public:
                 model = load_model(group.model, group.svg, group.load);
             prefetch_after(g);
             render_model(group, model);
+        }
+        if (shards_) {  // the jobs written so far are complete: the open shard is closed, not lost
+            shards_->close();
+            std::filesystem::remove_all(shards_->staging(), ec);
         }
         summary_.interrupted = stopping() && settled_ < jobs_.size();
         summary_.seconds = ms_since(start_) / 1000.0;
@@ -174,15 +159,33 @@ private:
             }
             ModelGroup& group = groups_.back();
             group.jobs.push_back(i);
-            if (!style.error.empty()) continue;  // reported as failed when the group comes up
-            hashes_[i] = job_hash(job, style.toml, group.bytes);
-            complete_[i] = !options_.force && batch::job_complete(options_.output_dir, job, hashes_[i]);
-            if (complete_[i]) continue;
-            group.pending.push_back(i);
-            group.svg |= job.outputs.svg || job.outputs.lines_json;
-            group.png |= job.outputs.png || !job.options.aovs.empty();
-            ++to_render_;
+            if (style.error.empty()) hashes_[i] = job_hash(job, style.toml, group.bytes);
         }
+        find_complete();
+        for (ModelGroup& group : groups_)
+            for (size_t i : group.jobs) {
+                // A job whose style failed is reported as failed when the group comes up.
+                if (complete_[i] || !styles_.at(jobs_[i].style).error.empty()) continue;
+                group.pending.push_back(i);
+                group.svg |= jobs_[i].outputs.svg || jobs_[i].outputs.lines_json;
+                group.png |= jobs_[i].outputs.png || !jobs_[i].options.aovs.empty();
+                ++to_render_;
+            }
+    }
+
+    // Folders: the job's metadata and outputs on disk; WebDataset: its sample in a kept shard.
+    void find_complete() {
+        if (!shards_) {
+            for (size_t i = 0; i < jobs_.size(); ++i)
+                complete_[i] = !hashes_[i].empty() && !options_.force &&
+                               batch::job_complete(options_.output_dir, jobs_[i], hashes_[i]);
+            return;
+        }
+        std::map<std::string, std::string> current;  // key -> job hash
+        for (size_t i = 0; i < jobs_.size(); ++i)
+            if (!hashes_[i].empty()) current[webdataset_key(jobs_[i].stem)] = hashes_[i];
+        const std::set<std::string> kept = shards_->resume(current, options_.force);
+        for (size_t i = 0; i < jobs_.size(); ++i) complete_[i] = kept.count(webdataset_key(jobs_[i].stem)) > 0;
     }
 
     void emit(BatchStatus status, size_t job, size_t count, const std::string& reason, bool model_failed) {
@@ -334,24 +337,25 @@ private:
         return files;
     }
 
+    // Into the output directory, or the staging folder whose files are then packed into a shard
+    // (the same files: a sample holds the bytes the folder layout would).
     void write_job(JobFiles& files) const {
         const BatchJob& job = *files.record.job;
+        const std::string& root = shards_ ? shards_->staging() : options_.output_dir;
         const auto start = Clock::now();
-        std::filesystem::create_directories(
-            std::filesystem::path(batch::job_file(options_.output_dir, job, "")).parent_path());
-        if (job.outputs.png)
-            write_png(batch::job_file(options_.output_dir, job, ".png"), files.image, job.options.bit_depth);
+        std::filesystem::create_directories(std::filesystem::path(batch::job_file(root, job, "")).parent_path());
+        if (job.outputs.png) write_png(batch::job_file(root, job, ".png"), files.image, job.options.bit_depth);
         if (const AovSet aovs = job_aovs(job); !aovs.empty())
             files.record.aov_files =
-                write_aov_files(batch::job_file(options_.output_dir, job, ".png"), aovs, files.aovs, files.camera);
-        if (job.outputs.svg)
-            write_svg(batch::job_file(options_.output_dir, job, ".svg"), files.drawing, files.background);
+                write_aov_files(batch::job_file(root, job, ".png"), aovs, files.aovs, files.camera);
+        if (job.outputs.svg) write_svg(batch::job_file(root, job, ".svg"), files.drawing, files.background);
         if (job.outputs.lines_json)
-            io::write_file_atomic(batch::job_file(options_.output_dir, job, ".lines.json"),
+            io::write_file_atomic(batch::job_file(root, job, ".lines.json"),
                                   format_lines_json(files.drawing, job.options.lines_json_detail));
         files.record.timings_ms.emplace_back("write", ms_since(start));
         // Last: the metadata marks the job complete (batch::job_complete).
-        io::write_file_atomic(batch::job_file(options_.output_dir, job, ".json"), batch::format_metadata(files.record));
+        io::write_file_atomic(batch::job_file(root, job, ".json"), batch::format_metadata(files.record));
+        if (shards_) shards_->add(batch::take_staged_sample(root, job.stem));
     }
 
     const std::vector<BatchJob> jobs_;
@@ -365,6 +369,7 @@ private:
     size_t to_render_ = 0, settled_ = 0;
     std::unique_ptr<Renderer> renderer_;
     std::string gl_renderer_;
+    std::unique_ptr<batch::WebDatasetShards> shards_;  // the WebDataset layout's shards
     // The previous frame's strokes per sequence of the current model, for the image and the SVG
     // (drawn by two extractors, each its own sequence).
     struct Sequences {

@@ -193,6 +193,51 @@ struct RayState {
     }
 };
 
+// Do faces g and f share a vertex where their shading normals are the same (not across a
+// hard edge)?
+bool smoothly_touch(const OcclusionContext& ctx, uint32_t g, uint32_t f) {
+    const glm::uvec3 a = ctx.triangles[g], b = ctx.triangles[f];
+    const bool hard = ctx.mesh->has_hard_edges();
+    for (int k = 0; k < 3; ++k)
+        for (int m = 0; m < 3; ++m)
+            if (a[k] == b[m] && (!hard || ctx.mesh->shading_normal_ids[g][k] == ctx.mesh->shading_normal_ids[f][m]))
+                return true;
+    return false;
+}
+
+// How far in front a hit on face `prim` may lie and still be a contour sample's own surface
+// (OcclusionQuery::slope_depth): slope_depth × tan of the angle between the face and the plane
+// normal to the ray (its depth slope), capped at kMaxOwnSlope, for a face that touches the
+// point's face, or a face across one of its edges, where the normals are smooth (a shared
+// vertex with the same shading normal: the smooth surface the interpolated contour lies on
+// ends at a hard edge); 0 for any other face.
+// rtsc pushes every front face back by 5 px of its slope (glPolygonOffset(5, 30)); here only
+// the faces around the point, so that the tube of a torus in front of its inner contour, a
+// surface that comes back to the ray, still hides it.
+float slope_allowance(const OcclusionContext& ctx, const OcclusionQuery& q, const RTCFilterFunctionNArguments* args,
+                      unsigned i, uint32_t prim, const glm::uvec3& tri) {
+    if (!(q.slope_depth > 0.0f) || q.on.face == kNoFace) return 0.0f;
+    const uint32_t face = q.on.face;
+    bool touches = smoothly_touch(ctx, prim, face);
+    // ... or one of the faces across its edges: on a coarse sphere the polygon outline in front
+    // of the contour is often the far half of the next quad.
+    for (int k = 0; k < 3 && !touches && ctx.around; ++k) {
+        const glm::uvec3 own = ctx.triangles[face];
+        const uint32_t next = ctx.around->across(face, own[k], own[(k + 1) % 3]);
+        touches = next != kNoFace && smoothly_touch(ctx, next, face) && smoothly_touch(ctx, prim, next);
+    }
+    if (!touches) return 0.0f;
+    const glm::vec3* p = ctx.mesh->positions.data();
+    const glm::dvec3 a(p[tri.x]), n = glm::cross(glm::dvec3(p[tri.y]) - a, glm::dvec3(p[tri.z]) - a);
+    const glm::dvec3 d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                       RTCRayN_dir_z(args->ray, args->N, i));
+    const double nn = glm::dot(n, n), dd = glm::dot(d, d), c = glm::dot(n, d);
+    if (!(nn > 0.0 && dd > 0.0)) return 0.0f;
+    const double cos2 = c * c / (nn * dd), cap = double(kMaxOwnSlope);
+    const double slope = cos2 > 0.0 ? std::min(std::sqrt(std::max(1.0 - cos2, 0.0) / cos2), cap) : cap;
+    return float(double(q.slope_depth) * slope);
+}
+
 }  // namespace
 
 // The occlusion filter (ray_scene_impl.hpp).
@@ -211,7 +256,9 @@ void count_crossings(const RTCFilterFunctionNArguments* args) {
         const float t = RTCRayN_tfar(args->ray, args->N, i);
         if (st.counted(ctx->triangles, prim, tri, t)) continue;
         // Near enough to be the point's own surface: judged when the trace is done.
-        if ((st.t_point - t) * st.t_scale <= q.own_depth && st.deferred < kDeferredHits) {
+        const float in_front = (st.t_point - t) * st.t_scale;
+        if (in_front <= slope_allowance(*ctx, q, args, i, prim, tri)) continue;
+        if (in_front <= q.own_depth && st.deferred < kDeferredHits) {
             st.deferred_t[st.deferred] = t, st.deferred_prim[st.deferred] = prim, ++st.deferred;
             continue;
         }

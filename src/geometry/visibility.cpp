@@ -105,6 +105,7 @@ glm::vec3 interpolated_normal(const Mesh& mesh, uint32_t f, const glm::vec3& poi
 struct Allowance {
     float fold_px;  // contour samples: the fold band, else 0
     float own_depth_px, own_radius_px;
+    float slope_px;  // contour samples: OcclusionQuery::slope_depth in pixels
 };
 
 OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm::vec3& p, const PointOn& on,
@@ -118,7 +119,11 @@ OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm
     q.own_radius = float(std::max(allow.own_radius_px, allow.own_depth_px) * pixel);
     if (allow.fold_px > 0.0f && on.face != kNoFace && on.face_b == kNoFace && on.kind != PointOn::Vertex) {
         q.normal = interpolated_normal(mesh, on.face, p);
-        if (q.normal != glm::vec3(0.0f)) q.fold_band = float(allow.fold_px * pixel);
+        if (q.normal != glm::vec3(0.0f)) {
+            q.fold_band = float(allow.fold_px * pixel);
+            // An interpolated contour only: a hard edge's contour is the polygon outline itself.
+            q.slope_depth = float(allow.slope_px * pixel);
+        }
     }
     return q;
 }
@@ -485,13 +490,14 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
         own = contour_surroundings(mesh, {&segments});
         around = &own;
     }
-    const Tester tester{scene,
-                        mesh,
-                        view,
-                        around,
-                        std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
-                        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f,
-                         std::max(options.own_depth_px, 0.0f), std::max(options.own_radius_px, 0.0f)}};
+    const Tester tester{
+        scene,
+        mesh,
+        view,
+        around,
+        std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
+        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f, std::max(options.own_depth_px, 0.0f),
+         std::max(options.own_radius_px, 0.0f), std::max(options.contour_slope_px, 0.0f)}};
     std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
 

@@ -81,7 +81,18 @@ struct OcclusionQuery {
     // contain it) does not count. 0: every hit counts.
     float own_depth = 0.0f;
     float own_radius = 0.0f;
+    // Contour samples: a hit on a face that touches (shares a vertex with, smoothly) the face
+    // the point lies on does not count while it is less than
+    // `slope_depth` × that face's depth slope (tan of its angle to the plane normal to the ray,
+    // at most kMaxOwnSlope) in front (world units; 0 = off). An interpolated contour lies on the smooth surface its
+    // normals describe, which on a coarse part runs a little way past the polygon outline, onto the back face behind
+    // it; rtsc draws it there, its mesh pushed back by glPolygonOffset(5, 30).
+    float slope_depth = 0.0f;
 };
+
+// The steepest face slope the own-surface rule takes (OcclusionQuery::slope_depth): 84°
+// from the image plane; steeper faces cover less than a tenth of their depth in the image.
+constexpr float kMaxOwnSlope = 10.0f;
 
 // One spare vertex of capacity, written (zero) once, so that RayScene can share `positions`
 // with Embree (which reads the last vertex with a 16-byte load) instead of copying them.
@@ -161,6 +172,9 @@ public:
     //     until the ray is traced, and only rays that have them run the point query. A sheet of
     //     another part, or of this part joined only farther away (a hem, a separate plate),
     //     hides the point at any distance beyond tolerance().
+    //   - An interpolated contour sample is not hidden by a face touching its own that lies
+    //     less than OcclusionQuery::slope_depth times that face's depth slope in
+    //     front (rtsc's polygon offset, limited to the faces around the point).
     void occlusion_levels(const ImageProjection& view, const OcclusionQuery* queries, size_t count, uint8_t* levels,
                           int cap = 1, const EdgeNeighbours* around = nullptr) const;
     // One query; true when its level is ≥ 1.
@@ -207,6 +221,10 @@ struct VisibilityOptions {
     // within `own_radius_px` pixels joined to the faces it lies on (OcclusionQuery::own_depth).
     float own_depth_px = 1.0f;
     float own_radius_px = 2.0f;
+    // Contour samples: their own neighbourhood hides them only when in front by more than this
+    // many pixels of the occluding face's depth slope (OcclusionQuery::slope_depth): rtsc
+    // draws its lines against the mesh pushed back by glPolygonOffset(5, 30).
+    float contour_slope_px = 5.0f;
 };
 
 // The segments' parts, split where the occlusion level changes. Parts keep the original node

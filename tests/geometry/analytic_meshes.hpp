@@ -101,6 +101,13 @@ inline Mesh cube(float h = 1.0f) {
     return m;
 }
 
+// The axis-aligned box [lo, hi]: the cube above stretched.
+inline Mesh box(glm::vec3 lo, glm::vec3 hi) {
+    Mesh m = cube(1.0f);
+    for (glm::vec3& p : m.positions) p = lo + (p + 1.0f) * 0.5f * (hi - lo);
+    return m;
+}
+
 // The cube [-1, 1]³ with each side an n x n grid of quads, welded: a CAD part whose flat sides
 // meet at 90° along 12 n mesh edges.
 inline Mesh meshed_cube(int n) {
