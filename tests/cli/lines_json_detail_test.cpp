@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -13,6 +14,7 @@
 
 #include "cli/run_cli.hpp"
 #include "inkshade/io.hpp"
+#include "io/tar_reader.hpp"
 
 namespace inkshade::test {
 namespace {
@@ -239,6 +241,17 @@ TEST(LinesJsonDetail, BatchWritesTheLinesJsonOfEachJob) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(fs::is_regular_file(t + ".lines.json"));
     EXPECT_NE(r.out.find("1 done, 1 skipped"), std::string::npos) << r.out;
+    // In WebDataset shards the sample carries KEY.lines.json with the folder's bytes.
+    r = run_cli("batch " + manifest + " -o " + dir.file("wds") + " --layout webdataset -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::map<std::string, std::string> shard;
+    for (const auto& e : fs::directory_iterator(dir.file("wds")))
+        if (e.path().extension() == ".tar") {
+            io::TarReader reader(e.path().string());
+            while (const auto m = reader.next()) shard[m->name] = reader.read(*m);
+        }
+    EXPECT_EQ(shard["s/ink-vector/az035_el20.lines.json"], slurp(s + ".lines.json"));
+    EXPECT_EQ(shard["t/ink-vector/az035_el20.lines.json"], slurp(t + ".lines.json"));
 }
 
 }  // namespace
