@@ -199,7 +199,36 @@ py::dict aov_dict(Image&& image, AovImages&& aovs, AovSet set, const CameraRecor
     return out;
 }
 
-py::list to_python(const LineDrawing& drawing) {
+// With `detail` (lines_json_detail='full'), each path's surface location, tangent and normal too,
+// as --lines-json-detail full writes them.
+py::dict point_detail(const LinePath& path) {
+    const auto n = py::ssize_t(path.points.size());
+    py::array_t<float> world({n, py::ssize_t(3)}), barycentric({n, py::ssize_t(3)}), tangent({n, py::ssize_t(2)}),
+        normal({n, py::ssize_t(2)});
+    py::array_t<int32_t> face(n);
+    auto w = world.mutable_unchecked<2>(), b = barycentric.mutable_unchecked<2>();
+    auto f = face.mutable_unchecked<1>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        const SurfacePoint s = size_t(i) < path.surface.size() ? path.surface[size_t(i)] : SurfacePoint{};
+        for (int k = 0; k < 3; ++k) w(i, k) = s.world[k], b(i, k) = s.barycentric[k];
+        f(i) = s.face;
+    }
+    const std::vector<glm::vec2> tangents = path_tangents(path);
+    auto t = tangent.mutable_unchecked<2>(), m = normal.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        const glm::vec2 nv = path_normal(tangents[size_t(i)]);
+        t(i, 0) = tangents[size_t(i)].x, t(i, 1) = tangents[size_t(i)].y, m(i, 0) = nv.x, m(i, 1) = nv.y;
+    }
+    py::dict d;
+    d["world"] = world;
+    d["face"] = face;
+    d["barycentric"] = barycentric;
+    d["tangent"] = tangent;
+    d["normal"] = normal;
+    return d;
+}
+
+py::list to_python(const LineDrawing& drawing, LinesJsonDetail detail) {
     py::list out;
     auto add = [&](const LineLayer& layer, const LinePath& path, bool hidden) {
         py::array_t<float> points({py::ssize_t(path.points.size()), py::ssize_t(2)});
@@ -217,6 +246,8 @@ py::list to_python(const LineDrawing& drawing) {
         d["closed"] = path.closed;
         d["hidden"] = hidden;
         d["level"] = path.level;
+        if (detail == LinesJsonDetail::Full)
+            for (const auto& item : point_detail(path)) d[item.first] = item.second;
         out.append(d);
     };
     for (const auto& layer : drawing.layers) {
@@ -411,8 +442,10 @@ void def_batch(py::module_& m) {
                 defaults.outputs.png = true;
             else if (f == "svg")
                 defaults.outputs.svg = true;
+            else if (f == "lines-json")
+                defaults.outputs.lines_json = true;
             else
-                throw InputError("formats: expected png and/or svg, got '" + f + "'");
+                throw InputError("formats: expected png, svg and/or lines-json, got '" + f + "'");
         }
         if (manifest.has_value() == models.has_value())
             throw InputError("batch: give exactly one of manifest= or models=");
@@ -489,12 +522,15 @@ void def_renderer(py::module_& m) {
             [](PyRenderer& r, std::optional<std::vector<std::string>> types, const std::string& style,
                const std::vector<std::string>& set, bool hidden, const std::optional<std::string>& levels,
                const py::kwargs& kwargs) {
-        return to_python(r.lines(line_scene(r, std::move(types), style, set, hidden, levels, kwargs)));
+        const Scene scene = line_scene(r, std::move(types), style, set, hidden, levels, kwargs);
+        return to_python(r.lines(scene), scene.lines_json_detail);
             },
             py::arg("types") = py::none(), py::arg("style") = "ink-vector", py::arg("set") = std::vector<std::string>{},
             py::arg("hidden") = false, py::arg("occlusion_levels") = py::none(),
             ("Object-space polylines, as `inkshade lines` draws them: a list of {type, lineset, points (n,2) pixels, "
-             "depth, strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels. Keywords:" +
+             "depth, strength, closed, hidden, level}; occlusion_levels='A-B' as --occlusion-levels; with "
+             "lines_json_detail='full' also world (n,3), face (n,) int32, barycentric (n,3), tangent (n,2) and "
+             "normal (n,2), as --lines-json-detail full. Keywords:" +
              keyword_doc(kPython))
                 .c_str())
         .def(

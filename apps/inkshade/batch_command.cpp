@@ -122,7 +122,10 @@ void check_output_dir(const std::string& dir) {
 }
 
 std::string formats(const BatchOutputs& o) {
-    return std::string(o.png ? "png" : "") + (o.png && o.svg ? "," : "") + (o.svg ? "svg" : "");
+    std::string out;
+    for (auto [on, name] : {std::pair{o.png, "png"}, std::pair{o.svg, "svg"}, std::pair{o.lines_json, "lines-json"}})
+        if (on) out += (out.empty() ? "" : ",") + std::string(name);
+    return out;
 }
 
 // Where the jobs go: the layout, and for WebDataset the shard size and prefix; with --shard K/N

@@ -121,6 +121,8 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
                                           " (write .svg, .png, .jpg or .jpeg)");
     }
     if (!args.lines_json.empty()) check_output_path("--lines-json", args.lines_json);
+    if (args.lines_json.empty() && request.lines_json_detail != LinesJsonDetail::Basic)
+        throw InputError("--lines-json-detail: it says what --lines-json writes; give --lines-json FILE too");
     MeshExport exported(request);
     request.outputs = {.image = false, .line_drawing = true};
     request.vector_lines = split_names(args.lines);
@@ -155,7 +157,7 @@ int run_lines(LinesArgs& args, const CLI::App& cmd) {
         return 0;
     }
     // Both files or neither: the JSON is removed again if the drawing cannot be written.
-    io::write_file_atomic(args.lines_json, format_lines_json(drawing));
+    io::write_file_atomic(args.lines_json, format_lines_json(drawing, scene.lines_json_detail));
     try {
         write_output();
     } catch (...) {

@@ -30,6 +30,9 @@ struct BatchView {
 struct BatchOutputs {
     bool png = true;   // the style rendered by the GPU, as `inkshade render`
     bool svg = false;  // object-space lines with hidden parts removed, as `inkshade lines`
+    // STEM.lines.json: the same drawing's polylines as `inkshade lines --lines-json` writes them
+    // (with the job's lines-json-detail).
+    bool lines_json = false;
 };
 
 struct BatchJob {

@@ -16,6 +16,25 @@
 
 namespace inkshade {
 
+// Where on the mesh a point of a LinePath lies (LineContext::surface, --lines-json-detail full;
+// docs/lines.md "JSON"): every point, loose lines' too, has its world position; `face` is the
+// triangle of the path's piece from this point to the next (the last point of an open path: of
+// the piece that ends there), so a point where two pieces meet, on the mesh edge between their
+// triangles, names the one the path goes on in; -1 where the line lies on no triangle (a file's
+// loose lines). `barycentric` weighs that triangle's corners (mesh.triangles[face]) to the
+// world position (the world position projected on the triangle's plane), edge points included
+// (one weight 0); 0 without a face.
+struct SurfacePoint {
+    glm::vec3 world{0.0f};
+    int32_t face = -1;
+    glm::vec3 barycentric{0.0f};
+    // The point's clip-space w (perspective: its depth along the view axis; orthographic: 1),
+    // so that a point stroke modifiers insert between two others (dashes, splits) takes the
+    // surface point under it: attributes over w vary linearly in the image (perspective-correct
+    // interpolation, as a GPU rasteriser does).
+    float w = 1.0f;
+};
+
 namespace geometry {
 class MeshLineData;  // geometry/line_types/mesh_line_data.hpp (the library's own)
 }
@@ -40,6 +59,10 @@ struct LinePath {
     // Per point, the surface point it was projected from (world space): kept in a
     // StrokeSequence's paths, for the next frame to project; empty in a drawing's.
     std::vector<glm::vec3> world;
+    // Per point, where on the mesh it was projected from: filled when the draw's
+    // LineContext::surface asks, else empty. Image smoothing (`smooth`) and sketch jitter move
+    // the image point, not this.
+    std::vector<SurfacePoint> surface;
     bool closed = false;
     // Occlusion level (quantitative invisibility, Appel 1967): how many surfaces lie between
     // the viewer and this path; 0 = visible.
@@ -93,6 +116,7 @@ struct StrokeSequence {
 struct LineContext {
     std::optional<Light> light;  // unset: default_light of the mesh's bounds for the camera
     std::optional<SectionPlane> section;
+    bool surface = false;  // fill each path's LinePath::surface (costs nothing when false)
 };
 
 struct LineTiming {
@@ -177,9 +201,23 @@ std::string format_svg(const LineDrawing& drawing, glm::vec4 background, const S
 void write_svg(const std::string& path, const LineDrawing& drawing, glm::vec4 background,
                const SvgOptions& options = {});
 
+// The unit tangent at each point of `path` in image coordinates: the central difference of its
+// neighbours (one-sided at an open path's ends; across the closing piece of a loop), skipping
+// repeated points; (1, 0) for a path of one point or of one repeated point.
+std::vector<glm::vec2> path_tangents(const LinePath& path);
+// The unit normal of a tangent: turned +90 degrees in image coordinates (x right, y down),
+// (-t.y, t.x), which is the right-hand side of the direction of travel as the image shows it.
+inline glm::vec2 path_normal(glm::vec2 tangent) { return {-tangent.y, tangent.x}; }
+
+// How much of each point --lines-json writes (--lines-json-detail; docs/lines.md "JSON").
+enum class LinesJsonDetail {
+    Basic,  // points, depth, strength (width and color when set)
+    Full,   // also world, face, barycentric (from LinePath::surface), tangent and normal
+};
+
 // JSON for scripting: image size and, per layer, its type, parameters and polylines (points,
 // depth, strength, closed, hidden; width and color per point when the layer's stroke
-// modifiers set them).
-std::string format_lines_json(const LineDrawing& drawing);
+// modifiers set them; with Full, each point's surface location, tangent and normal).
+std::string format_lines_json(const LineDrawing& drawing, LinesJsonDetail detail = LinesJsonDetail::Basic);
 
 }  // namespace inkshade

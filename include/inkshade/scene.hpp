@@ -104,6 +104,8 @@ struct SceneRequest {
     // upright) or "WxH" in mm, and the scale "PAPER:MODEL" (model units in mm). Empty: none.
     std::string paper, drawing_scale;
     bool svg_fill = false;  // the line drawing's SVG fills the visible faces (LineExtractor::fills)
+    // What --lines-json writes of each point; Full keeps each point's surface location.
+    LinesJsonDetail lines_json_detail = LinesJsonDetail::Basic;
     int bit_depth = 8;  // bits a channel of the image: 8 or 16
     // AOVs beside the image (aov_names(): depth, normal, id, material, mask, lines, lineset-ids,
     // camera; any case), for render_scene's AovImages overload and write_aov_files.
@@ -147,6 +149,8 @@ struct Scene {
     // The drawing sheet's size in mm (SceneRequest::paper); the SVG is sized in mm. Unset: none.
     std::optional<glm::vec2> paper_mm;
     bool svg_fill = false;  // draw_scene_lines adds the visible faces' fills (SceneRequest::svg_fill)
+    // SceneRequest::lines_json_detail; with Full draw_scene_lines keeps each point's surface location.
+    LinesJsonDetail lines_json_detail = LinesJsonDetail::Basic;
 
     // Takes what the request asks of the loaded model file: its camera becomes the camera
     // options (placement, projection, near and far; the image's aspect with size_from_camera)

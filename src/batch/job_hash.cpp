@@ -86,7 +86,7 @@ std::string job_hash(const BatchJob& job, std::string_view style_text, int64_t m
     text += hashed_options(r, /*view_line=*/true) + "\n";
     text += "size=" + std::to_string(r.size.x) + "x" + std::to_string(r.size.y) +
             " samples=" + std::to_string(r.samples) + " png=" + (job.outputs.png ? "1" : "0") +
-            " svg=" + (job.outputs.svg ? "1" : "0");
+            " svg=" + (job.outputs.svg ? "1" : "0") + (job.outputs.lines_json ? " lines-json=1" : "");
     text += hashed_options(r, /*view_line=*/false) + animation_file(r.animation) + "\n";
     text += "style=" + job.style + "\n";
     text += style_text;

@@ -67,16 +67,20 @@ std::vector<std::string> split_list(std::string_view text, std::string_view sepa
 }
 
 BatchOutputs parse_formats(const std::string& text) {
-    BatchOutputs o{false, false};
+    BatchOutputs o{false, false, false};
     for (const std::string& f : split_list(text, ",;+")) {
         if (f == "png")
             o.png = true;
         else if (f == "svg")
             o.svg = true;
+        else if (f == "lines-json")
+            o.lines_json = true;
         else
-            throw InputError("format: unknown output format " + io::quote_token(f) + " (choose png, svg or png,svg)");
+            throw InputError("format: unknown output format " + io::quote_token(f) +
+                             " (choose png, svg, lines-json or a list of them)");
     }
-    if (!o.png && !o.svg) throw InputError("format: no output format given (choose png, svg or png,svg)");
+    if (!o.png && !o.svg && !o.lines_json)
+        throw InputError("format: no output format given (choose png, svg, lines-json or a list of them)");
     return o;
 }
 

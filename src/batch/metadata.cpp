@@ -158,10 +158,9 @@ std::string format_metadata(const JobRecord& r) {
     j["lines"] = r.lines;
     Json outputs = Json::object();
     if (job.outputs.png) outputs["png"] = file + ".png";
-    if (job.outputs.svg) {
-        outputs["svg"] = file + ".svg";
-        j["svg_lines"] = r.svg_lines;
-    }
+    if (job.outputs.svg) outputs["svg"] = file + ".svg";
+    if (job.outputs.lines_json) outputs["lines_json"] = file + ".lines.json";
+    if (job.outputs.svg || job.outputs.lines_json) j["svg_lines"] = r.svg_lines;
     if (const std::string mesh = mesh_file_stem(job); !mesh.empty())  // relative to the metadata, as the others
         outputs["mesh"] = std::filesystem::path(mesh)
                               .lexically_relative(std::filesystem::path(job.stem).parent_path())
@@ -184,7 +183,8 @@ std::string format_metadata(const JobRecord& r) {
 bool job_complete(const std::string& output_dir, const BatchJob& job, const std::string& hash) {
     std::error_code ec;
     if ((job.outputs.png && !std::filesystem::is_regular_file(job_file(output_dir, job, ".png"), ec)) ||
-        (job.outputs.svg && !std::filesystem::is_regular_file(job_file(output_dir, job, ".svg"), ec)))
+        (job.outputs.svg && !std::filesystem::is_regular_file(job_file(output_dir, job, ".svg"), ec)) ||
+        (job.outputs.lines_json && !std::filesystem::is_regular_file(job_file(output_dir, job, ".lines.json"), ec)))
         return false;
     if (const std::string mesh = mesh_file_stem(job);
         !mesh.empty() && !std::filesystem::is_regular_file(std::filesystem::path(output_dir) / mesh, ec))

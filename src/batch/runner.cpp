@@ -171,7 +171,7 @@ private:
                 // A job whose style failed is reported as failed when the group comes up.
                 if (complete_[i] || !styles_.at(jobs_[i].style).error.empty()) continue;
                 group.pending.push_back(i);
-                group.svg |= jobs_[i].outputs.svg;
+                group.svg |= jobs_[i].outputs.svg || jobs_[i].outputs.lines_json;
                 group.png |= jobs_[i].outputs.png || !jobs_[i].options.aovs.empty();
                 ++to_render_;
             }
@@ -339,7 +339,7 @@ private:
             record.timings_ms.emplace_back("render", ms_since(start));
             record.gl_renderer = gl_renderer_;
         }
-        if (job.outputs.svg) {
+        if (job.outputs.svg || job.outputs.lines_json) {
             const auto start = Clock::now();
             files.drawing = draw_scene_lines(*model.extractor, scene, camera, nullptr, &sequence.svg);
             record.timings_ms.emplace_back("svg", ms_since(start));
@@ -361,6 +361,9 @@ private:
             files.record.fields = files.aovs.field_scales;
         }
         if (job.outputs.svg) write_svg(batch::job_file(root, job, ".svg"), files.drawing, files.background);
+        if (job.outputs.lines_json)
+            io::write_file_atomic(batch::job_file(root, job, ".lines.json"),
+                                  format_lines_json(files.drawing, job.options.lines_json_detail));
         files.record.timings_ms.emplace_back("write", ms_since(start));
         // Last: the metadata marks the job complete (batch::job_complete).
         io::write_file_atomic(batch::job_file(root, job, ".json"), batch::format_metadata(files.record));

@@ -91,7 +91,7 @@ std::vector<Chain> chain_order(const std::vector<LineSegment>& segments) {
     return out;
 }
 
-std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
+std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments, bool faces) {
     const std::vector<Chain> chains = chain_order(segments);
     std::vector<Polyline> out;
     out.reserve(chains.size());
@@ -112,7 +112,9 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
                 line.points.push_back(r ? s.a : s.b);
                 line.strength.push_back(r ? s.strength_a : s.strength_b);
             }
+            if (faces) line.faces.push_back(s.face);  // the face from point i to point i + 1
         }
+        if (faces && !chain.closed) line.faces.push_back(line.faces.back());  // the last point's
         out.push_back(std::move(line));
     }
     return out;

@@ -11,6 +11,10 @@ namespace inkshade::geometry {
 struct Polyline {
     std::vector<glm::vec3> points;  // a closed polyline does not repeat its first point
     std::vector<float> strength;    // per point, parallel to points (segment end strengths)
+    // Per point when chain_segments is asked for them, else empty: the face of the segment
+    // from the point to the next (the last point of an open polyline: of the segment ending
+    // there); LineSegment::face.
+    std::vector<uint32_t> faces;
     bool closed = false;
 };
 
@@ -38,8 +42,9 @@ std::vector<Chain> chain_order(const std::vector<LineSegment>& segments);
 // their lowest segment index. Each polyline runs along its first segment's a → b direction
 // (an open chain walked from that segment's b end is reversed), so on a consistently oriented
 // mesh a contour keeps the front-facing side on its left. A point takes the strength of the
-// segment end it came from. Segments whose two ends share a key are dropped.
-std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments);
+// segment end it came from. Segments whose two ends share a key are dropped. With `faces`, each
+// polyline's Polyline::faces too.
+std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments, bool faces = false);
 
 // Polyline length in the units of its points, the closing step of a loop included.
 float polyline_length(const Polyline& line);

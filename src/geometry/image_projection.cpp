@@ -29,6 +29,10 @@ glm::dvec3 ImageProjection::project(const glm::vec3& p) const {
     return {(ndc.x + 1.0) * 0.5 * width_, (1.0 - ndc.y) * 0.5 * height_, (ndc.z + 1.0) * 0.5};
 }
 
+double ImageProjection::clip_w(const glm::vec3& p) const {
+    return (clip_from_world_ * glm::dvec4(glm::dvec3(p), 1.0)).w;
+}
+
 double ImageProjection::view_depth(const glm::vec3& p) const { return glm::dot(glm::dvec3(p) - eye_, forward_); }
 
 bool ImageProjection::clipped(const glm::vec3& p) const {

@@ -5,9 +5,10 @@
 //   extract     each layer's segments (world space) from its type's extractor, kept where they
 //               lie on the faces its line set selects (face_selection.hpp)
 //   visibility  split by visibility (ray casting, visibility.hpp), per occlusion level
-//   chain       chain into polylines per level drawn
+//   chain       chain into polylines per level drawn (with each point's face for surface points)
 //   finish      project to image pixels, drop short chains and smooth (in pixels), then stylised
-//               strokes (split, widths and colours, sketchy passes, dashes; stroke_style.hpp)
+//               strokes (split, widths and colours, sketchy passes, dashes; stroke_style.hpp);
+//               with LineContext::surface each point's surface location (surface_points.hpp)
 //   coherence   in a sequence, the stroke parameter from the previous frame and the record of
 //               this frame's chains for the next (stroke_coherence.hpp)
 // No type is named here: what differs between types is declared at their registration.
@@ -26,6 +27,7 @@
 #include "geometry/stroke_coherence.hpp"
 #include "geometry/stroke_style.hpp"
 #include "geometry/suggestive_contours.hpp"
+#include "geometry/surface_points.hpp"
 #include "geometry/visibility.hpp"
 #include "geometry/visible_fills.hpp"
 #include "inkshade/error.hpp"
@@ -37,10 +39,15 @@ using namespace geometry;
 
 namespace {
 
-// World polylines → image paths; drops those shorter than min_length px, then smooths. With
-// `keep_world` each path keeps the world points it was projected from (LinePath::world).
+// What a drawing's paths keep of the surface they were projected from.
+struct KeptSurface {
+    bool world = false;    // LinePath::world (a sequence's frames)
+    bool surface = false;  // LinePath::surface (LineContext::surface; the chains have faces)
+};
+
+// World polylines → image paths; drops those shorter than min_length px, then smooths.
 std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImageProjection& view, float min_length_px,
-                               int smooth_iterations, bool keep_world) {
+                               int smooth_iterations, KeptSurface keep) {
     std::vector<Polyline> image;  // (x, y, 0) in pixels, for drop_short and smoothing
     std::vector<std::vector<float>> depths;
     std::vector<const Polyline*> sources;
@@ -72,7 +79,8 @@ std::vector<LinePath> to_image(const std::vector<Polyline>& lines, const ImagePr
         for (const glm::vec3& q : image[i].points) path.points.emplace_back(q.x, q.y);
         path.depth = std::move(depths[i]);
         path.strength = std::move(image[i].strength);
-        if (keep_world) path.world = sources[i]->points;
+        if (keep.world) path.world = sources[i]->points;
+        if (keep.surface) path.surface = surface_points(*sources[i], view);
     }
     return paths;
 }
@@ -136,6 +144,8 @@ struct DrawView {
     ViewDepthRange depth_range;
     std::vector<LineTiming>* timings;
     const StrokeSequence* sequence;  // the previous frame; null outside a sequence
+    const Mesh& mesh;
+    bool surface = false;  // LineContext::surface
 };
 
 // Chains per occlusion level drawn, and the same in image pixels.
@@ -144,16 +154,16 @@ using LevelPaths = std::vector<std::pair<int, std::vector<LinePath>>>;
 
 // Stage "chain": the layer's visible and hidden segments chained per level drawn (a change of
 // level ends a chain).
-LevelChains chain_levels(const VisibilitySplit& split, LevelRange levels, std::vector<LineTiming>* timings) {
-    StageTimer timer(timings, "chain");
+LevelChains chain_levels(const VisibilitySplit& split, LevelRange levels, const DrawView& v) {
+    StageTimer timer(v.timings, "chain");
     LevelChains out;
-    if (levels.min == 0) out.emplace_back(0, chain_segments(split.visible));
+    if (levels.min == 0) out.emplace_back(0, chain_segments(split.visible, v.surface));
     std::map<int, std::vector<LineSegment>> by_level;
     for (size_t k = 0; k < split.hidden.size(); ++k) {
         const int level = split.hidden_levels[k];
         if (level >= levels.min && level <= levels.max) by_level[level].push_back(split.hidden[k]);
     }
-    for (const auto& [level, parts] : by_level) out.emplace_back(level, chain_segments(parts));
+    for (const auto& [level, parts] : by_level) out.emplace_back(level, chain_segments(parts, v.surface));
     return out;
 }
 
@@ -165,7 +175,8 @@ LevelPaths image_paths(const LevelChains& chained, const LineSettings& settings,
     const int smooth = int(line_number(settings, "smooth"));
     LevelPaths out;
     for (const auto& [level, polylines] : chained) {
-        std::vector<LinePath> chains = to_image(polylines, v.projection, min_length, smooth, v.sequence != nullptr);
+        std::vector<LinePath> chains = to_image(polylines, v.projection, min_length, smooth,
+                                                {.world = v.sequence != nullptr, .surface = v.surface});
         for (LinePath& p : chains) p.level = level;
         out.emplace_back(level, std::move(chains));
     }
@@ -234,6 +245,7 @@ LineLayer styled_layer(LevelPaths levels, const PlannedLayer& layer, size_t inde
         for (LinePath& p : chains) p.world.clear();
         std::vector<LinePath> paths =
             style_strokes(std::move(chains), layer.modifiers, v.depth_range, uint32_t(index * 256 + size_t(level)));
+        if (v.surface) fill_barycentrics(v.mesh, paths);
         auto& into = level == 0 ? out.visible : out.hidden;
         into.insert(into.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
     }
@@ -427,8 +439,12 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         return drawing;
     }
     Impl& m = *impl_;
-    const DrawView view{ImageProjection(camera, width, height), m.depth_range(camera, plan.reads_depth), timings,
-                        sequence};
+    const DrawView view{ImageProjection(camera, width, height),
+                        m.depth_range(camera, plan.reads_depth),
+                        timings,
+                        sequence,
+                        m.data.mesh(),
+                        context.surface};
     m.prepare(plan.mesh, timings);
     const std::vector<std::vector<LineSegment>> segments = m.extract(plan, camera, context, timings);
     const EdgeNeighbours around = m.fold_surroundings(plan, segments, timings);
@@ -436,7 +452,7 @@ LineDrawing LineExtractor::draw(const Camera& camera, int width, int height, con
         const PlannedLayer& layer = plan.layers[i];
         const VisibilitySplit split =
             m.visibility(layer, segments[i], m.ray_scene(context.section, timings), around, view);
-        LevelPaths paths = image_paths(chain_levels(split, layer.levels, timings), *layer.settings, view);
+        LevelPaths paths = image_paths(chain_levels(split, layer.levels, view), *layer.settings, view);
         if (sequence) next.layers.push_back(cohere(paths, *layer.settings, i, view));
         drawing.layers.push_back(styled_layer(std::move(paths), layer, i, view));
     }

@@ -13,7 +13,7 @@ namespace {
 void append_point(LinePath& out, const LinePath& p, size_t i, float f) {
     const size_t j = std::min(i + 1, p.points.size() - 1);
     auto mix = [&](auto& to, const auto& v) {
-        if (!v.empty()) to.push_back(f == 0.0f ? v[i] : v[i] + (v[j] - v[i]) * f);
+        if (!v.empty()) to.push_back(interpolated(v[i], v[j], f));
     };
     for_each_point_attribute(mix, out, p);
 }

@@ -160,12 +160,6 @@ std::pair<size_t, double> consensus(std::vector<double>& votes, double window) {
     return {best_end - best_begin, votes[best_begin] + sum / double(best_end - best_begin)};
 }
 
-template <class V>
-void reverse_attribute(V& v, bool closed) {
-    if (v.size() < 2) return;
-    std::reverse(v.begin() + (closed ? 1 : 0), v.end());
-}
-
 }  // namespace
 
 LinePath reversed(const LinePath& path) {

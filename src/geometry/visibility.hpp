@@ -32,6 +32,8 @@ public:
     bool clipped(const glm::vec3& p) const;
     // Distance from the eye plane along the view direction (positive in front).
     double view_depth(const glm::vec3& p) const;
+    // The clip-space w of p (perspective: its view depth; orthographic: 1).
+    double clip_w(const glm::vec3& p) const;
     // World size of one pixel at p's depth (orthographic: everywhere): the depth a pixel spans
     // there (docs/lines.md, Visibility).
     double pixel_size(const glm::vec3& p) const;

@@ -354,6 +354,14 @@ void add_outputs_and_pose(std::vector<OptionSpec>& t) {
                               "the image); batch: obj or ply, DIR/NAME.mesh.EXT once per model (docs/cli.md)",
                       .fronts = kRender | kLines | kBatch},
                      [](auto& r) -> auto& { return r.export_mesh; }));
+    t.push_back(bind_choice(
+        {.name = "lines-json-detail", .kind = K::Choice, .value = "basic|full",
+         .help = "what the lines JSON holds of each point: basic (image point, depth, strength) or full (also the "
+                 "world position, triangle and barycentric weights, image tangent and normal; docs/lines.md)",
+         .fronts = kLines | kBatch | kPython, .choices = {"basic", "full"}, .hash = HashUse::ImageWhenSet,
+         .metadata = "lines_json_detail"},
+        [](auto& r) -> auto& { return r.lines_json_detail; },
+        std::vector<LinesJsonDetail>{LinesJsonDetail::Basic, LinesJsonDetail::Full}));
 }
 
 std::vector<OptionSpec> make_table() {

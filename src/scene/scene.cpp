@@ -361,6 +361,7 @@ Scene make_scene(const SceneRequest& r) {
     scene.size_from_camera = r.size_from_camera;
     scene.lights = r.lights;
     scene.svg_fill = r.svg_fill;
+    scene.lines_json_detail = r.lines_json_detail;
     apply_drawing_sheet(r, scene);
     return scene;
 }
@@ -410,7 +411,9 @@ Image render_scene(Renderer& renderer, const Scene& scene, const Camera& camera,
 
 LineDrawing draw_scene_lines(LineExtractor& extractor, const Scene& scene, const Camera& camera,
                              std::vector<LineTiming>* timings, StrokeSequence* sequence) {
-    const LineContext context{.light = scene.light(extractor.bounds(), camera), .section = scene.section_plane};
+    const LineContext context{.light = scene.light(extractor.bounds(), camera),
+                              .section = scene.section_plane,
+                              .surface = scene.lines_json_detail == LinesJsonDetail::Full};
     LineDrawing drawing = extractor.draw(camera, scene.options.width, scene.options.height, scene.vector_lines,
                                          timings, sequence, context);
     if (scene.paper_mm) drawing.paper_mm = *scene.paper_mm;

@@ -22,7 +22,9 @@ glm::vec3 color_at(glm::vec2 p) { return {0.001f * p.x, 0.001f * p.y, 0.001f * (
 glm::vec3 world_at(glm::vec2 p) { return {p.x, p.y, p.x - p.y}; }
 constexpr float kUOffset = 7.0f;
 
-// `p` with every per-point attribute set; u = kUOffset + arc length.
+// `p` with every per-point attribute set; u = kUOffset + arc length; each surface point's face
+// the index of the piece from it to the next point (the last point of an open path: of the
+// piece ending there), w = 1 so that the surface point is linear in the image too.
 LinePath filled(LinePath p) {
     p.depth.clear();
     p.strength.clear();
@@ -32,7 +34,9 @@ LinePath filled(LinePath p) {
         p.width.push_back(width_at(q));
         p.color.push_back(color_at(q));
         p.world.push_back(world_at(q));
+        p.surface.push_back({.world = world_at(q), .face = int32_t(p.surface.size()), .barycentric = {}, .w = 1.0f});
     }
+    if (!p.closed && p.surface.size() > 1) p.surface.back().face = int32_t(p.surface.size()) - 2;
     const std::vector<double> s = arc_lengths(p);
     for (size_t i = 0; i < p.points.size(); ++i) p.u.push_back(float(kUOffset + s[i]));
     p.level = 3;
@@ -55,7 +59,7 @@ void expect_follows_points(const LinePath& p, bool u_dropped, const std::string&
         EXPECT_EQ(v.size(), p.points.size());
     };
     for_each_point_attribute(check, p);
-    EXPECT_EQ(present, u_dropped ? 6u : 7u);
+    EXPECT_EQ(present, u_dropped ? 7u : 8u);
     if (!attributes_consistent(p)) return;
     for (size_t i = 0; i < p.points.size(); ++i) {
         const glm::vec2 q = p.points[i];
@@ -64,11 +68,36 @@ void expect_follows_points(const LinePath& p, bool u_dropped, const std::string&
         EXPECT_TRUE(near(p.width[i], width_at(q))) << i;
         EXPECT_TRUE(near(p.color[i], color_at(q))) << i;
         EXPECT_TRUE(near(p.world[i], world_at(q))) << i;
+        EXPECT_TRUE(near(p.surface[i].world, world_at(q))) << i;
     }
     if (u_dropped) return;
     const std::vector<double> s = arc_lengths(p);
     for (size_t i = 1; i < p.points.size(); ++i)
         EXPECT_NEAR(double(p.u[i] - p.u[0]), s[i], 1e-3 * std::max(1.0, s[i])) << i;
+}
+
+float distance_to_piece(glm::vec2 q, const LinePath& original, int32_t piece) {
+    const size_t n = original.points.size();
+    const glm::vec2 a = original.points[size_t(piece)], b = original.points[(size_t(piece) + 1) % n];
+    const float t = glm::clamp(glm::dot(q - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
+    return glm::length(q - (a + (b - a) * t));
+}
+
+// Each surface point's face (a piece index of `original`, as filled() numbers them) is the piece
+// the path goes on along from that point: the middle of the step to the next point (of the
+// closing step of a loop) lies on it, and an open path's last point lies on its own.
+void expect_faces_follow(const LinePath& p, const LinePath& original, const std::string& what) {
+    SCOPED_TRACE(what);
+    ASSERT_EQ(p.surface.size(), p.points.size());
+    const size_t n = p.points.size();
+    for (size_t k = 0; k < n; ++k) {
+        const int32_t face = p.surface[k].face;
+        ASSERT_GE(face, 0);
+        ASSERT_LT(size_t(face), original.points.size());
+        const bool last_open = !p.closed && k + 1 == n;
+        const glm::vec2 q = last_open ? p.points[k] : 0.5f * (p.points[k] + p.points[(k + 1) % n]);
+        EXPECT_LT(distance_to_piece(q, original, face), 1e-3f) << k << " of " << n;
+    }
 }
 
 TEST(PathAttributes, VisitsEveryVectorOfLinePath) {
@@ -136,6 +165,31 @@ TEST(PathAttributes, KeptByEveryPathOperation) {
     const std::vector<LinePath> cut = split_chains({line, loop}, {.max_length_px = 25.0f});
     EXPECT_GT(cut.size(), 2u);
     for (const LinePath& piece : cut) expect_follows_points(piece, false, "cut to a length");
+}
+
+TEST(PathAttributes, SurfaceFacesStayOnTheirPieces) {
+    // A loop whose corners are 10 px apart, so that a face is one piece of several pixels.
+    LinePath loop;
+    loop.closed = true;
+    for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(40, 0), glm::vec2(40, 40), glm::vec2(0, 40)})
+        loop.points.push_back(c);
+    loop = filled(loop);
+    LinePath line = filled(test::straight_path({10, 20}, {90, 60}, 9.0f));
+    for (const LinePath* original : {&loop, &line}) {
+        const LinePath& o = *original;
+        const std::string kind = o.closed ? "loop " : "line ";
+        expect_faces_follow(o, o, kind + "as filled");
+        expect_faces_follow(reversed(o), o, kind + "reversed");
+        expect_faces_follow(reversed(reversed(o)), o, kind + "reversed twice");
+        expect_faces_follow(opened(o), o, kind + "opened");
+        if (o.closed) expect_faces_follow(rotated(o, 3), o, kind + "rotated");  // a loop's operation
+        expect_faces_follow(rotated_at(o, 51.5), o, kind + "rotated_at");
+        const LinePath open = opened(o);
+        expect_faces_follow(sub_path(open, arc_lengths(open), 12.25, 97.5), o, kind + "sub_path");
+        expect_faces_follow(reversed(sub_path(open, arc_lengths(open), 12.25, 97.5)), o, kind + "reversed sub_path");
+        for (const LinePath& piece : split_chains({o}, {.max_length_px = 7.0f}))
+            expect_faces_follow(piece, o, kind + "cut to a length");
+    }
 }
 
 }  // namespace

@@ -200,6 +200,36 @@ class ModuleTest(unittest.TestCase):
             np.testing.assert_allclose(got["points"], np.array(exp["points"]), atol=1e-3)
             self.assertEqual(got["closed"], exp["closed"])
 
+    def test_lines_json_detail_is_the_clis(self):
+        """lines_json_detail='full' gives each path the arrays --lines-json-detail full writes; the
+        batch format lines-json writes STEM.lines.json."""
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "l.json")
+            self.cli("lines", "builtin:torus", "--lines", "contour", "--size", "128x128", "--elevation", "50",
+                     "-o", os.path.join(tmp, "l.svg"), "--lines-json", path, "--lines-json-detail", "full")
+            with open(path) as f:
+                expected = json.load(f)
+            manifest = os.path.join(tmp, "jobs.csv")
+            with open(manifest, "w") as f:
+                f.write("model,name,styles,size\nbuiltin:torus,t,ink-vector,64x48\n")
+            summary = inkshade.batch(os.path.join(tmp, "ds"), manifest=manifest, formats=["lines-json"],
+                                     lines_json_detail="full")
+            self.assertEqual(summary["done"], 1)
+            with open(os.path.join(tmp, "ds", "t", "ink-vector", "az035_el20.lines.json")) as f:
+                self.assertIn("barycentric", json.load(f)["layers"][0]["paths"][0])
+        lines = self.renderer.lines(["contour"], size=(128, 128), elevation=50, lines_json_detail="full")
+        want = [p for layer in expected["layers"] for p in layer["paths"]]
+        self.assertEqual(len(lines), len(want))
+        for got, exp in zip(lines, want):
+            self.assertEqual(got["world"].shape, (len(exp["points"]), 3))
+            self.assertEqual(got["face"].dtype, np.int32)
+            np.testing.assert_array_equal(got["face"], exp["face"])
+            for key in ("world", "barycentric", "tangent", "normal"):
+                np.testing.assert_allclose(got[key], np.array(exp[key]), atol=1e-6)
+        self.assertNotIn("world", self.renderer.lines(["contour"], size=(128, 128), elevation=50)[0])
+        with self.assertRaisesRegex(ValueError, "lines_json_detail"):
+            self.renderer.lines(["contour"], lines_json_detail="most")
+
     def test_lines_carry_occlusion_levels(self):
         # A torus from 20 degrees above its plane: its inner contour passes behind the tube (two
         # surfaces in front) and runs on behind its own sheet past the cusps (one).
