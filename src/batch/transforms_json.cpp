@@ -17,6 +17,7 @@
 #include "batch/metadata.hpp"
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/json_number.hpp"
 
 namespace inkshade::batch {
 
@@ -24,13 +25,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The shortest text that reads back to the same double.
-Json number(double v) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    if (ec != std::errc() || !std::isfinite(v)) return v;
-    return std::stod(std::string(buf, end));
-}
+Json number(double v) { return io::shortest_number(v); }
 
 // A float the metadata wrote as its shortest text, as the float it was (the text parsed as a
 // double is the nearest double to the text, not the float: 0.1f is 0.100000001490116...).

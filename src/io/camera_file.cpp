@@ -10,6 +10,7 @@
 
 #include "inkshade/aov.hpp"
 #include "inkshade/version.hpp"
+#include "io/json_number.hpp"
 
 namespace inkshade {
 
@@ -17,13 +18,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The shortest text that reads back to the same value.
-Json number(double v) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    if (ec != std::errc() || !std::isfinite(v)) return v;
-    return std::stod(std::string(buf, end));
-}
+Json number(double v) { return io::shortest_number(v); }
 
 Json vec3(const glm::dvec3& v) { return Json::array({number(v.x), number(v.y), number(v.z)}); }
 
@@ -47,7 +42,8 @@ std::string pretty(const Json& j) {
         out += "  " + Json(key).dump() + ": ";
         if (value.is_array() && !value.empty() && value[0].is_array()) {
             out += "[\n";
-            for (size_t r = 0; r < value.size(); ++r) out += "    " + value[r].dump() + (r + 1 < value.size() ? ",\n" : "\n");
+            for (size_t r = 0; r < value.size(); ++r)
+                out += "    " + value[r].dump() + (r + 1 < value.size() ? ",\n" : "\n");
             out += "  ]";
         } else if (value.is_object()) {
             out += value.dump();
@@ -85,12 +81,13 @@ std::string format_camera_json(const CameraRecord& r) {
     // OpenGL camera space: x right, y up, looking down -z (Camera::view). OpenCV's: x right,
     // y down, z forward, so the two differ by diag(1, -1, -1).
     const glm::dmat4 view(c.view());
-    const glm::dmat4 flip(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, -1, 0), glm::dvec4(0, 0, 0, 1));
+    const glm::dmat4 flip(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, -1, 0),
+                          glm::dvec4(0, 0, 0, 1));
     const glm::dmat4 view_cv = flip * view;
     // Pixels per unit of the image plane at distance 1 (perspective) or per world unit (ortho);
     // square pixels, so fx = fy.
-    const double f = c.orthographic ? h / double(c.ortho_height)
-                                    : 0.5 * h / std::tan(0.5 * glm::radians(double(c.fov_degrees)));
+    const double f =
+        c.orthographic ? h / double(c.ortho_height) : 0.5 * h / std::tan(0.5 * glm::radians(double(c.fov_degrees)));
     const glm::dmat3 k(glm::dvec3(f, 0, 0), glm::dvec3(0, f, 0), glm::dvec3(0.5 * w, 0.5 * h, 1));
 
     Json j;

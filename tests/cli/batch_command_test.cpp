@@ -21,6 +21,7 @@
 #include "inkshade/image.hpp"
 #include "io/avatar_files.hpp"
 #include "io/mesh_files.hpp"
+#include "support/spawn.hpp"
 
 namespace inkshade::test {
 namespace {
@@ -197,25 +198,6 @@ TEST_F(BatchCommand, ResumeSkipsCompleteJobsForceRendersTheSameBytes) {
     r = batch(manifest_ + " -o " + out() + " --size 48x32 -q");
     EXPECT_EQ(summary(r.out).done, 24) << r.out;
     EXPECT_EQ(read_png(out() + "/box/toon/az000_el20.png").width, 48);
-}
-
-// Starts inkshade with `args` (no shell, so the signal reaches inkshade itself).
-pid_t spawn(const std::vector<std::string>& args, const std::string& stdout_path, const std::string& stderr_path) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int in = open("/dev/null", O_RDONLY);
-        const int out = open(stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int err = open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(in, 0);
-        dup2(out, 1);
-        dup2(err, 2);
-        std::vector<char*> argv{const_cast<char*>(INKSHADE_BIN)};
-        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(INKSHADE_BIN, argv.data());
-        _exit(127);
-    }
-    return pid;
 }
 
 // 80 small jobs (two models x 20 views x 2 styles) in `dir`: enough to signal a batch midway.
@@ -422,8 +404,7 @@ TEST_F(BatchCommand, PosePerJobGivesTheRenderCommandsImage) {
         SCOPED_TRACE(t);
         const std::string stem = out() + "/t" + t + "/vrm/az000_el00";
         const std::string expression = std::string(t) == "2" ? " --expression happy=1" : "";
-        const auto cli = run_cli("render " + model + " --animation wave --morph blink=0.5 --time " + t +
-                                 expression +
+        const auto cli = run_cli("render " + model + " --animation wave --morph blink=0.5 --time " + t + expression +
                                  " --size 96x96 --azimuth 0 --elevation 0 -o " + dir_.file("r.png"));
         ASSERT_EQ(cli.status, 0) << cli.err;
         EXPECT_EQ(slurp(stem + ".png"), slurp(dir_.file("r.png")));

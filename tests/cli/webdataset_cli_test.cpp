@@ -18,6 +18,7 @@
 
 #include "cli/run_cli.hpp"
 #include "io/tar_reader.hpp"
+#include "support/spawn.hpp"
 
 namespace inkshade::test {
 namespace {
@@ -149,25 +150,6 @@ TEST_F(WebDatasetBatch, ShardsReadBackByTarfileEqualTheFolderLayout) {
     EXPECT_EQ(compared, folder.size());
     EXPECT_EQ(extracted.size(), folder.size());
     EXPECT_EQ(compared, 2 * 6 + 2u);  // png, svg, depth.exr, normal.png, camera.json, json; png, json
-}
-
-// Starts inkshade with `args` (no shell, so the signal reaches inkshade itself).
-pid_t spawn(const std::vector<std::string>& args, const std::string& stdout_path, const std::string& stderr_path) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int in = open("/dev/null", O_RDONLY);
-        const int o = open(stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int e = open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(in, 0);
-        dup2(o, 1);
-        dup2(e, 2);
-        std::vector<char*> argv{const_cast<char*>(INKSHADE_BIN)};
-        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(INKSHADE_BIN, argv.data());
-        _exit(127);
-    }
-    return pid;
 }
 
 // A worker killed outright leaves its closed shards, at most the open shard's temporary and the
