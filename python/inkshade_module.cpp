@@ -89,7 +89,8 @@ OptionValue option_value(const OptionSpec& spec, const std::string& key, const p
         case OptionKind::Weights: return to_named_weights(key, value);
         case OptionKind::Names:
         case OptionKind::Overrides:
-            if (py::isinstance<py::str>(value)) return parse_option(spec, value.cast<std::string>(), OptionNames::Keywords);
+            if (py::isinstance<py::str>(value))
+                return parse_option(spec, value.cast<std::string>(), OptionNames::Keywords);
             return value.cast<std::vector<std::string>>();
         default:
             if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value))
@@ -131,8 +132,8 @@ std::string keyword_doc(unsigned front) {
     for (const OptionSpec& s : scene_options()) {
         if (!s.takes(front)) continue;
         const std::string d = option_default(s, front);
-        doc += "\n  " + option_label(s, OptionNames::Keywords) + (d.empty() ? "" : " (default " + d + ")") + ": " +
-               s.help;
+        doc +=
+            "\n  " + option_label(s, OptionNames::Keywords) + (d.empty() ? "" : " (default " + d + ")") + ": " + s.help;
     }
     return doc;
 }
@@ -415,7 +416,6 @@ void def_listings(py::module_& m) {
         return models;
         },
         "{model name: {summary, params: {name: description}}}");
-
 }
 
 // batch(): datasets as `inkshade batch` renders them.
@@ -426,8 +426,9 @@ void def_batch(py::module_& m) {
         "batch",
         [](const std::string& output_dir, std::optional<std::string> manifest, std::optional<std::string> models,
            const std::string& views, const std::vector<std::string>& styles, const std::vector<std::string>& formats,
-           bool force, std::optional<std::pair<int, int>> shard_of, std::optional<py::function> progress,
-           const py::kwargs& kwargs) {
+           bool force, std::optional<std::pair<int, int>> shard_of, const std::string& layout,
+           const std::string& shard_size, const std::string& shard_prefix, bool transforms_json,
+           std::optional<py::function> progress, const py::kwargs& kwargs) {
         BatchDefaults defaults;
         defaults.views = views;
         defaults.styles.clear();
@@ -451,8 +452,18 @@ void def_batch(py::module_& m) {
             throw InputError("batch: give exactly one of manifest= or models=");
         std::vector<BatchJob> jobs =
             manifest ? load_manifest(*manifest, defaults) : expand_jobs(find_models(*models), defaults);
-        if (shard_of) jobs = shard(jobs, shard_of->first, shard_of->second);
+        // Where the jobs go, as batch's --layout, --shard-size, --shard-prefix, --transforms-json.
         BatchOptions options{.output_dir = output_dir, .force = force};
+        options.layout = parse_layout(layout);
+        options.transforms_json = transforms_json;
+        if (options.layout == BatchLayout::WebDataset) {
+            if (transforms_json) throw InputError("transforms_json: only with layout='folder'");
+            options.shard_size = parse_shard_size(shard_size);
+            options.shard_prefix =
+                webdataset_shard_prefix(shard_prefix, shard_of ? shard_of->first : 0, shard_of ? shard_of->second : 0);
+            check_webdataset_keys(jobs);  // across every shard's jobs
+        }
+        if (shard_of) jobs = shard(jobs, shard_of->first, shard_of->second);
         BatchProgress report;
         if (progress)
             report = [&](const BatchEvent& e) {
@@ -480,12 +491,12 @@ void def_batch(py::module_& m) {
         py::arg("output_dir"), py::kw_only(), py::arg("manifest") = py::none(), py::arg("models") = py::none(),
         py::arg("views") = BatchDefaults{}.views, py::arg("styles") = std::vector<std::string>{},
         py::arg("formats") = std::vector<std::string>{"png"}, py::arg("force") = false, py::arg("shard") = py::none(),
-        py::arg("progress") = py::none(),
+        py::arg("layout") = "folder", py::arg("shard_size") = "1GB", py::arg("shard_prefix") = "shard",
+        py::arg("transforms_json") = false, py::arg("progress") = py::none(),
         ("Renders a dataset as `inkshade batch` does; returns {total, done, skipped, failed, seconds, failures}. "
          "The option keywords are the defaults of the manifest's columns of those names:" +
          keyword_doc(kBatch))
             .c_str());
-
 }
 
 // Renderer: render, lines and svg of one mesh.

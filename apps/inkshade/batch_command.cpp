@@ -141,17 +141,9 @@ BatchOptions layout_options(const BatchArgs& args, const CLI::App& cmd) {
     // transforms.json names image files beside it; a shard's images are inside tar files.
     if (args.transforms_json) throw InputError("--transforms-json: only with --layout folder");
     o.shard_size = parse_shard_size(args.shard_size);
-    if (args.shard_prefix.empty() || args.shard_prefix.front() == '.' ||
-        args.shard_prefix.find('/') != std::string::npos)
-        throw InputError("--shard-prefix: expected a file name without '/' that does not start with '.', got '" +
-                         args.shard_prefix + "'");
-    o.shard_prefix = args.shard_prefix;
-    if (!args.shard.empty()) {
-        int k = 1, n = 1;
-        parse_shard(args.shard, k, n);
-        const std::string total = std::to_string(n), index = std::to_string(k);
-        o.shard_prefix += "-" + std::string(total.size() - index.size(), '0') + index + "of" + total;
-    }
+    int k = 0, n = 0;
+    if (!args.shard.empty()) parse_shard(args.shard, k, n);
+    o.shard_prefix = webdataset_shard_prefix(args.shard_prefix, k, n);
     return o;
 }
 

@@ -179,6 +179,12 @@ void check_webdataset_keys(const std::vector<BatchJob>& jobs);
 // "1.5GB", "1000000". Throws InputError for zero, a negative or a malformed size.
 uint64_t parse_shard_size(const std::string& text);
 
+// The shard file prefix of worker K of N (--shard K/N; Python shard=(K, N)): PREFIX-KofN, K
+// zero-padded to N's digits ("shard-03of16"), so workers sharing a directory write distinct
+// shards; PREFIX alone for n = 0 (no --shard). Throws InputError for an empty prefix, one with
+// a '/' or one starting with '.' (the temporaries' mark).
+std::string webdataset_shard_prefix(const std::string& prefix, int k, int n);
+
 // PREFIX-NNNNNN.tar (index zero-padded to 6 digits, WebDataset's shard naming).
 std::string webdataset_shard_name(const std::string& prefix, size_t index);
 

@@ -39,6 +39,16 @@ void check_webdataset_keys(const std::vector<BatchJob>& jobs) {
     }
 }
 
+std::string webdataset_shard_prefix(const std::string& prefix, int k, int n) {
+    if (prefix.empty() || prefix.front() == '.' || prefix.find('/') != std::string::npos)
+        throw InputError("--shard-prefix: expected a file name without '/' that does not start with '.', got " +
+                         io::quote_token(prefix));
+    if (n <= 0) return prefix;
+    const std::string total = std::to_string(n), index = std::to_string(k);
+    return prefix + "-" + std::string(total.size() > index.size() ? total.size() - index.size() : 0, '0') + index +
+           "of" + total;
+}
+
 uint64_t parse_shard_size(const std::string& text) {
     const std::string bad =
         "--shard-size: expected a positive size such as 1GB, 256MiB or 1000000 (bytes), got " + io::quote_token(text);

@@ -278,6 +278,36 @@ class ModuleTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "exactly one of"):
             inkshade.batch("/tmp/x")
 
+    def test_batch_layouts_as_the_cli_takes_them(self):
+        """layout=, shard_size=, shard_prefix= and transforms_json= as batch's --layout, --shard-size,
+        --shard-prefix and --transforms-json: the shard holds the folder layout's files, byte for byte."""
+        import tarfile
+        with tempfile.TemporaryDirectory() as tmp:
+            manifest = os.path.join(tmp, "jobs.csv")
+            with open(manifest, "w") as f:
+                f.write("model,views,styles,size\nbuiltin:torus,0:0;90:30,lambert,48x32\n")
+            folder = os.path.join(tmp, "folder")
+            self.assertEqual(inkshade.batch(folder, manifest=manifest, transforms_json=True)["done"], 2)
+            with open(os.path.join(folder, "torus", "lambert", "transforms.json")) as f:
+                self.assertEqual(len(json.load(f)["frames"]), 2)
+            shards = os.path.join(tmp, "shards")
+            summary = inkshade.batch(shards, manifest=manifest, layout="webdataset", shard_size="10MB",
+                                     shard_prefix="torus", shard=(1, 1))
+            self.assertEqual(summary["done"], 2)
+            self.assertEqual(os.listdir(shards), ["torus-1of1-000000.tar"])
+            with tarfile.open(os.path.join(shards, "torus-1of1-000000.tar")) as tar:
+                pngs = {m.name: tar.extractfile(m).read() for m in tar.getmembers() if m.name.endswith(".png")}
+            self.assertEqual(len(pngs), 2)
+            for name, data in pngs.items():
+                with open(os.path.join(folder, name), "rb") as f:
+                    self.assertEqual(f.read(), data, name)
+            with self.assertRaisesRegex(ValueError, "only with layout='folder'"):
+                inkshade.batch(shards, manifest=manifest, layout="webdataset", transforms_json=True)
+            with self.assertRaisesRegex(ValueError, "expected folder or webdataset"):
+                inkshade.batch(shards, manifest=manifest, layout="tar")
+            with self.assertRaisesRegex(ValueError, "shard-size"):
+                inkshade.batch(shards, manifest=manifest, layout="webdataset", shard_size="0")
+
     def test_batch_occlusion_levels_and_light_intensity(self):
         """occlusion_levels= gives the SVG the lines command gives; light_intensity= reaches the job."""
         with tempfile.TemporaryDirectory() as tmp:
