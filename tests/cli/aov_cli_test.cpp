@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cli/json_matrix.hpp"
 #include "cli/run_cli.hpp"
 #include "inkshade/image.hpp"
 
@@ -30,18 +31,11 @@ std::vector<float> read_depth(const std::string& path, int& width, int& height) 
     height = box.max.y - box.min.y + 1;
     std::vector<float> z(size_t(width) * size_t(height));
     Imf::FrameBuffer frame;
-    frame.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float),
-                                 sizeof(float) * size_t(width)));
+    frame.insert(
+        "Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float), sizeof(float) * size_t(width)));
     file.setFrameBuffer(frame);
     file.readPixels(box.min.y, box.max.y);
     return z;
-}
-
-glm::dmat4 matrix(const nlohmann::json& rows) {
-    glm::dmat4 m(1.0);
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) m[c][r] = rows[r][c].get<double>();
-    return m;
 }
 
 // The acceptance test: the depth AOV of a sphere, turned into 3-D points with nothing but the
@@ -51,12 +45,14 @@ TEST(AovCli, SphereDepthReprojectsThroughTheCameraFile) {
         SCOPED_TRACE(projection);
         TempDir dir;
         const std::string out = dir.file("s.png");
-        auto r = run_cli("render builtin:sphere:rings=128,segments=256 --size 320x240 --azimuth 30 --elevation 25 "
-                         "--aov depth,normal,id,material,mask,lines --style anime -o " + out + projection);
+        auto r = run_cli(
+            "render builtin:sphere:rings=128,segments=256 --size 320x240 --azimuth 30 --elevation 25 "
+            "--aov depth,normal,id,material,mask,lines --style anime -o " +
+            out + projection);
         ASSERT_EQ(r.status, 0) << r.err;
-        for (const char* name : {"s.png", "s.depth.exr", "s.normal.png", "s.id.png", "s.material.png", "s.mask.png",
-                                 "s.lines-hull.png", "s.lines-rim-contour.png", "s.lines-suggestive-image.png",
-                                 "s.camera.json"})
+        for (const char* name :
+             {"s.png", "s.depth.exr", "s.normal.png", "s.id.png", "s.material.png", "s.mask.png", "s.lines-hull.png",
+              "s.lines-rim-contour.png", "s.lines-suggestive-image.png", "s.camera.json"})
             EXPECT_TRUE(fs::is_regular_file(dir.file(name))) << name;
         const nlohmann::json cam = nlohmann::json::parse(slurp(dir.file("s.camera.json")));
         int w = 0, h = 0;
@@ -67,8 +63,10 @@ TEST(AovCli, SphereDepthReprojectsThroughTheCameraFile) {
         EXPECT_EQ(ortho, std::string(projection) == " --ortho");
         const double fx = cam["K"][0][0], fy = cam["K"][1][1], cx = cam["K"][0][2], cy = cam["K"][1][2];
         const glm::dmat4 camera_to_world = glm::inverse(matrix(cam["world_to_camera_opencv"]));
-        const glm::dvec3 lo(cam["model_bounds"]["min"][0], cam["model_bounds"]["min"][1], cam["model_bounds"]["min"][2]);
-        const glm::dvec3 hi(cam["model_bounds"]["max"][0], cam["model_bounds"]["max"][1], cam["model_bounds"]["max"][2]);
+        const glm::dvec3 lo(cam["model_bounds"]["min"][0], cam["model_bounds"]["min"][1],
+                            cam["model_bounds"]["min"][2]);
+        const glm::dvec3 hi(cam["model_bounds"]["max"][0], cam["model_bounds"]["max"][1],
+                            cam["model_bounds"]["max"][2]);
         const glm::dvec3 centre = 0.5 * (lo + hi);
         const double radius = 0.5 * (hi.x - lo.x);
         double sum = 0.0;
@@ -151,8 +149,8 @@ TEST(AovCli, BatchWritesEachJobsAovs) {
     auto r = run_cli("batch " + manifest + " -o " + out + " --aov normal -q");
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string a = out + "/a/lambert/az035_el20", b = out + "/b/anime/az035_el20";
-    for (const std::string& f : {a + ".depth.exr", a + ".mask.png", a + ".camera.json", b + ".normal.png",
-                                b + ".camera.json"})
+    for (const std::string& f :
+         {a + ".depth.exr", a + ".mask.png", a + ".camera.json", b + ".normal.png", b + ".camera.json"})
         EXPECT_TRUE(fs::is_regular_file(f)) << f;
     EXPECT_FALSE(fs::exists(a + ".normal.png"));
     EXPECT_FALSE(fs::exists(b + ".depth.exr"));
@@ -162,7 +160,8 @@ TEST(AovCli, BatchWritesEachJobsAovs) {
     EXPECT_EQ(meta["aov"], "depth,mask");
 
     // `render` with the job's options writes the same bytes.
-    auto single = run_cli("render builtin:sphere --style lambert --size 64x48 --aov depth,mask -o " + dir.file("r.png"));
+    auto single =
+        run_cli("render builtin:sphere --style lambert --size 64x48 --aov depth,mask -o " + dir.file("r.png"));
     ASSERT_EQ(single.status, 0) << single.err;
     EXPECT_EQ(slurp(dir.file("r.depth.exr")), slurp(a + ".depth.exr"));
     EXPECT_EQ(slurp(dir.file("r.mask.png")), slurp(a + ".mask.png"));

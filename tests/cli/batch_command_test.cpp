@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/file_tree.hpp"
 #include "cli/run_cli.hpp"
 #include "inkshade/image.hpp"
 #include "io/avatar_files.hpp"
@@ -27,15 +28,6 @@ namespace inkshade::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Relative path -> bytes of every file under `dir`, hidden ones (temporaries) included.
-std::map<std::string, std::string> files_under(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    if (!fs::exists(dir)) return files;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = slurp(e.path().string());
-    return files;
-}
 
 size_t count_ending(const std::map<std::string, std::string>& files, const std::string& suffix) {
     size_t n = 0;

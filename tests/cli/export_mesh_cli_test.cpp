@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cli/json_matrix.hpp"
 #include "cli/run_cli.hpp"
 #include "inkshade/io.hpp"
 
@@ -45,13 +46,6 @@ std::vector<glm::vec3> obj_vertices(const std::string& path) {
         if (l >> tag && tag == "v" && l >> p.x >> p.y >> p.z) out.push_back(p);
     }
     return out;
-}
-
-glm::dmat4 matrix(const nlohmann::json& rows) {
-    glm::dmat4 m(1.0);
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) m[c][r] = rows[r][c].get<double>();
-    return m;
 }
 
 // A sphere seen with the z axis up: every vertex facing the camera is visible, and projected

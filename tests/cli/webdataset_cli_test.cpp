@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/file_tree.hpp"
 #include "cli/run_cli.hpp"
 #include "io/tar_reader.hpp"
 #include "support/spawn.hpp"
@@ -24,15 +25,6 @@ namespace inkshade::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Relative path -> bytes of every file under `dir`, hidden ones included.
-std::map<std::string, std::string> files_under(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    if (!fs::exists(dir)) return files;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = slurp(e.path().string());
-    return files;
-}
 
 // The shard files PREFIX-NNNNNN.tar in `dir`, sorted.
 std::vector<std::string> shards_in(const std::string& dir, const std::string& prefix = "shard") {
