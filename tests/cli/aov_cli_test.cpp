@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cli/exr_channel.hpp"
 #include "cli/json_matrix.hpp"
 #include "cli/run_cli.hpp"
 #include "inkshade/image.hpp"
@@ -23,19 +24,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The EXR's Z channel, top row first, read by OpenEXR itself.
+// The EXR's depth channel Z, top row first.
 std::vector<float> read_depth(const std::string& path, int& width, int& height) {
-    Imf::InputFile file(path.c_str());
-    const Imath::Box2i box = file.header().dataWindow();
-    width = box.max.x - box.min.x + 1;
-    height = box.max.y - box.min.y + 1;
-    std::vector<float> z(size_t(width) * size_t(height));
-    Imf::FrameBuffer frame;
-    frame.insert(
-        "Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float), sizeof(float) * size_t(width)));
-    file.setFrameBuffer(frame);
-    file.readPixels(box.min.y, box.max.y);
-    return z;
+    return read_exr_channel(path, "Z", width, height);
 }
 
 // The acceptance test: the depth AOV of a sphere, turned into 3-D points with nothing but the

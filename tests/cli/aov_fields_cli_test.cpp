@@ -16,28 +16,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/exr_channel.hpp"
 #include "cli/run_cli.hpp"
 
 namespace inkshade::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Channel `name` of the EXR, top row first, read by OpenEXR itself; empty when absent.
-std::vector<float> read_channel(const std::string& path, const char* name, int& width, int& height) {
-    Imf::InputFile file(path.c_str());
-    if (!file.header().channels().findChannel(name)) return {};
-    const Imath::Box2i box = file.header().dataWindow();
-    width = box.max.x - box.min.x + 1;
-    height = box.max.y - box.min.y + 1;
-    std::vector<float> v(size_t(width) * size_t(height));
-    Imf::FrameBuffer frame;
-    frame.insert(
-        name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(v.data()), sizeof(float), sizeof(float) * size_t(width)));
-    file.setFrameBuffer(frame);
-    file.readPixels(box.min.y, box.max.y);
-    return v;
-}
 
 // numpy.percentile(|v|, 90) over the pixels where depth > 0.
 double p90(const std::vector<float>& v, const std::vector<float>& depth) {
@@ -62,7 +47,7 @@ TEST(AovFieldsCli, ExrFieldsAndTheirFactorsInTheCameraFile) {
                              "t.pdir2.exr", "t.shading-s0.png", "t.shading-s4.png"})
         EXPECT_TRUE(fs::is_regular_file(dir.file(name))) << name;
     int w = 0, h = 0;
-    const std::vector<float> depth = read_channel(dir.file("t.depth.exr"), "Z", w, h);
+    const std::vector<float> depth = read_exr_channel(dir.file("t.depth.exr"), "Z", w, h);
     ASSERT_EQ(depth.size(), size_t(160 * 120));
     const nlohmann::json cam = nlohmann::json::parse(slurp(dir.file("t.camera.json")));
     ASSERT_TRUE(cam.contains("fields")) << cam.dump();
@@ -70,16 +55,16 @@ TEST(AovFieldsCli, ExrFieldsAndTheirFactorsInTheCameraFile) {
     EXPECT_EQ(cam["fields"]["shading_sigmas"].size(), 5u);
     for (const char* name : {"kr", "dwkr", "k1", "k2"}) {
         SCOPED_TRACE(name);
-        const std::vector<float> v = read_channel(dir.file(std::string("t.") + name + ".exr"), "Y", w, h);
+        const std::vector<float> v = read_exr_channel(dir.file(std::string("t.") + name + ".exr"), "Y", w, h);
         ASSERT_EQ(v.size(), depth.size());
         const double want = p90(v, depth);
         EXPECT_GT(want, 0.0);
         EXPECT_NEAR(cam["fields"]["p90"][name].get<double>(), want, 1e-6 * want);
     }
     // Values on the visible surface only; pdir as unit X, Y.
-    const std::vector<float> ndotv = read_channel(dir.file("t.ndotv.exr"), "Y", w, h);
-    const std::vector<float> px = read_channel(dir.file("t.pdir1.exr"), "X", w, h);
-    const std::vector<float> py = read_channel(dir.file("t.pdir1.exr"), "Y", w, h);
+    const std::vector<float> ndotv = read_exr_channel(dir.file("t.ndotv.exr"), "Y", w, h);
+    const std::vector<float> px = read_exr_channel(dir.file("t.pdir1.exr"), "X", w, h);
+    const std::vector<float> py = read_exr_channel(dir.file("t.pdir1.exr"), "Y", w, h);
     ASSERT_EQ(px.size(), depth.size());
     for (size_t i = 0; i < depth.size(); ++i) {
         if (depth[i] == 0.0f) {
