@@ -221,8 +221,8 @@ float slope_allowance(const OcclusionContext& ctx, const OcclusionQuery& q, cons
     bool touches = smoothly_touch(ctx, prim, face);
     // ... or one of the faces across its edges: on a coarse sphere the polygon outline in front
     // of the contour is often the far half of the next quad.
+    const glm::uvec3 own = ctx.triangles[face];
     for (int k = 0; k < 3 && !touches && ctx.around; ++k) {
-        const glm::uvec3 own = ctx.triangles[face];
         const uint32_t next = ctx.around->across(face, own[k], own[(k + 1) % 3]);
         touches = next != kNoFace && smoothly_touch(ctx, next, face) && smoothly_touch(ctx, prim, next);
     }
@@ -255,9 +255,13 @@ void count_crossings(const RTCFilterFunctionNArguments* args) {
         if (q.fold_band > 0.0f && st.fold.contains(*ctx, q, prim)) continue;
         const float t = RTCRayN_tfar(args->ray, args->N, i);
         if (st.counted(ctx->triangles, prim, tri, t)) continue;
-        // Near enough to be the point's own surface: judged when the trace is done.
         const float in_front = (st.t_point - t) * st.t_scale;
-        if (in_front <= slope_allowance(*ctx, q, args, i, prim, tri)) continue;
+        // A contour's own faces by their slope (the largest allowance first: most hits are far
+        // beyond it; none for other samples).
+        if (q.slope_depth > 0.0f && in_front <= q.slope_depth * kMaxOwnSlope &&
+            in_front < slope_allowance(*ctx, q, args, i, prim, tri))
+            continue;
+        // Near enough to be the point's own surface: judged when the trace is done.
         if (in_front <= q.own_depth && st.deferred < kDeferredHits) {
             st.deferred_t[st.deferred] = t, st.deferred_prim[st.deferred] = prim, ++st.deferred;
             continue;
