@@ -18,8 +18,8 @@ export MESA_SHADER_CACHE_DISABLE=true
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-now() { date +%s.%N; }
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+# shellcheck source=whole_command_timing.sh
+source "$(dirname "$0")/whole_command_timing.sh"
 
 printf 'model,views,styles\n"%s",turntable:%d:20,%s\n' "$model" "$views" "$style" >"$tmp/jobs.csv"
 echo "== batch vs render loop: $model, $views views (loop: $loop_views), $size, style $style, $runs runs"

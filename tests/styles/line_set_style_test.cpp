@@ -4,20 +4,14 @@
 
 #include "inkshade/error.hpp"
 #include "inkshade/style.hpp"
+#include "styles/style_error.hpp"
 
 namespace inkshade {
 namespace {
 
 const char* kHeader = "[shading]\nmodel = \"lambert\"\n";
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_style(text, "my.toml");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::style_error;
 
 const char* kTwoSets = R"(
 [[lines]]
@@ -93,28 +87,29 @@ TEST(LineSetStyle, OverridesReachTheTypeInEverySet) {
 TEST(LineSetStyle, BadSetsAreOneLineErrors) {
     const std::string h = kHeader;
     const std::string contour = "[[lineset.lines]]\ntype = \"contour\"\n";
-    EXPECT_NE(error_of(h + "[[lineset]]\n" + contour).find("needs name"), std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a b\"\n" + contour).find("lineset name 'a b'"), std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\n").find("needs [[lineset.lines]]"), std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\n" + contour + "[[lineset]]\nname = \"a\"\n" + contour)
+    EXPECT_NE(style_error(h + "[[lineset]]\n" + contour).find("needs name"), std::string::npos);
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a b\"\n" + contour).find("lineset name 'a b'"), std::string::npos);
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\n").find("needs [[lineset.lines]]"), std::string::npos);
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\n" + contour + "[[lineset]]\nname = \"a\"\n" + contour)
                   .find("used twice"),
               std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\nfoo = 1\n" + contour).find("unknown key 'foo'"),
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\nfoo = 1\n" + contour).find("unknown key 'foo'"),
               std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\nface-mark = 300\n" + contour).find("face-mark"),
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\nface-mark = 300\n" + contour).find("face-mark"),
               std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\nmaterials = []\n" + contour).find("empty list"),
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\nmaterials = []\n" + contour).find("empty list"),
               std::string::npos);
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\n" + contour + contour).find("listed twice"), std::string::npos);
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\n" + contour + contour).find("listed twice"),
+              std::string::npos);
     // Image-space lines are found per pixel: no face selection, and one setting in the style.
-    EXPECT_NE(error_of(h + "[[lineset]]\nname = \"a\"\nobjects = \"x\"\n[[lineset.lines]]\ntype = \"hull\"\n")
+    EXPECT_NE(style_error(h + "[[lineset]]\nname = \"a\"\nobjects = \"x\"\n[[lineset.lines]]\ntype = \"hull\"\n")
                   .find("image-space line type 'hull'"),
               std::string::npos);
-    EXPECT_NE(error_of(h + "[[lines]]\ntype = \"hull\"\n[[lineset]]\nname = \"a\"\n[[lineset.lines]]\ntype = "
-                           "\"hull\"\n")
+    EXPECT_NE(style_error(h + "[[lines]]\ntype = \"hull\"\n[[lineset]]\nname = \"a\"\n[[lineset.lines]]\ntype = "
+                              "\"hull\"\n")
                   .find("drawn twice"),
               std::string::npos);
-    EXPECT_EQ(error_of(h + "[[lineset]]\nname = \"a\"\n[[lineset.lines]]\ntype = \"hull\"\n"), "");
+    EXPECT_EQ(style_error(h + "[[lineset]]\nname = \"a\"\n[[lineset.lines]]\ntype = \"hull\"\n"), "");
 }
 
 }  // namespace

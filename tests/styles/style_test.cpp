@@ -10,6 +10,7 @@
 #include "inkshade/style.hpp"
 #include "render/render_fixture.hpp"
 #include "support/temp_dir.hpp"
+#include "styles/style_error.hpp"
 
 namespace inkshade {
 namespace {
@@ -21,14 +22,7 @@ ParamValues full_params(const Style& s) {
     return all;
 }
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_style(text, "my.toml");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::style_error;
 
 TEST(Style, ParsesEveryKindOfValue) {
     Style s = parse_style(R"(
@@ -87,12 +81,12 @@ TEST(Style, BadFilesGiveOneLineErrorsNamingTheProblem) {
         {"[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'no-such-line'", "unknown line type 'no-such-line'"},
     };
     for (const auto& [text, phrase] : cases) {
-        std::string e = error_of(text);
+        std::string e = style_error(text);
         EXPECT_EQ(e.rfind("my.toml: ", 0), 0u) << text << " -> " << e;
         EXPECT_NE(e.find(phrase), std::string::npos) << text << " -> " << e;
         EXPECT_EQ(e.find('\n'), std::string::npos) << e;
     }
-    EXPECT_NE(error_of(std::string(2 << 20, '#')).find("larger than 1 MiB"), std::string::npos);
+    EXPECT_NE(style_error(std::string(2 << 20, '#')).find("larger than 1 MiB"), std::string::npos);
 }
 
 TEST(Style, UnknownStyleNameListsBuiltins) {
@@ -128,8 +122,8 @@ TEST(Style, UnknownNamesSuggestTheClosestOne) {
         EXPECT_FALSE(e.empty());
         EXPECT_EQ(e.find("did you mean"), std::string::npos) << e;
     }
-    EXPECT_NE(error_of("[shading]\nmodel = 'lambret'").find("(did you mean 'lambert'?)"), std::string::npos);
-    EXPECT_NE(error_of("[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'crese'").find("(did you mean 'crease'?)"),
+    EXPECT_NE(style_error("[shading]\nmodel = 'lambret'").find("(did you mean 'lambert'?)"), std::string::npos);
+    EXPECT_NE(style_error("[shading]\nmodel = 'phong'\n[[lines]]\ntype = 'crese'").find("(did you mean 'crease'?)"),
               std::string::npos);
 }
 
@@ -194,8 +188,8 @@ TEST(Style, BaseColourIsATintUnlessMeshColoursAreOff) {
     EXPECT_EQ(parse_style(model, "a.toml").shading.base_color_use, BaseColorUse::Fallback);
     EXPECT_EQ(parse_style("mesh-colors = true\n" + model, "a.toml").shading.base_color_use, BaseColorUse::Fallback);
     EXPECT_EQ(parse_style("mesh-colors = false\n" + model, "a.toml").shading.base_color_use, BaseColorUse::Only);
-    EXPECT_EQ(error_of("mesh-colors = 'no'\n" + model), "my.toml: mesh-colors: expected true or false");
-    EXPECT_EQ(error_of("mesh-colors = 0\n" + model), "my.toml: mesh-colors: expected true or false");
+    EXPECT_EQ(style_error("mesh-colors = 'no'\n" + model), "my.toml: mesh-colors: expected true or false");
+    EXPECT_EQ(style_error("mesh-colors = 0\n" + model), "my.toml: mesh-colors: expected true or false");
     for (const char* name : {"ink", "ink-vector"})
         EXPECT_EQ(load_style(name).shading.base_color_use, BaseColorUse::Only);
     for (const char* name : {"anime", "toon", "lambert"})
