@@ -1,7 +1,10 @@
 // The AOV files beside an image (inkshade/aov.hpp, docs/aov.md), each written atomically.
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "inkshade/aov.hpp"
@@ -38,17 +41,20 @@ void write_field(const std::string& path, const AovImages& a, Aov aov) {
     const size_t channels = size_t(field_channels(aov));
     check_size(path, v.size(), size_t(a.width) * size_t(a.height) * channels);
     if (channels == 1)
-        io::write_exr(path, a.width, a.height, {{"Y", v.data(), 1}});
+        io::write_exr(path, a.width, a.height, {{"Y", v.data(), 1}}, io::ExrCompression::Rle);
     else
-        io::write_exr(path, a.width, a.height, {{"X", v.data(), 2}, {"Y", v.data() + 1, 2}});
+        io::write_exr(path, a.width, a.height, {{"X", v.data(), 2}, {"Y", v.data() + 1, 2}}, io::ExrCompression::Rle);
 }
 
 // n·l in [0, 1] as 16-bit gray: round(v · 65535).
 void write_shading(const std::string& path, const AovImages& a, const std::vector<float>& v) {
     check_size(path, v.size(), size_t(a.width) * size_t(a.height));
     std::vector<uint16_t> gray(v.size());
-    std::transform(v.begin(), v.end(), gray.begin(),
-                   [](float x) { return uint16_t(std::lround(std::clamp(x, 0.0f, 1.0f) * 65535.0f)); });
+    // y + 0.5 is exact in double, so truncating it rounds as lround(y) does, without its call.
+    std::transform(v.begin(), v.end(), gray.begin(), [](float x) {
+        const float y = std::clamp(x, 0.0f, 1.0f) * 65535.0f;
+        return uint16_t(double(y) + 0.5);
+    });
     io::write_png_samples(path, a.width, a.height, 1, gray.data());
 }
 
@@ -81,79 +87,68 @@ std::vector<std::string> aov_file_names(const std::string& image_path, AovSet se
 
 std::vector<std::string> write_aov_files(const std::string& image_path, AovSet set, const AovImages& a,
                                          const CameraRecord& camera) {
-    std::vector<std::string> written;
+    // Each file is encoded and written by a task of its own (a dataset view writes a dozen:
+    // their zlib and EXR encodings are independent), listed in the order of aov_file_names.
+    std::vector<std::pair<std::string, std::function<void(const std::string&)>>> files;
     const int w = a.width, h = a.height;
     const size_t pixels = size_t(w) * size_t(h);
     auto path_of = [&](Aov aov, const char* ext) { return aov_path(image_path, aov_name(aov), ext); };
-    auto done = [&](const std::string& path) { written.push_back(file_name(path)); };
-    if (set.contains(Aov::Depth)) {
-        const std::string path = path_of(Aov::Depth, ".exr");
-        check_size(path, a.depth.size(), pixels);
-        io::write_exr(path, w, h, {{"Z", a.depth.data(), 1}});
-        done(path);
-    }
-    if (set.contains(Aov::Normal)) {
-        const std::string path = path_of(Aov::Normal, ".png");
-        check_size(path, a.normal.size(), pixels * 3);
-        // n * 0.5 + 0.5 in 16 bits; the background (0, 0, 0) is not a unit vector.
-        std::vector<uint16_t> rgb(a.normal.size(), 0);
-        for (size_t p = 0; p < pixels; ++p) {
-            const float* n = &a.normal[3 * p];
-            if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f) continue;
-            for (int c = 0; c < 3; ++c)
-                rgb[3 * p + c] = uint16_t(std::lround(std::clamp(n[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 65535.0f));
-        }
-        io::write_png_samples(path, w, h, 3, rgb.data());
-        done(path);
-    }
-    for (Aov aov : {Aov::Id, Aov::Material}) {
-        if (!set.contains(aov)) continue;
-        const std::string path = path_of(aov, ".png");
-        const std::vector<uint32_t>& ids = aov == Aov::Id ? a.id : a.material;
-        check_size(path, ids.size(), pixels);
-        io::write_png_samples(path, w, h, 1, to_16_bits(ids).data());
-        done(path);
-    }
-    if (set.contains(Aov::Mask)) {
-        const std::string path = path_of(Aov::Mask, ".png");
-        check_size(path, a.mask.size(), pixels);
-        io::write_png_samples(path, w, h, 1, a.mask.data());
-        done(path);
-    }
+    if (set.contains(Aov::Depth))
+        files.emplace_back(path_of(Aov::Depth, ".exr"), [&](const std::string& path) {
+            check_size(path, a.depth.size(), pixels);
+            io::write_exr(path, w, h, {{"Z", a.depth.data(), 1}});
+        });
+    if (set.contains(Aov::Normal))
+        files.emplace_back(path_of(Aov::Normal, ".png"), [&](const std::string& path) {
+            check_size(path, a.normal.size(), pixels * 3);
+            // n * 0.5 + 0.5 in 16 bits; the background (0, 0, 0) is not a unit vector.
+            std::vector<uint16_t> rgb(a.normal.size(), 0);
+            for (size_t p = 0; p < pixels; ++p) {
+                const float* n = &a.normal[3 * p];
+                if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f) continue;
+                for (int c = 0; c < 3; ++c)
+                    rgb[3 * p + c] = uint16_t(std::lround(std::clamp(n[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 65535.0f));
+            }
+            io::write_png_samples(path, w, h, 3, rgb.data());
+        });
+    for (Aov aov : {Aov::Id, Aov::Material})
+        if (set.contains(aov))
+            files.emplace_back(path_of(aov, ".png"), [&, aov](const std::string& path) {
+                const std::vector<uint32_t>& ids = aov == Aov::Id ? a.id : a.material;
+                check_size(path, ids.size(), pixels);
+                io::write_png_samples(path, w, h, 1, to_16_bits(ids).data());
+            });
+    auto add_gray = [&](const std::string& path, const std::vector<uint8_t>& v) {
+        files.emplace_back(path, [&](const std::string& p) {
+            check_size(p, v.size(), pixels);
+            io::write_png_samples(p, w, h, 1, v.data());
+        });
+    };
+    if (set.contains(Aov::Mask)) add_gray(path_of(Aov::Mask, ".png"), a.mask);
     if (set.contains(Aov::Lines))
-        for (const LineMask& m : a.lines) {
-            const std::string path = aov_path(image_path, line_mask_name(m.lineset, m.type), ".png");
-            check_size(path, m.pixels.size(), pixels);
-            io::write_png_samples(path, w, h, 1, m.pixels.data());
-            done(path);
-        }
+        for (const LineMask& m : a.lines)
+            add_gray(aov_path(image_path, line_mask_name(m.lineset, m.type), ".png"), m.pixels);
     if (set.contains(Aov::LineSets))
-        for (const LineSetMask& m : a.linesets) {
-            const std::string path = aov_path(image_path, "lineset-" + m.lineset, ".png");
-            check_size(path, m.pixels.size(), pixels);
-            io::write_png_samples(path, w, h, 1, m.pixels.data());
-            done(path);
-        }
+        for (const LineSetMask& m : a.linesets)
+            add_gray(aov_path(image_path, "lineset-" + m.lineset, ".png"), m.pixels);
     for (Aov aov : kFloatFields)
-        if (set.contains(aov)) {
-            const std::string path = path_of(aov, ".exr");
-            write_field(path, a, aov);
-            done(path);
-        }
+        if (set.contains(aov))
+            files.emplace_back(path_of(aov, ".exr"), [&, aov](const std::string& path) { write_field(path, a, aov); });
     if (set.contains(Aov::ShadingScales))
-        for (int k = 0; k < kShadingScales; ++k) {
-            const std::string path = aov_path(image_path, shading_name(k), ".png");
-            if (size_t(k) >= a.shading.size()) throw RuntimeError(path + ": no such shading scale was rendered");
-            write_shading(path, a, a.shading[size_t(k)]);
-            done(path);
-        }
-    if (!set.empty()) {
-        const std::string path = path_of(Aov::Camera, ".json");
-        CameraRecord record = camera;
-        if (!set.fields().empty()) record.fields = a.field_scales;
-        io::write_file_atomic(path, format_camera_json(record));
-        done(path);
-    }
+        for (int k = 0; k < kShadingScales; ++k)
+            files.emplace_back(aov_path(image_path, shading_name(k), ".png"), [&, k](const std::string& path) {
+                if (size_t(k) >= a.shading.size()) throw RuntimeError(path + ": no such shading scale was rendered");
+                write_shading(path, a, a.shading[size_t(k)]);
+            });
+    if (!set.empty())
+        files.emplace_back(path_of(Aov::Camera, ".json"), [&](const std::string& path) {
+            CameraRecord record = camera;
+            if (!set.fields().empty()) record.fields = a.field_scales;
+            io::write_file_atomic(path, format_camera_json(record));
+        });
+    tbb::parallel_for(size_t(0), files.size(), [&](size_t i) { files[i].second(files[i].first); });
+    std::vector<std::string> written;
+    for (const auto& f : files) written.push_back(file_name(f.first));
     return written;
 }
 

@@ -13,12 +13,13 @@
 
 namespace inkshade::io {
 
-void write_exr(const std::string& path, int width, int height, const std::vector<ExrChannel>& channels) {
+void write_exr(const std::string& path, int width, int height, const std::vector<ExrChannel>& channels,
+               ExrCompression compression) {
     if (width <= 0 || height <= 0 || channels.empty()) throw RuntimeError(path + ": cannot write an empty EXR image");
     std::string bytes;
     try {
         Imf::Header header(width, height);
-        header.compression() = Imf::ZIP_COMPRESSION;
+        header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::RLE_COMPRESSION;
         // zlib's fastest level: on float fields (mantissa noise) level 1 is within a few percent
         // of the default's size at a fraction of its time (a dataset writes many of them).
         header.zipCompressionLevel() = 1;

@@ -4,6 +4,7 @@
 #include <png.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <csetjmp>
@@ -64,9 +65,13 @@ void png_ignore_warning(png_structp, png_const_charp) {}
 
 // The encoding proper. libpng's errors longjmp back to the setjmp here, so no object with a
 // destructor lives in between; false on error (the message is in the sink).
-bool encode_png(png_structp png, png_infop info, int width, int height, int bit_depth, int color_type,
-                png_bytepp rows) {
+bool encode_png(png_structp png, png_infop info, int width, int height, int bit_depth, int color_type, png_bytepp rows,
+                bool fast) {
     if (setjmp(png_jmpbuf(png))) return false;
+    if (fast) {  // io/png_samples.hpp: the AOV images
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+        png_set_compression_strategy(png, Z_RLE);
+    }
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), bit_depth, color_type, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
@@ -76,7 +81,8 @@ bool encode_png(png_structp png, png_infop info, int width, int height, int bit_
 }
 
 // Encodes rows of `channels` samples a pixel (1 gray, 3 RGB, 4 RGBA) and writes them atomically.
-void write_png_rows(const std::string& path, int width, int height, int channels, int bit_depth, uint8_t* pixels) {
+void write_png_rows(const std::string& path, int width, int height, int channels, int bit_depth, uint8_t* pixels,
+                    bool fast = false) {
     const int color_type = channels == 1   ? PNG_COLOR_TYPE_GRAY
                            : channels == 3 ? PNG_COLOR_TYPE_RGB
                                            : PNG_COLOR_TYPE_RGBA;
@@ -92,7 +98,7 @@ void write_png_rows(const std::string& path, int width, int height, int channels
         throw RuntimeError(path + ": PNG encoding failed (out of memory)");
     }
     png_set_write_fn(png, &sink, png_append, nullptr);
-    const bool encoded = encode_png(png, info, width, height, bit_depth, color_type, rows.data());
+    const bool encoded = encode_png(png, info, width, height, bit_depth, color_type, rows.data(), fast);
     png_destroy_write_struct(&png, &info);
     if (!encoded) throw RuntimeError(path + ": PNG encoding failed (" + sink.error + ")");
     io::write_file_atomic(path, sink.bytes);
@@ -127,12 +133,12 @@ void write_png(const std::string& path, const Image& image, int bit_depth) {
 namespace io {
 
 void write_png_samples(const std::string& path, int width, int height, int channels, const uint8_t* samples) {
-    write_png_rows(path, width, height, channels, 8, const_cast<uint8_t*>(samples));
+    write_png_rows(path, width, height, channels, 8, const_cast<uint8_t*>(samples), true);
 }
 
 void write_png_samples(const std::string& path, int width, int height, int channels, const uint16_t* samples) {
     std::vector<uint8_t> bytes = big_endian(samples, size_t(width) * size_t(height) * size_t(channels));
-    write_png_rows(path, width, height, channels, 16, bytes.data());
+    write_png_rows(path, width, height, channels, 16, bytes.data(), true);
 }
 
 }  // namespace io

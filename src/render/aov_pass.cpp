@@ -52,6 +52,10 @@ struct AovTargets {
         const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
         glNamedFramebufferDrawBuffers(surface.id(), 3, buffers);
         check_complete(surface);
+        faces_only = gpu::GlFramebuffer::create();
+        glNamedFramebufferTexture(faces_only.id(), GL_COLOR_ATTACHMENT0, face.id(), 0);
+        glNamedFramebufferRenderbuffer(faces_only.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+        check_complete(faces_only);
 
         coverage_samples = gpu::GlRenderbuffer::create();
         if (s > 1)
@@ -59,7 +63,8 @@ struct AovTargets {
         else
             glNamedRenderbufferStorage(coverage_samples.id(), GL_R8, w, h);
         coverage_msaa = gpu::GlFramebuffer::create();
-        glNamedFramebufferRenderbuffer(coverage_msaa.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, coverage_samples.id());
+        glNamedFramebufferRenderbuffer(coverage_msaa.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                       coverage_samples.id());
         check_complete(coverage_msaa);
         coverage = make_texture(w, h, GL_R8);
         coverage_resolved = gpu::GlFramebuffer::create();
@@ -69,7 +74,7 @@ struct AovTargets {
     int width, height, samples;
     gpu::GlTexture normal_depth, object_id, face, coverage;
     gpu::GlRenderbuffer depth, coverage_samples;
-    gpu::GlFramebuffer surface, coverage_msaa, coverage_resolved;
+    gpu::GlFramebuffer surface, faces_only, coverage_msaa, coverage_resolved;
 };
 
 class AovPass final : public Pass {
@@ -92,10 +97,13 @@ public:
         const glm::mat4 view_proj = camera.projection(frame.aspect()) * camera.view();
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         const AovSet fields = frame.options.aovs.fields();
-        if (want.contains(Aov::Depth) || want.contains(Aov::Normal) || want.contains(Aov::Id) ||
-            want.contains(Aov::Material) || !fields.empty()) {
+        const bool surface = want.contains(Aov::Depth) || want.contains(Aov::Normal) || want.contains(Aov::Id) ||
+                             want.contains(Aov::Material);
+        if (surface) {
             draw_surface(frame, view_proj);
             read_surface(frame, want, out);
+        } else if (!fields.empty()) {
+            draw_faces(frame, view_proj);  // the same faces at a fraction of the fragment work
         }
         if (!fields.empty() && frame.field_vertices) interpolate_fields(frame, fields, read_faces(width), out);
         if (want.contains(Aov::Mask)) draw_and_read_mask(frame, view_proj, out);
@@ -127,7 +135,29 @@ private:
                              [&] { frame.mesh->draw([&](uint32_t first) { p.set("u_face_base", int(first)); }); });
     }
 
+    // The face target alone, drawn as draw_surface draws it.
+    void draw_faces(Frame& frame, const glm::mat4& view_proj) {
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_->faces_only.id());
+        const gpu::DepthScope depth(GL_LESS);
+        const GLuint no_id[4] = {0, 0, 0, 0};
+        const GLfloat far = 1.0f;
+        glClearBufferuiv(GL_COLOR, 0, no_id);
+        glClearBufferfv(GL_DEPTH, 0, &far);
+        if (!faces_) faces_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/face.frag");
+        gpu::ShaderProgram& p = *faces_;
+        p.use();
+        p.set("u_view_proj", view_proj);
+        draw_front_then_back(frame, p,
+                             [&] { frame.mesh->draw([&](uint32_t first) { p.set("u_face_base", int(first)); }); });
+    }
+
+    // Only the targets asked for are read: the surface fields need the face target alone.
     void read_surface(const Frame& frame, AovSet want, AovImages& out) const {
+        if (want.contains(Aov::Depth) || want.contains(Aov::Normal)) read_normal_depth(want, out);
+        if (want.contains(Aov::Id) || want.contains(Aov::Material)) read_ids(frame, want, out);
+    }
+
+    void read_normal_depth(AovSet want, AovImages& out) const {
         const size_t width = size_t(out.width), pixels = width * size_t(out.height);
         std::vector<float> normal_depth(pixels * 4);
         glGetTextureImage(targets_->normal_depth.id(), 0, GL_RGBA, GL_FLOAT,
@@ -142,7 +172,10 @@ private:
             for (size_t i = 0; i < pixels; ++i)
                 for (int c = 0; c < 3; ++c) out.normal[3 * i + size_t(c)] = normal_depth[4 * i + size_t(c)];
         }
-        if (!want.contains(Aov::Id) && !want.contains(Aov::Material)) return;
+    }
+
+    void read_ids(const Frame& frame, AovSet want, AovImages& out) const {
+        const size_t width = size_t(out.width), pixels = width * size_t(out.height);
         std::vector<uint32_t> ids(pixels);
         glGetTextureImage(targets_->object_id.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                           GLsizei(ids.size() * sizeof(uint32_t)), ids.data());
@@ -191,7 +224,7 @@ private:
     }
 
     std::unique_ptr<AovTargets> targets_;
-    std::unique_ptr<gpu::ShaderProgram> surface_, coverage_;
+    std::unique_ptr<gpu::ShaderProgram> surface_, faces_, coverage_;
 };
 
 // Runs when the frame asks for an AOV the renderer draws or a surface field (whose vertex
