@@ -4,9 +4,6 @@
 //                         towards the viewer on back faces as the shading shows them
 //                         (seen_normal); linear depth along the view axis (-z)
 //   location 1 (R32UI):   object id (render/gpu_mesh.hpp attribute 4; 0 = background)
-//   location 2 (R32UI):   face index + 1 (GpuMesh::draw draws the faces in order, u_face_base
-//                         the first face of the draw call; 0 = background): where the surface
-//                         fields interpolate
 #include "common/lighting.glsl"
 
 in vec3 v_world_pos;
@@ -14,16 +11,13 @@ in vec3 v_world_normal;
 flat in uint v_object_id;
 
 uniform mat4 u_view;
-uniform int u_face_base;
 
 layout(location = 0) out vec4 o_normal_depth;
 layout(location = 1) out uint o_object_id;
-layout(location = 2) out uint o_face;
 
 void main() {
     vec3 v = to_viewer(v_world_pos);
     vec3 n = seen_normal(normalize(v_world_normal), v, gl_FrontFacing);
     o_normal_depth = vec4(normalize(mat3(u_view) * n), -(u_view * vec4(v_world_pos, 1.0)).z);
     o_object_id = v_object_id;
-    o_face = uint(u_face_base + gl_PrimitiveID) + 1u;
 }

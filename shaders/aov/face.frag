@@ -1,8 +1,7 @@
 #version 450 core
-// The aov pass's face buffer alone (src/render/aov_pass.cpp), for the surface fields when no
-// depth, normal or id AOV is asked for: aov.frag's location 2 without the other two targets.
-//   location 0 (R32UI): face index + 1 (u_face_base the first face of the draw call; 0 =
-//                       background)
+// The face drawn at each pixel for the surface fields (src/render/field_samples_pass.cpp):
+//   location 0 (R32UI): face index + 1 (GpuMesh::draw draws the faces in order, u_face_base
+//                       the first face of the draw call; 0 = background)
 uniform int u_face_base;
 
 layout(location = 0) out uint o_face;

@@ -6,12 +6,37 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfIO.h>
+
+#include <algorithm>
 
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
 
 namespace inkshade::io {
+
+namespace {
+
+// The file's bytes in one string reserved for the raw pixels up front: Imf::StdOSStream's
+// string stream grows by copies and is copied out again.
+class StringStream final : public Imf::OStream {
+public:
+    explicit StringStream(size_t reserve) : Imf::OStream("memory") { bytes_.reserve(reserve); }
+    void write(const char c[], int n) override {
+        if (position_ + size_t(n) > bytes_.size()) bytes_.resize(position_ + size_t(n));
+        std::copy(c, c + n, bytes_.begin() + std::ptrdiff_t(position_));
+        position_ += size_t(n);
+    }
+    uint64_t tellp() override { return position_; }
+    void seekp(uint64_t position) override { position_ = size_t(position); }
+    std::string& bytes() { return bytes_; }
+
+private:
+    std::string bytes_;
+    size_t position_ = 0;
+};
+
+}  // namespace
 
 void write_exr(const std::string& path, int width, int height, const std::vector<ExrChannel>& channels,
                ExrCompression compression) {
@@ -30,13 +55,13 @@ void write_exr(const std::string& path, int width, int height, const std::vector
             frame.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data)), x_stride,
                                             x_stride * size_t(width)));
         }
-        Imf::StdOSStream stream;
+        StringStream stream(size_t(width) * size_t(height) * sizeof(float) * channels.size() + 4096);
         {
             Imf::OutputFile file(stream, header);  // the file is complete once this is destroyed
             file.setFrameBuffer(frame);
             file.writePixels(height);
         }
-        bytes = stream.str();
+        bytes = std::move(stream.bytes());
     } catch (const std::exception& e) {
         throw RuntimeError(path + ": EXR encoding failed (" + e.what() + ")");
     }

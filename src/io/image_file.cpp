@@ -91,6 +91,7 @@ void write_png_rows(const std::string& path, int width, int height, int channels
     for (size_t y = 0; y < rows.size(); ++y) rows[y] = pixels + y * row_bytes;
 
     PngSink sink;
+    sink.bytes.reserve(row_bytes * rows.size() / 2 + 4096);  // most of its growth copies spared
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_fail, png_ignore_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {

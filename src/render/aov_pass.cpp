@@ -1,8 +1,8 @@
 // `aov`: the AOV buffers of RenderOptions::aovs (inkshade/aov.hpp, docs/aov.md). Two draws of
 // the mesh into targets of its own: one sample a pixel for depth, normal and ids (values of the
 // surface at the pixel centre, never blended across an edge), then the coverage mask at the
-// image's MSAA samples, averaged by the resolve as the image's edges are. The surface fields
-// read the face drawn at each pixel from the first draw (render/surface_fields.hpp).
+// image's samples, averaged by the resolve as the image's edges are. The surface fields are
+// interpolated beside the shading (render/field_samples_pass.cpp); this pass waits for them.
 #include <algorithm>
 
 #include "gpu/gl_handle.hpp"
@@ -11,7 +11,6 @@
 #include "inkshade/error.hpp"
 #include "render/back_faces.hpp"
 #include "render/frame.hpp"
-#include "render/surface_fields.hpp"
 
 namespace inkshade::render {
 
@@ -41,21 +40,15 @@ struct AovTargets {
     AovTargets(int w, int h, int s) : width(w), height(h), samples(s) {
         normal_depth = make_texture(w, h, GL_RGBA32F);
         object_id = make_texture(w, h, GL_R32UI);
-        face = make_texture(w, h, GL_R32UI);
         depth = gpu::GlRenderbuffer::create();
         glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, w, h);
         surface = gpu::GlFramebuffer::create();
         glNamedFramebufferTexture(surface.id(), GL_COLOR_ATTACHMENT0, normal_depth.id(), 0);
         glNamedFramebufferTexture(surface.id(), GL_COLOR_ATTACHMENT1, object_id.id(), 0);
-        glNamedFramebufferTexture(surface.id(), GL_COLOR_ATTACHMENT2, face.id(), 0);
         glNamedFramebufferRenderbuffer(surface.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-        const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-        glNamedFramebufferDrawBuffers(surface.id(), 3, buffers);
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(surface.id(), 2, buffers);
         check_complete(surface);
-        faces_only = gpu::GlFramebuffer::create();
-        glNamedFramebufferTexture(faces_only.id(), GL_COLOR_ATTACHMENT0, face.id(), 0);
-        glNamedFramebufferRenderbuffer(faces_only.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-        check_complete(faces_only);
 
         coverage_samples = gpu::GlRenderbuffer::create();
         if (s > 1)
@@ -72,9 +65,9 @@ struct AovTargets {
         check_complete(coverage_resolved);
     }
     int width, height, samples;
-    gpu::GlTexture normal_depth, object_id, face, coverage;
+    gpu::GlTexture normal_depth, object_id, coverage;
     gpu::GlRenderbuffer depth, coverage_samples;
-    gpu::GlFramebuffer surface, faces_only, coverage_msaa, coverage_resolved;
+    gpu::GlFramebuffer surface, coverage_msaa, coverage_resolved;
 };
 
 class AovPass final : public Pass {
@@ -96,17 +89,13 @@ public:
         const Camera& camera = frame.camera;
         const glm::mat4 view_proj = camera.projection(frame.aspect()) * camera.view();
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        const AovSet fields = frame.options.aovs.fields();
-        const bool surface = want.contains(Aov::Depth) || want.contains(Aov::Normal) || want.contains(Aov::Id) ||
-                             want.contains(Aov::Material);
-        if (surface) {
+        if (want.contains(Aov::Depth) || want.contains(Aov::Normal) || want.contains(Aov::Id) ||
+            want.contains(Aov::Material)) {
             draw_surface(frame, view_proj);
             read_surface(frame, want, out);
-        } else if (!fields.empty()) {
-            draw_faces(frame, view_proj);  // the same faces at a fraction of the fragment work
         }
-        if (!fields.empty() && frame.field_vertices) interpolate_fields(frame, fields, read_faces(width), out);
         if (want.contains(Aov::Mask)) draw_and_read_mask(frame, view_proj, out);
+        if (frame.field_interpolation.valid()) frame.field_interpolation.get();  // rethrows its error
     }
 
 private:
@@ -131,24 +120,7 @@ private:
         p.set("u_eye", camera.eye);
         p.set("u_view_dir", glm::normalize(camera.target - camera.eye));
         p.set("u_orthographic", camera.orthographic ? 1 : 0);
-        draw_front_then_back(frame, p,
-                             [&] { frame.mesh->draw([&](uint32_t first) { p.set("u_face_base", int(first)); }); });
-    }
-
-    // The face target alone, drawn as draw_surface draws it.
-    void draw_faces(Frame& frame, const glm::mat4& view_proj) {
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_->faces_only.id());
-        const gpu::DepthScope depth(GL_LESS);
-        const GLuint no_id[4] = {0, 0, 0, 0};
-        const GLfloat far = 1.0f;
-        glClearBufferuiv(GL_COLOR, 0, no_id);
-        glClearBufferfv(GL_DEPTH, 0, &far);
-        if (!faces_) faces_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/face.frag");
-        gpu::ShaderProgram& p = *faces_;
-        p.use();
-        p.set("u_view_proj", view_proj);
-        draw_front_then_back(frame, p,
-                             [&] { frame.mesh->draw([&](uint32_t first) { p.set("u_face_base", int(first)); }); });
+        draw_front_then_back(frame, p, [&] { frame.mesh->draw(); });
     }
 
     // Only the targets asked for are read: the surface fields need the face target alone.
@@ -193,15 +165,6 @@ private:
         }
     }
 
-    // The face drawn at each pixel + 1 (0: background), top row first.
-    std::vector<uint32_t> read_faces(int width) const {
-        std::vector<uint32_t> faces(size_t(width) * size_t(targets_->height));
-        glGetTextureImage(targets_->face.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                          GLsizei(faces.size() * sizeof(uint32_t)), faces.data());
-        flip_rows(faces, size_t(width));
-        return faces;
-    }
-
     // The coverage mask at the image's samples, resolved: every face covers, whichever way it faces.
     void draw_and_read_mask(Frame& frame, const glm::mat4& view_proj, AovImages& out) {
         const int width = out.width, height = out.height;
@@ -224,18 +187,18 @@ private:
     }
 
     std::unique_ptr<AovTargets> targets_;
-    std::unique_ptr<gpu::ShaderProgram> surface_, faces_, coverage_;
+    std::unique_ptr<gpu::ShaderProgram> surface_, coverage_;
 };
 
 // Runs when the frame asks for an AOV the renderer draws or a surface field (whose vertex
-// values the fields pass computes: render/field_vertices.cpp).
+// values the fields pass computes, render/field_vertices.cpp, and field-samples interpolates).
 const PassRegistration aov_pass{{
     .name = "aov",
     .stage = Stage::Aov,
     .plan = [](const Frame& frame) -> std::optional<PassIo> {
         if (!frame.aovs || frame.options.aovs.gpu().empty()) return std::nullopt;
         if (!frame.options.aovs.fields().empty())
-            return PassIo{.reads = {Resource::GpuMesh, Resource::ViewAttributes}, .writes = {Resource::Aov}};
+            return PassIo{.reads = {Resource::GpuMesh, Resource::FieldSamples}, .writes = {Resource::Aov}};
         return PassIo{.reads = {Resource::GpuMesh}, .writes = {Resource::Aov}};
     },
     .create = create_pass<AovPass>,

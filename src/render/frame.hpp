@@ -1,6 +1,7 @@
 // One Renderer::render call as its passes see it: what to draw, the scene, and the resources
 // (render/pass.hpp) passes hand each other.
 #pragma once
+#include <future>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,6 +46,11 @@ struct Frame {
     Image image;                                                // Image
     AovImages* aovs = nullptr;                                  // Aov: where options.aovs go (null: none asked)
     std::optional<FieldVertices> field_vertices;                // ViewAttributes: the surface fields' (fields pass)
+
+    // FieldSamples: the surface fields' interpolation into *aovs, on a worker while the passes
+    // after field-samples run; the aov pass waits for it. Last, so that it is destroyed (which
+    // waits) before anything the task reads.
+    std::future<void> field_interpolation;
 
     // The style's settings of line type `type` (the last when listed twice), or null.
     const LineSettings* line(const std::string& type) const;

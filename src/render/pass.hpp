@@ -35,6 +35,7 @@ enum class Resource : uint8_t {
     ResolvedColor,       // the single-sample colour the image is read from
     Image,               // the returned image
     Aov,                 // the AOV buffers (RenderOptions::aovs), returned beside the image
+    FieldSamples,        // the surface fields' interpolation, running beside the shading
 };
 
 // A set of resources.
@@ -65,17 +66,18 @@ struct PassIo {
 
 // When a pass runs: stages in this order, the passes of one stage by name.
 enum class Stage : uint8_t {
-    Shadow,       // light-space depth
-    Attributes,   // per-view vertex data (radial curvature)
-    Shading,      // the shading model into Color (clears it)
-    MeshLines,    // the mesh drawn again over the shading (hull, threejs-outline)
-    GBuffer,      // geometry buffers for image-space lines
-    ImageLines,   // full-screen passes over the G-buffer
-    VectorLines,  // object-space lines as image polylines (CPU)
-    Strokes,      // polylines drawn as strokes
-    Resolve,      // Color to ResolvedColor
-    Readback,     // ResolvedColor to Image
-    Aov,          // AOV buffers drawn and read back (their own targets)
+    Shadow,        // light-space depth
+    Attributes,    // per-view vertex data (radial curvature)
+    FieldSamples,  // the face at each pixel for the surface fields (their own target)
+    Shading,       // the shading model into Color (clears it)
+    MeshLines,     // the mesh drawn again over the shading (hull, threejs-outline)
+    GBuffer,       // geometry buffers for image-space lines
+    ImageLines,    // full-screen passes over the G-buffer
+    VectorLines,   // object-space lines as image polylines (CPU)
+    Strokes,       // polylines drawn as strokes
+    Resolve,       // Color to ResolvedColor
+    Readback,      // ResolvedColor to Image
+    Aov,           // AOV buffers drawn and read back (their own targets)
 };
 
 // A pass's GL objects and caches, made on first use and kept by the renderer.

@@ -18,14 +18,29 @@ namespace inkshade::render {
 
 namespace {
 
-// Barycentric coordinates of where the ray (o, d) meets the plane of triangle (a, b, c),
-// clamped into the triangle (a pixel centre on an edge may fall a rounding error outside).
-glm::dvec3 ray_barycentrics(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a, const glm::dvec3& b,
-                            const glm::dvec3& c) {
-    const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
-    const double det = glm::dot(e1, p);
+// A face as the pixels over it read it: corners in double, their edges from the first.
+struct FaceCorners {
+    uint32_t face = 0;  // the face buffer's value (face + 1; 0: none yet)
+    glm::uvec3 v{0};
+    glm::dvec3 a{0.0}, b{0.0}, c{0.0}, e1{0.0}, e2{0.0};
+    void set(uint32_t f, const Mesh& mesh) {
+        face = f;
+        v = mesh.triangles[f - 1];
+        a = glm::dvec3(mesh.positions[v.x]);
+        b = glm::dvec3(mesh.positions[v.y]);
+        c = glm::dvec3(mesh.positions[v.z]);
+        e1 = b - a;
+        e2 = c - a;
+    }
+};
+
+// Barycentric coordinates of where the ray (o, d) meets the plane of the face, clamped into
+// the triangle (a pixel centre on an edge may fall a rounding error outside).
+glm::dvec3 ray_barycentrics(const glm::dvec3& o, const glm::dvec3& d, const FaceCorners& t) {
+    const glm::dvec3 p = glm::cross(d, t.e2);
+    const double det = glm::dot(t.e1, p);
     if (std::abs(det) < 1e-300 || !std::isfinite(det)) return glm::dvec3(1.0 / 3.0);  // seen edge-on
-    const glm::dvec3 s = o - a, q = glm::cross(s, e1);
+    const glm::dvec3 s = o - t.a, q = glm::cross(s, t.e1);
     const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
     glm::dvec3 w = glm::max(glm::dvec3(1.0 - u - v, u, v), glm::dvec3(0.0));
     const double sum = w.x + w.y + w.z;
@@ -182,14 +197,14 @@ void interpolate_fields(const Frame& frame, AovSet want, const std::vector<uint3
     tbb::parallel_for(tbb::blocked_range<int>(0, ctx.height, 8), [&](const auto& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
             const PixelContext::RowRays rays = ctx.row(y);
+            FaceCorners t;  // neighbouring pixels mostly show the same face
             for (int x = 0; x < ctx.width; ++x) {
                 const size_t i = size_t(y) * width + size_t(x);
                 if (faces[i] == 0 || faces[i] > mesh.triangles.size()) continue;
-                const glm::uvec3 t = mesh.triangles[faces[i] - 1];
-                const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
+                if (faces[i] != t.face) t.set(faces[i], mesh);
                 const auto [o, d] = rays.at(x);
-                Sample s{{&packed[t.x], &packed[t.y], &packed[t.z]}, ray_barycentrics(o, d, a, b, c), {}};
-                s.p = s.b.x * a + s.b.y * b + s.b.z * c;
+                Sample s{{&packed[t.v.x], &packed[t.v.y], &packed[t.v.z]}, ray_barycentrics(o, d, t), {}};
+                s.p = s.b.x * t.a + s.b.y * t.b + s.b.z * t.c;
                 write_pixel(ctx, want, scales, s, i, out);
             }
         }
@@ -205,15 +220,17 @@ void interpolate_fields(const Frame& frame, AovSet want, const std::vector<uint3
 }
 
 float visible_p90(const std::vector<float>& values, const std::vector<uint32_t>& faces, int channels) {
-    std::vector<double> a;
+    std::vector<float> a;  // |v| is exact in float; the interpolation below is in double
+    a.reserve(faces.size());
     for (size_t i = 0; i < faces.size(); ++i)
-        if (faces[i] != 0) a.push_back(std::abs(double(values[i * size_t(channels)])));
+        if (faces[i] != 0) a.push_back(std::abs(values[i * size_t(channels)]));
     if (a.empty()) return 0.0f;
     const double rank = 0.9 * double(a.size() - 1);
     const size_t lo = size_t(rank);
     std::nth_element(a.begin(), a.begin() + std::ptrdiff_t(lo), a.end());
     const double low = a[lo];
-    const double high = lo + 1 < a.size() ? *std::min_element(a.begin() + std::ptrdiff_t(lo) + 1, a.end()) : low;
+    const double high =
+        lo + 1 < a.size() ? double(*std::min_element(a.begin() + std::ptrdiff_t(lo) + 1, a.end())) : low;
     return float(low + (rank - double(lo)) * (high - low));
 }
 
