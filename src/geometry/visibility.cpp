@@ -492,15 +492,15 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
         own = contour_surroundings(mesh, {&segments});
         around = &own;
     }
-    const Tester tester{
-        scene,
-        mesh,
-        view,
-        around,
-        std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
-        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f, std::max(options.own_depth_px, 0.0f),
-         std::max(options.own_radius_px, 0.0f),
-         options.contour || options.own_slope ? std::max(options.contour_slope_px, 0.0f) : 0.0f}};
+    // The slope allowance: contours, and the types that lie on the surface beside them.
+    const float slope_px = options.contour || options.own_slope ? std::max(options.contour_slope_px, 0.0f) : 0.0f;
+    const Tester tester{scene,
+                        mesh,
+                        view,
+                        around,
+                        std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
+                        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f,
+                         std::max(options.own_depth_px, 0.0f), std::max(options.own_radius_px, 0.0f), slope_px}};
     std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
 

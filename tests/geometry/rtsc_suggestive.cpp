@@ -116,11 +116,9 @@ void face_isoline(const Mesh& mesh, const PerView& pv, uint32_t v0, uint32_t v1,
                   std::vector<LineVertex>& out) {
     const auto &nv = pv.ndotv, &val = pv.kr, &num = pv.num, &den = pv.den;
     if (nv[v0] <= 0.0f && nv[v1] <= 0.0f && nv[v2] <= 0.0f) return;
-    if (num[v0] <= 0.0f && den[v0] >= 0.0f && num[v1] <= 0.0f && den[v1] >= 0.0f && num[v2] <= 0.0f &&
-        den[v2] >= 0.0f)
+    if (num[v0] <= 0.0f && den[v0] >= 0.0f && num[v1] <= 0.0f && den[v1] >= 0.0f && num[v2] <= 0.0f && den[v2] >= 0.0f)
         return;
-    if (num[v0] >= 0.0f && den[v0] <= 0.0f && num[v1] >= 0.0f && den[v1] <= 0.0f && num[v2] >= 0.0f &&
-        den[v2] <= 0.0f)
+    if (num[v0] >= 0.0f && den[v0] <= 0.0f && num[v1] >= 0.0f && den[v1] <= 0.0f && num[v2] >= 0.0f && den[v2] <= 0.0f)
         return;
     auto odd = [&](uint32_t a, uint32_t b, uint32_t c) {
         return (val[a] < 0.0f && val[b] >= 0.0f && val[c] >= 0.0f) ||

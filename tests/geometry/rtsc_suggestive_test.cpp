@@ -22,8 +22,7 @@ namespace {
 
 // `rtsc_mesh` as rtsc reads the file (every edge smooth), `drawn` as Inkshade loads it by default;
 // the same surface. Views around the model, elevation varied, at size².
-test::RtscAgreement suggestive_agreement(const Mesh& rtsc_mesh, const Mesh& drawn, int views, int size,
-                                         bool print) {
+test::RtscAgreement suggestive_agreement(const Mesh& rtsc_mesh, const Mesh& drawn, int views, int size, bool print) {
     const test::RtscSuggestive key(rtsc_mesh);
     LineExtractor extractor(drawn);
     test::RtscAgreement sum;
