@@ -389,6 +389,7 @@ VisibilitySplit LineExtractor::Impl::visibility(const PlannedLayer& layer, const
     VisibilityOptions options;
     options.count_levels_to = std::min(layer.levels.max + 1, kMaxOcclusionLevel);
     options.contour = layer.type->needs.contour_folds;
+    options.own_slope = layer.type->needs.own_slope;
     options.min_length_px = line_number(*layer.settings, "min-length");
     return split_by_visibility(rays, data.mesh(), v.projection, segments, options, &around);
 }

@@ -105,7 +105,7 @@ glm::vec3 interpolated_normal(const Mesh& mesh, uint32_t f, const glm::vec3& poi
 struct Allowance {
     float fold_px;  // contour samples: the fold band, else 0
     float own_depth_px, own_radius_px;
-    float slope_px;  // contour samples: OcclusionQuery::slope_depth in pixels
+    float slope_px;  // contour and own_slope samples: OcclusionQuery::slope_depth in pixels
 };
 
 OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm::vec3& p, const PointOn& on,
@@ -124,6 +124,8 @@ OcclusionQuery query_at(const Mesh& mesh, const ImageProjection& view, const glm
             // An interpolated contour only: a hard edge's contour is the polygon outline itself.
             q.slope_depth = float(allow.slope_px * pixel);
         }
+    } else if (allow.fold_px == 0.0f && on.face != kNoFace) {
+        q.slope_depth = float(allow.slope_px * pixel);  // VisibilityOptions::own_slope
     }
     return q;
 }
@@ -490,14 +492,15 @@ VisibilitySplit split_by_visibility(const RayScene& scene, const Mesh& mesh, con
         own = contour_surroundings(mesh, {&segments});
         around = &own;
     }
-    const Tester tester{
-        scene,
-        mesh,
-        view,
-        around,
-        std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
-        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f, std::max(options.own_depth_px, 0.0f),
-         std::max(options.own_radius_px, 0.0f), std::max(options.contour_slope_px, 0.0f)}};
+    // The slope allowance: contours, and the types that lie on the surface beside them.
+    const float slope_px = options.contour || options.own_slope ? std::max(options.contour_slope_px, 0.0f) : 0.0f;
+    const Tester tester{scene,
+                        mesh,
+                        view,
+                        around,
+                        std::clamp(options.count_levels_to, 1, kMaxOcclusionLevel),
+                        {options.contour ? std::max(options.contour_fold_px, 0.0f) : 0.0f,
+                         std::max(options.own_depth_px, 0.0f), std::max(options.own_radius_px, 0.0f), slope_px}};
     std::vector<uint8_t> whole(n, kSplit);      // level of an unsplit segment, else kSplit
     std::vector<std::vector<Piece>> pieces(n);  // pieces of split segments only
 

@@ -225,6 +225,9 @@ struct VisibilityOptions {
     // many pixels of the occluding face's depth slope (OcclusionQuery::slope_depth): rtsc
     // draws its lines against the mesh pushed back by glPolygonOffset(5, 30).
     float contour_slope_px = 5.0f;
+    // Segments that are not contours but lie on the interpolated surface (suggestive contours)
+    // get the same allowance: rtsc's offset lets them through the faces around them alike.
+    bool own_slope = false;
 };
 
 // The segments' parts, split where the occlusion level changes. Parts keep the original node

@@ -46,6 +46,9 @@ struct LineTypeNeeds {
     // The segments are occluding contours: their visibility test walks the folds around them
     // (VisibilityOptions::contour, over the faces of contour_surroundings).
     bool contour_folds = false;
+    // The segments lie on the interpolated surface away from contours (suggestive contours):
+    // their visibility test takes the contours' slope allowance (VisibilityOptions::own_slope).
+    bool own_slope = false;
 };
 
 // A registered object-space type: how to extract it and what that needs.

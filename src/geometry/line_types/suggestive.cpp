@@ -32,7 +32,7 @@ const ObjectLineRegistration registration{
          // 4 px filter is `min-length = 4`).
          0.0f)},
     extract,
-    {.curvature = true}};
+    {.curvature = true, .own_slope = true}};
 
 }  // namespace
 
