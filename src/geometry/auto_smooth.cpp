@@ -162,13 +162,21 @@ void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm:
 }  // namespace
 
 void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
+    if (!(angle_degrees < 180.0f) || mesh.triangles.empty()) {
+        mesh.shading_normals.clear();
+        mesh.shading_normal_ids.clear();
+        return;
+    }
+    auto_smooth(mesh, angle_degrees, weighting, face_normals(mesh));
+}
+
+void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting, const std::vector<glm::vec3>& fn) {
     mesh.shading_normals.clear();
     mesh.shading_normal_ids.clear();
-    if (!(angle_degrees < 180.0f) || mesh.triangles.empty()) return;
+    if (!(angle_degrees < 180.0f) || mesh.triangles.empty() || fn.size() != mesh.triangles.size()) return;
     const size_t n = mesh.positions.size();
     for (const glm::uvec3& t : mesh.triangles)
         if (t.x >= n || t.y >= n || t.z >= n) return;  // load_mesh validates first; nothing to split here
-    const std::vector<glm::vec3> fn = face_normals(mesh);
     const VertexFaces vf = vertex_faces(mesh);
     // Compared as a dot product of unit normals; the small slack keeps exactly-at-limit edges
     // (a 30° split of a 12-gon prism) on the smooth side whatever the rounding.
