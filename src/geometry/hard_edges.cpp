@@ -149,10 +149,14 @@ uint64_t mix(uint64_t x) {
 // next corner and once the previous one of the faces there, so a hash sum of next minus
 // previous corners vanishes; at a border, a non-manifold edge or a winding flip it does not
 // (short of a hash collision, or an edge of four faces two each way among calm faces). Faces
-// at such vertices are seen too. Without one unit normal per vertex every face is seen.
-std::vector<uint8_t> faces_to_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                                   float cos_limit) {
+// at such vertices are seen too. Without one unit normal per vertex every face is seen. The
+// sums are scattered face by face (no star table yet): a face with a repeated index adds, at
+// each corner there, what its first corner there adds, as a walk of the star would.
+std::vector<uint8_t> faces_to_test(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit,
+                                   std::vector<uint8_t>& referenced) {
     const size_t faces = mesh.triangles.size(), n = mesh.positions.size();
+    referenced.assign(n, 0);
+    for (const glm::uvec3& t : mesh.triangles) referenced[t.x] = referenced[t.y] = referenced[t.z] = 1;
     const float half = 0.5f * std::acos(std::clamp(cos_limit, -1.0f, 1.0f)) - 1e-3f;  // margin for rounding
     if (mesh.normals.size() != n || !(half > 0.0f)) return std::vector<uint8_t>(faces, 1);
     const float cos_half = std::cos(half);
@@ -166,18 +170,18 @@ std::vector<uint8_t> faces_to_test(const Mesh& mesh, const VertexFaces& vf, cons
         }
         restless[f] = !calm;
     });
-    std::vector<uint8_t> busy(n);
-    for_each_index(n, [&](size_t v) {
-        uint64_t turn = 0;  // Σ h(next) − h(previous), wrapping
-        bool restless_star = false;
-        for (const uint32_t* g = vf.begin(uint32_t(v)); g != vf.end(uint32_t(v)); ++g) {
-            const glm::uvec3 t = mesh.triangles[*g];
+    std::vector<uint64_t> turn(n, 0);  // Σ h(next) − h(previous), wrapping
+    std::vector<uint8_t> busy(n, 0);   // restless star, then or turn ≠ 0
+    for (size_t f = 0; f < faces; ++f) {
+        const glm::uvec3 t = mesh.triangles[f];
+        for (int c = 0; c < 3; ++c) {
+            const uint32_t v = t[c];
             const int k = t.x == v ? 0 : (t.y == v ? 1 : 2);
-            turn += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
-            restless_star |= restless[*g] != 0;
+            turn[v] += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
+            busy[v] |= restless[f];
         }
-        busy[v] = restless_star || turn != 0;
-    });
+    }
+    for_each_index(n, [&](size_t v) { busy[v] |= uint8_t(turn[v] != 0); });
     for_each_index(faces, [&](size_t f) {
         const glm::uvec3 t = mesh.triangles[f];
         restless[f] = busy[t.x] | busy[t.y] | busy[t.z];
@@ -244,12 +248,15 @@ bool first_test_at(uint32_t v, const Mesh& mesh, const VertexFaces& vf, const st
 // edges of two non-degenerate faces that meet at more than the angle; only on the faces
 // faces_to_test picks, edge by edge at its lower vertex (first_test_at). Returns whether any
 // edge is a candidate.
-bool first_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, float cos_limit,
-                std::vector<uint8_t>& flags) {
-    const std::vector<uint8_t> seen = faces_to_test(mesh, vf, fn, cos_limit);
+bool first_test(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit, HardEdgeFlags& out) {
+    const std::vector<uint8_t> seen = faces_to_test(mesh, fn, cos_limit, out.referenced);
+    std::vector<uint8_t> listed(mesh.positions.size(), 0);  // the corners of seen faces
+    for (size_t f = 0; f < seen.size(); ++f)
+        if (seen[f]) listed[mesh.triangles[f].x] = listed[mesh.triangles[f].y] = listed[mesh.triangles[f].z] = 1;
+    out.stars = vertex_faces(mesh, listed);
     std::atomic<bool> any{false};
     for_each_index(mesh.positions.size(), [&](size_t v) {
-        if (first_test_at(uint32_t(v), mesh, vf, fn, cos_limit, seen, flags))
+        if (listed[v] && first_test_at(uint32_t(v), mesh, out.stars, fn, cos_limit, seen, out.flags))
             any.store(true, std::memory_order_relaxed);
     });
     return any.load();
@@ -295,11 +302,11 @@ void second_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm:
 
 }  // namespace
 
-std::vector<uint8_t> hard_edge_flags(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                                     float cos_limit) {
-    std::vector<uint8_t> flags(mesh.triangles.size(), 0);
-    if (first_test(mesh, vf, fn, cos_limit, flags)) second_test(mesh, vf, fn, cos_limit, flags);
-    return flags;
+HardEdgeFlags hard_edge_flags(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit) {
+    HardEdgeFlags out;
+    out.flags.assign(mesh.triangles.size(), 0);
+    if (first_test(mesh, fn, cos_limit, out)) second_test(mesh, out.stars, fn, cos_limit, out.flags);
+    return out;
 }
 
 }  // namespace inkshade::geometry
