@@ -162,18 +162,27 @@ void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm:
 }  // namespace
 
 void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
+    if (!(angle_degrees < 180.0f) || mesh.triangles.empty()) {
+        mesh.shading_normals.clear();
+        mesh.shading_normal_ids.clear();
+        return;
+    }
+    auto_smooth(mesh, angle_degrees, weighting, face_normals(mesh));
+}
+
+void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting, const std::vector<glm::vec3>& fn) {
     mesh.shading_normals.clear();
     mesh.shading_normal_ids.clear();
-    if (!(angle_degrees < 180.0f) || mesh.triangles.empty()) return;
+    if (!(angle_degrees < 180.0f) || mesh.triangles.empty() || fn.size() != mesh.triangles.size()) return;
     const size_t n = mesh.positions.size();
     for (const glm::uvec3& t : mesh.triangles)
         if (t.x >= n || t.y >= n || t.z >= n) return;  // load_mesh validates first; nothing to split here
-    const std::vector<glm::vec3> fn = face_normals(mesh);
-    const VertexFaces vf = vertex_faces(mesh);
     // Compared as a dot product of unit normals; the small slack keeps exactly-at-limit edges
     // (a 30° split of a 12-gon prism) on the smooth side whatever the rounding.
     const float cos_limit = std::cos(glm::radians(std::max(angle_degrees, 0.0f))) - 1e-6f;
-    const std::vector<uint8_t> hard = hard_edge_flags(mesh, vf, fn, cos_limit);
+    const HardEdgeFlags flags = hard_edge_flags(mesh, fn, cos_limit);
+    const std::vector<uint8_t>& hard = flags.flags;
+    const VertexFaces& vf = flags.stars;  // empty at vertices far from a hard edge
     if (std::all_of(hard.begin(), hard.end(), [](uint8_t h) { return h == 0; })) return;
 
     // Pass 1: fans per vertex, where a hard edge ends. Pass 2: their ids, numbered after a
@@ -187,7 +196,7 @@ void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
             const size_t begin = vf.offsets[v], k = vf.offsets[v + 1] - begin;
             const uint32_t* star = vf.faces.data() + begin;
             if (!hard_edge_at(uint32_t(v), mesh, hard, star, k)) {
-                fan_start[v + 1] = k > 0 ? 1 : 0;
+                fan_start[v + 1] = flags.referenced[v] ? 1 : 0;
                 continue;
             }
             fan_start[v + 1] = fans_at(uint32_t(v), mesh, fn, hard, star, k, scratch);

@@ -17,5 +17,8 @@ namespace inkshade::geometry {
 // one, else take the smooth normal. When no vertex has two fans, or angle_degrees >= 180, the
 // two arrays are left empty (mesh.normals shades alone). mesh.normals is not changed.
 void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting = NormalWeighting::Angle);
+// The same with the mesh's face normals `fn` (face_normals) made by the caller, who needed
+// them for the vertex normals too (load_mesh): a scan's load then computes them once.
+void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting, const std::vector<glm::vec3>& fn);
 
 }  // namespace inkshade::geometry

@@ -1,17 +1,18 @@
 // The second test runs only on the candidates of the first, once per edge (by its lower face),
 // so a mesh with few sharp edges pays for few. The first test itself runs only on the faces
-// that may have a hard edge (quiet_faces below), and the second stops as soon as a bound on its
-// result decides it. Every loop writes only its own face's (or vertex's) entry, so the result
-// does not depend on the thread count.
+// that may have a hard edge (faces_to_test below), once per edge at its lower vertex, and the
+// second walks the faces around an edge without gathering them and stops as soon as a bound on
+// its result decides it. Every loop writes only its own face's (or vertex's) entry, or sets
+// bits with an atomic or, so the result does not depend on the thread count.
 #include "geometry/hard_edges.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <utility>
 
 namespace inkshade::geometry {
 namespace {
@@ -31,61 +32,89 @@ glm::vec3 centroid(const Mesh& mesh, uint32_t f) {
     return (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f;
 }
 
-struct SecondTestScratch {  // per-task buffers of sides_stand_apart
-    std::vector<uint32_t> around;
-    std::vector<std::pair<int, float>> sides;  // per face of `around`: side, area
+// Calls visit(g) for each face with a corner at one of faces a's and b's corners, once each,
+// in ascending order (a merge of the corners' stars, which are in face order), a and b left
+// out. Ascending, as a sort would give: the sides' sums below add in the same order.
+template <class Visit>
+void for_each_face_around(const Mesh& mesh, const VertexFaces& vf, uint32_t a, uint32_t b, Visit&& visit) {
+    const glm::uvec3 ta = mesh.triangles[a], tb = mesh.triangles[b];
+    const uint32_t corners[6] = {ta.x, ta.y, ta.z, tb.x, tb.y, tb.z};
+    uint32_t distinct[6];
+    const uint32_t *at[6], *end[6];
+    int m = 0;
+    for (uint32_t c : corners) {
+        if (std::find(distinct, distinct + m, c) != distinct + m) continue;
+        distinct[m] = c;
+        at[m] = vf.begin(c);
+        end[m++] = vf.end(c);
+    }
+    for (uint32_t last = ~0u;;) {
+        int low = -1;
+        for (int i = 0; i < m; ++i)
+            if (at[i] != end[i] && (low < 0 || *at[i] < *at[low])) low = i;
+        if (low < 0) return;
+        const uint32_t g = *at[low]++;
+        if (g == last) continue;
+        last = g;
+        if (g != a && g != b) visit(g);
+    }
+}
+
+// Which side of the edge face g counts on (0: a's, 1: b's, 2: neither), and its area
+// (sides_stand_apart).
+struct SideOf {
+    const Mesh& mesh;
+    const std::vector<glm::vec3>& fn;
+    glm::vec3 na, nb, mid, across;
+    float cos_limit, cos_double;
+
+    std::pair<int, float> operator()(uint32_t g) const {
+        const glm::uvec3 t = mesh.triangles[g];
+        const glm::vec3 &p = mesh.positions[t.x], &q = mesh.positions[t.y], &r = mesh.positions[t.z];
+        int side = glm::dot((p + q + r) / 3.0f - mid, across) >= 0.0f ? 0 : 1;
+        const float own = glm::dot(fn[g], side == 0 ? na : nb), other = glm::dot(fn[g], side == 0 ? nb : na);
+        // Far from both faces: a third side meeting at a corner. Far from its side's face and
+        // turned like the other one: the other side's orientation reached round a thin part.
+        if ((own < cos_limit && other < cos_limit) || (own < cos_double && other >= cos_limit)) side = 2;
+        return {side, 0.5f * glm::length(glm::cross(q - p, r - p))};
+    }
 };
 
 // The sides' scatter summed: each side's area-weighted mean angle of its faces from its mean
 // `mean[s]`; with `bound`, each angle φ replaced by √(2 − 2 cos φ), which is at most φ.
-float scatter_of(const std::vector<uint32_t>& around, const std::vector<std::pair<int, float>>& sides,
-                 const std::vector<glm::vec3>& fn, const glm::vec3 mean[2], bool bound) {
+float scatter_of(const Mesh& mesh, const VertexFaces& vf, uint32_t a, uint32_t b, const SideOf& side_of,
+                 const glm::vec3 mean[2], bool bound) {
     float scatter[2] = {0.0f, 0.0f}, weight[2] = {0.0f, 0.0f};
-    for (size_t i = 0; i < around.size(); ++i) {
-        const auto [side, area] = sides[i];
-        if (side == 2) continue;
-        const float c = std::clamp(glm::dot(fn[around[i]], mean[side]), -1.0f, 1.0f);
+    for_each_face_around(mesh, vf, a, b, [&](uint32_t g) {
+        const auto [side, area] = side_of(g);
+        if (side == 2) return;
+        const float c = std::clamp(glm::dot(side_of.fn[g], mean[side]), -1.0f, 1.0f);
         scatter[side] += area * (bound ? std::sqrt(2.0f - 2.0f * c) : std::acos(c));
         weight[side] += area;
-    }
+    });
     float spread = 0.0f;
     for (int s = 0; s < 2; ++s)
         if (weight[s] > 0.0f && std::isfinite(weight[s])) spread += scatter[s] / weight[s];
     return spread;
 }
 
-// The second test for the candidate edge (v, w) between faces a and b (hard_edges.hpp).
+// The second test for the candidate edge (v, w) between faces a and b (hard_edges.hpp). The
+// faces around are walked again for the scatter rather than kept: most candidates are decided
+// by the gap alone.
 bool sides_stand_apart(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, uint32_t a,
-                       uint32_t b, uint32_t v, uint32_t w, float cos_limit, SecondTestScratch& scratch) {
-    std::vector<uint32_t>& around = scratch.around;
-    std::vector<std::pair<int, float>>& sides = scratch.sides;
+                       uint32_t b, uint32_t v, uint32_t w, float cos_limit) {
     const glm::vec3 na = fn[a], nb = fn[b];
     const glm::vec3 mid = 0.5f * (mesh.positions[v] + mesh.positions[w]);
     glm::vec3 across = glm::cross(mesh.positions[w] - mesh.positions[v], na + nb);  // normal of the bisecting plane
     if (glm::dot(centroid(mesh, a) - mid, across) < 0.0f) across = -across;         // towards a
     const float cos_double = cos_limit > 0.0f ? 2.0f * cos_limit * cos_limit - 1.0f : -1.0f;  // cos 2θ, θ < 90°
-    const glm::uvec3 ta = mesh.triangles[a], tb = mesh.triangles[b];
-    const uint32_t corners[6] = {ta.x, ta.y, ta.z, tb.x, tb.y, tb.z};
-    around.clear();
-    for (uint32_t c : corners) around.insert(around.end(), vf.begin(c), vf.end(c));
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
-    // Each face's side (0, 1; 2 when left out) and area, then each side's mean normal.
+    const SideOf side_of{mesh, fn, na, nb, mid, across, cos_limit, cos_double};
+    // Each side's mean normal, its faces weighted by area.
     glm::vec3 sum[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};
-    sides.clear();
-    for (uint32_t g : around) {
-        int side = glm::dot(centroid(mesh, g) - mid, across) >= 0.0f ? 0 : 1;
-        const float own = glm::dot(fn[g], side == 0 ? na : nb), other = glm::dot(fn[g], side == 0 ? nb : na);
-        // Far from both faces: a third side meeting at a corner. Far from its side's face and
-        // turned like the other one: the other side's orientation reached round a thin part.
-        if (g == a || g == b || (own < cos_limit && other < cos_limit) || (own < cos_double && other >= cos_limit))
-            side = 2;
-        const glm::uvec3 t = mesh.triangles[g];
-        const glm::vec3 &p = mesh.positions[t.x], &q = mesh.positions[t.y], &r = mesh.positions[t.z];
-        const float area = 0.5f * glm::length(glm::cross(q - p, r - p));
-        sides.push_back({side, area});
+    for_each_face_around(mesh, vf, a, b, [&](uint32_t g) {
+        const auto [side, area] = side_of(g);
         if (side < 2) sum[side] += area * fn[g];
-    }
+    });
     // A side with no neighbour of its own (a tetrahedron's face) is its face.
     glm::vec3 mean[2];
     for (int s = 0; s < 2; ++s) {
@@ -100,8 +129,8 @@ bool sides_stand_apart(const Mesh& mesh, const VertexFaces& vf, const std::vecto
     if (!(gap > limit)) return false;
     // Then a lower bound of the scatter without acos (2 sin(φ/2) = √(2 − 2 cos φ) ≤ φ), with a
     // margin far above float rounding; only what it leaves open pays for the exact one.
-    if (gap - scatter_of(around, sides, fn, mean, true) <= limit - 1e-4f) return false;
-    return gap - scatter_of(around, sides, fn, mean, false) > limit;
+    if (gap - scatter_of(mesh, vf, a, b, side_of, mean, true) <= limit - 1e-4f) return false;
+    return gap - scatter_of(mesh, vf, a, b, side_of, mean, false) > limit;
 }
 
 // A vertex index scrambled (splitmix64's finaliser), so that sums of them cancel only when the
@@ -120,10 +149,14 @@ uint64_t mix(uint64_t x) {
 // next corner and once the previous one of the faces there, so a hash sum of next minus
 // previous corners vanishes; at a border, a non-manifold edge or a winding flip it does not
 // (short of a hash collision, or an edge of four faces two each way among calm faces). Faces
-// at such vertices are seen too. Without one unit normal per vertex every face is seen.
-std::vector<uint8_t> faces_to_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                                   float cos_limit) {
+// at such vertices are seen too. Without one unit normal per vertex every face is seen. The
+// sums are scattered face by face (no star table yet): a face with a repeated index adds, at
+// each corner there, what its first corner there adds, as a walk of the star would.
+std::vector<uint8_t> faces_to_test(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit,
+                                   std::vector<uint8_t>& referenced) {
     const size_t faces = mesh.triangles.size(), n = mesh.positions.size();
+    referenced.assign(n, 0);
+    for (const glm::uvec3& t : mesh.triangles) referenced[t.x] = referenced[t.y] = referenced[t.z] = 1;
     const float half = 0.5f * std::acos(std::clamp(cos_limit, -1.0f, 1.0f)) - 1e-3f;  // margin for rounding
     if (mesh.normals.size() != n || !(half > 0.0f)) return std::vector<uint8_t>(faces, 1);
     const float cos_half = std::cos(half);
@@ -137,18 +170,18 @@ std::vector<uint8_t> faces_to_test(const Mesh& mesh, const VertexFaces& vf, cons
         }
         restless[f] = !calm;
     });
-    std::vector<uint8_t> busy(n);
-    for_each_index(n, [&](size_t v) {
-        uint64_t turn = 0;  // Σ h(next) − h(previous), wrapping
-        bool restless_star = false;
-        for (const uint32_t* g = vf.begin(uint32_t(v)); g != vf.end(uint32_t(v)); ++g) {
-            const glm::uvec3 t = mesh.triangles[*g];
+    std::vector<uint64_t> turn(n, 0);  // Σ h(next) − h(previous), wrapping
+    std::vector<uint8_t> busy(n, 0);   // restless star, then or turn ≠ 0
+    for (size_t f = 0; f < faces; ++f) {
+        const glm::uvec3 t = mesh.triangles[f];
+        for (int c = 0; c < 3; ++c) {
+            const uint32_t v = t[c];
             const int k = t.x == v ? 0 : (t.y == v ? 1 : 2);
-            turn += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
-            restless_star |= restless[*g] != 0;
+            turn[v] += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
+            busy[v] |= restless[f];
         }
-        busy[v] = restless_star || turn != 0;
-    });
+    }
+    for_each_index(n, [&](size_t v) { busy[v] |= uint8_t(turn[v] != 0); });
     for_each_index(faces, [&](size_t f) {
         const glm::uvec3 t = mesh.triangles[f];
         restless[f] = busy[t.x] | busy[t.y] | busy[t.z];
@@ -156,30 +189,75 @@ std::vector<uint8_t> faces_to_test(const Mesh& mesh, const VertexFaces& vf, cons
     return restless;
 }
 
-// First test per face edge: hard bits for edges of three or more faces, candidate bits for
-// edges of two non-degenerate faces that meet at more than the angle. Returns whether any
-// edge is a candidate.
-bool first_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, float cos_limit,
-                std::vector<uint8_t>& flags) {
-    const std::vector<uint8_t> seen = faces_to_test(mesh, vf, fn, cos_limit);
-    std::atomic<bool> any{false};
-    for_each_index(mesh.triangles.size(), [&](size_t f) {
-        if (!seen[f]) return;  // flags[f] stays 0
-        const glm::uvec3 t = mesh.triangles[f];
-        uint8_t bits = 0;
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t v = t[k], w = t[(k + 1) % 3];
-            if (v == w) continue;
-            const EdgeMate mate = edge_mate(mesh, vf, uint32_t(f), v, w);
-            if (mate.count >= 2) {
-                bits |= uint8_t(1u << k);
-            } else if (mate.count == 1 && fn[f] != glm::vec3(0.0f) && fn[mate.face] != glm::vec3(0.0f) &&
-                       glm::dot(fn[f], fn[mate.face]) < cos_limit) {
-                bits |= uint8_t(8u << k);
+// The first test of the edges from vertex v to higher vertices u, each once: its faces (those
+// of v's star that have u, as edge_mate finds them) are found at the first of them, and every
+// edge {v, u} of each seen one gets its bit. The star's faces are read once. Bits are set
+// with an atomic or (a face's edges are decided at up to three vertices); returns whether any
+// is a candidate.
+bool first_test_at(uint32_t v, const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
+                   float cos_limit, const std::vector<uint8_t>& seen, std::vector<uint8_t>& flags) {
+    constexpr size_t kMax = 32;  // the faces of a larger star (a fan's centre) are read as needed
+    const uint32_t* star = vf.begin(v);
+    const size_t k = size_t(vf.end(v) - star);
+    glm::uvec3 cached[kMax];
+    if (k <= kMax)
+        for (size_t i = 0; i < k; ++i) cached[i] = mesh.triangles[star[i]];
+    const auto tri = [&](size_t i) { return k <= kMax ? cached[i] : mesh.triangles[star[i]]; };
+    const auto has = [](const glm::uvec3& t, uint32_t u) { return t.x == u || t.y == u || t.z == u; };
+    bool any = false;
+    for (size_t i = 0; i < k; ++i) {
+        if (i > 0 && star[i - 1] == star[i]) continue;  // a face listed twice (repeated index)
+        const glm::uvec3 t = tri(i);
+        for (int c = 0; c < 3; ++c) {
+            const uint32_t u = t[c];
+            if (u <= v || (c > 0 && t[c - 1] == u) || (c == 2 && t[0] == u)) continue;
+            bool first = true;  // the edge's faces are handled at their first
+            for (size_t j = 0; j < i && first; ++j) first = !has(tri(j), u);
+            if (!first) continue;
+            uint32_t members[kMax], count = 0, mate = 0;
+            for (size_t j = i; j < k; ++j) {
+                if ((j > i && star[j - 1] == star[j]) || !has(tri(j), u)) continue;
+                if (count < kMax) members[count] = uint32_t(j);
+                if (count++ == 1) mate = star[j];
             }
+            uint8_t bit = 0;  // per edge of a member: 1 hard, 8 candidate
+            if (count >= 3)
+                bit = 1;
+            else if (count == 2 && fn[star[i]] != glm::vec3(0.0f) && fn[mate] != glm::vec3(0.0f) &&
+                     glm::dot(fn[star[i]], fn[mate]) < cos_limit)
+                bit = 8;
+            if (!bit) continue;
+            for (uint32_t m = 0; m < std::min<uint32_t>(count, kMax); ++m) {
+                const uint32_t g = star[members[m]];
+                if (!seen[g]) continue;
+                const glm::uvec3 s = tri(members[m]);
+                uint8_t bits = 0;
+                for (int e = 0; e < 3; ++e) {
+                    const uint32_t p = s[e], q = s[(e + 1) % 3];
+                    if ((p == v && q == u) || (p == u && q == v)) bits |= uint8_t(bit << e);
+                }
+                std::atomic_ref<uint8_t>(flags[g]).fetch_or(bits, std::memory_order_relaxed);
+            }
+            any |= bit == 8;
         }
-        flags[f] = bits;
-        if (bits & kCandidate) any.store(true, std::memory_order_relaxed);
+    }
+    return any;
+}
+
+// First test per face edge: hard bits for edges of three or more faces, candidate bits for
+// edges of two non-degenerate faces that meet at more than the angle; only on the faces
+// faces_to_test picks, edge by edge at its lower vertex (first_test_at). Returns whether any
+// edge is a candidate.
+bool first_test(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit, HardEdgeFlags& out) {
+    const std::vector<uint8_t> seen = faces_to_test(mesh, fn, cos_limit, out.referenced);
+    std::vector<uint8_t> listed(mesh.positions.size(), 0);  // the corners of seen faces
+    for (size_t f = 0; f < seen.size(); ++f)
+        if (seen[f]) listed[mesh.triangles[f].x] = listed[mesh.triangles[f].y] = listed[mesh.triangles[f].z] = 1;
+    out.stars = vertex_faces(mesh, listed);
+    std::atomic<bool> any{false};
+    for_each_index(mesh.positions.size(), [&](size_t v) {
+        if (listed[v] && first_test_at(uint32_t(v), mesh, out.stars, fn, cos_limit, seen, out.flags))
+            any.store(true, std::memory_order_relaxed);
     });
     return any.load();
 }
@@ -190,16 +268,14 @@ void second_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm:
                  std::vector<uint8_t>& flags) {
     const size_t faces = mesh.triangles.size();
     std::vector<uint8_t> decided(faces, 0);  // bit k: hard, for edges whose lower face is f
-    tbb::enumerable_thread_specific<SecondTestScratch> scratch;
     for_each_index(faces, [&](size_t f) {
         if (!(flags[f] & kCandidate)) return;
         const glm::uvec3 t = mesh.triangles[f];
-        SecondTestScratch& local = scratch.local();
         for (int k = 0; k < 3; ++k) {
             if (!(flags[f] & (8u << k))) continue;
             const EdgeMate mate = edge_mate(mesh, vf, uint32_t(f), t[k], t[(k + 1) % 3]);
             if (f < mate.face &&
-                sides_stand_apart(mesh, vf, fn, uint32_t(f), mate.face, t[k], t[(k + 1) % 3], cos_limit, local))
+                sides_stand_apart(mesh, vf, fn, uint32_t(f), mate.face, t[k], t[(k + 1) % 3], cos_limit))
                 decided[f] |= uint8_t(1u << k);
         }
     });
@@ -226,11 +302,11 @@ void second_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm:
 
 }  // namespace
 
-std::vector<uint8_t> hard_edge_flags(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                                     float cos_limit) {
-    std::vector<uint8_t> flags(mesh.triangles.size(), 0);
-    if (first_test(mesh, vf, fn, cos_limit, flags)) second_test(mesh, vf, fn, cos_limit, flags);
-    return flags;
+HardEdgeFlags hard_edge_flags(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit) {
+    HardEdgeFlags out;
+    out.flags.assign(mesh.triangles.size(), 0);
+    if (first_test(mesh, fn, cos_limit, out)) second_test(mesh, out.stars, fn, cos_limit, out.flags);
+    return out;
 }
 
 }  // namespace inkshade::geometry

@@ -33,9 +33,12 @@ std::vector<glm::vec3> face_normals(const Mesh& mesh) {
 // face's normal by its angle at the vertex makes the result independent of how the surface
 // around the vertex is triangulated.
 std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh) {
+    return angle_weighted_vertex_normals(mesh, face_normals(mesh));
+}
+
+std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh, const std::vector<glm::vec3>& fn) {
     const auto& p = mesh.positions;
     const auto& tris = mesh.triangles;
-    const std::vector<glm::vec3> fn = face_normals(mesh);
     std::vector<glm::vec3> angles(tris.size());  // interior angle at each corner
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), kGrain), [&](const auto& range) {
         for (size_t f = range.begin(); f != range.end(); ++f) {

@@ -29,6 +29,8 @@ std::vector<glm::vec3> face_normals(const Mesh& mesh);
 // Angle-weighted vertex normals (Thürmer & Wüthrich 1998): each face contributes its unit
 // normal times the interior angle at the vertex. Isolated vertices get (0,0,1).
 std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh);
+// The same from the mesh's face normals `fn` (face_normals), for a caller that needs them too.
+std::vector<glm::vec3> angle_weighted_vertex_normals(const Mesh& mesh, const std::vector<glm::vec3>& fn);
 
 // Area-weighted vertex normals, as three.js's BufferGeometry.computeVertexNormals: each face
 // contributes its cross product (b - a) x (c - a), twice its area times its unit normal.

@@ -4,18 +4,36 @@
 
 namespace inkshade::geometry {
 
-VertexFaces vertex_faces(const Mesh& mesh) {
+namespace {
+
+// Counts each listed vertex's corners into offsets[v + 2], sums them, then lists the faces
+// with offsets[v + 1] as the fill position, which leaves it at the star's end: no second
+// array of fill positions.
+template <class Listed>
+VertexFaces stars_of(const Mesh& mesh, Listed listed) {
     const size_t n = mesh.positions.size();
     VertexFaces vf;
-    vf.offsets.assign(n + 1, 0);
+    vf.offsets.assign(n + 2, 0);
     for (const glm::uvec3& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) ++vf.offsets[t[k] + 1];
+        for (int k = 0; k < 3; ++k)
+            if (listed(t[k])) ++vf.offsets[t[k] + 2];
     std::partial_sum(vf.offsets.begin(), vf.offsets.end(), vf.offsets.begin());
-    vf.faces.resize(vf.offsets[n]);
-    std::vector<uint32_t> fill(vf.offsets.begin(), vf.offsets.end() - 1);
+    vf.faces.resize(vf.offsets[n + 1]);
     for (size_t f = 0; f < mesh.triangles.size(); ++f)
-        for (int k = 0; k < 3; ++k) vf.faces[fill[mesh.triangles[f][k]]++] = uint32_t(f);
+        for (int k = 0; k < 3; ++k)
+            if (listed(mesh.triangles[f][k])) vf.faces[vf.offsets[mesh.triangles[f][k] + 1]++] = uint32_t(f);
+    vf.offsets.pop_back();
     return vf;
+}
+
+}  // namespace
+
+VertexFaces vertex_faces(const Mesh& mesh) {
+    return stars_of(mesh, [](uint32_t) { return true; });
+}
+
+VertexFaces vertex_faces(const Mesh& mesh, const std::vector<uint8_t>& only) {
+    return stars_of(mesh, [&](uint32_t v) { return only[v] != 0; });
 }
 
 EdgeMate edge_mate(const Mesh& mesh, const VertexFaces& vf, uint32_t face, uint32_t v, uint32_t w) {

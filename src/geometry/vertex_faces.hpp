@@ -20,6 +20,9 @@ struct VertexFaces {
 };
 
 VertexFaces vertex_faces(const Mesh& mesh);
+// Only the stars of the vertices v with only[v] != 0 (one entry per vertex); the others are
+// empty: what auto-smooth needs where few vertices are near a hard edge.
+VertexFaces vertex_faces(const Mesh& mesh, const std::vector<uint8_t>& only);
 
 // The faces other than `face` that have both v and w (v ≠ w): how many (distinct faces) and the
 // first of them. On a manifold edge count is 1, on a border 0.

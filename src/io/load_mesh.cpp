@@ -209,8 +209,15 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     }
     if (options.compute_normals) {
         const bool file_normals = geometry::normals_are_sane(mesh);
-        geometry::ensure_vertex_normals(mesh, options.normal_weighting);
-        if (!file_normals) geometry::auto_smooth(mesh, options.smooth_angle, options.normal_weighting);
+        if (file_normals || !(options.smooth_angle < 180.0f) || options.normal_weighting != NormalWeighting::Angle) {
+            geometry::ensure_vertex_normals(mesh, options.normal_weighting);
+            if (!file_normals) geometry::auto_smooth(mesh, options.smooth_angle, options.normal_weighting);
+        } else {
+            // Auto-smooth reads the face normals the vertex normals are summed from: made once.
+            const std::vector<glm::vec3> fn = geometry::face_normals(mesh);
+            mesh.normals = geometry::angle_weighted_vertex_normals(mesh, fn);
+            geometry::auto_smooth(mesh, options.smooth_angle, options.normal_weighting, fn);
+        }
     } else if (!mesh.normals.empty() && !geometry::normals_are_sane(mesh))
         mesh.normals.clear();  // empty means "compute": better than passing NaNs on
     return mesh;
