@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "geometry/depth_reference.hpp"
+#include "geometry/image_point_grid.hpp"
 
 namespace inkshade::test {
 
@@ -64,36 +64,9 @@ RtscAgreement& RtscAgreement::operator+=(const RtscAgreement& o) {
     return *this;
 }
 
-namespace {
-
-// Samples in 2D buckets of `cell` pixels, for "is there one within r ≤ cell of p".
-class SampleGrid {
-public:
-    explicit SampleGrid(double cell) : cell_(cell) {}
-    void add(glm::dvec2 p) { cells_[key(int(std::floor(p.x / cell_)), int(std::floor(p.y / cell_)))].push_back(p); }
-    bool near(glm::dvec2 p, double r) const {
-        const int ci = int(std::floor(p.x / cell_)), cj = int(std::floor(p.y / cell_));
-        for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) {
-                const auto it = cells_.find(key(ci + di, cj + dj));
-                if (it == cells_.end()) continue;
-                for (const glm::dvec2& q : it->second)
-                    if (glm::length(q - p) <= r) return true;
-            }
-        return false;
-    }
-
-private:
-    static long long key(int i, int j) { return (long long)i * 1000003LL + j; }
-    double cell_;
-    std::unordered_map<long long, std::vector<glm::dvec2>> cells_;
-};
-
-}  // namespace
-
 RtscAgreement rtsc_agreement(const RtscDepthBuffer& buffer, const LineLayer& layer, double tolerance_px) {
     constexpr double kSpacing = 0.25;
-    SampleGrid ours(tolerance_px), theirs(tolerance_px);
+    ImagePointGrid ours(tolerance_px), theirs(tolerance_px);
     std::vector<std::pair<glm::dvec2, double>> rtsc_samples;
     RtscAgreement a;
     for (const auto* list : {&layer.visible, &layer.hidden})

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 #include <utility>
 
 #include "geometry/curvature.hpp"
+#include "geometry/image_point_grid.hpp"
 #include "geometry/visibility.hpp"
 
 namespace inkshade::test {
@@ -191,29 +191,6 @@ std::vector<RtscLineSample> RtscSuggestive::drawn(const Camera& camera, int widt
 
 namespace {
 
-// Points in 2D buckets of `cell` pixels, for "is there one within r ≤ cell of p".
-class PointGrid {
-public:
-    explicit PointGrid(double cell) : cell_(cell) {}
-    void add(glm::dvec2 p) { cells_[key(int(std::floor(p.x / cell_)), int(std::floor(p.y / cell_)))].push_back(p); }
-    bool near(glm::dvec2 p, double r) const {
-        const int ci = int(std::floor(p.x / cell_)), cj = int(std::floor(p.y / cell_));
-        for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) {
-                const auto it = cells_.find(key(ci + di, cj + dj));
-                if (it == cells_.end()) continue;
-                for (const glm::dvec2& q : it->second)
-                    if (glm::length(q - p) <= r) return true;
-            }
-        return false;
-    }
-
-private:
-    static long long key(int i, int j) { return (long long)i * 1000003LL + j; }
-    double cell_;
-    std::unordered_map<long long, std::vector<glm::dvec2>> cells_;
-};
-
 // Samples every `spacing` px along the paths with their strength (1 where a path has none).
 template <typename F>
 void for_each_strength_sample(const std::vector<LinePath>& paths, double spacing, F&& f) {
@@ -238,7 +215,7 @@ void for_each_strength_sample(const std::vector<LinePath>& paths, double spacing
 
 RtscAgreement rtsc_suggestive_agreement(const std::vector<RtscLineSample>& rtsc, const LineLayer& layer,
                                         double tolerance_px) {
-    PointGrid ours(tolerance_px), theirs(tolerance_px);
+    ImagePointGrid ours(tolerance_px), theirs(tolerance_px);
     for_each_strength_sample(layer.visible, 0.25, [&](glm::dvec2 p, double, double) { ours.add(p); });
     for (const RtscLineSample& s : rtsc)
         if (s.alpha > 0.0) theirs.add(s.p);
