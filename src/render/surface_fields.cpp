@@ -41,10 +41,11 @@ glm::dvec3 ray_barycentrics(const glm::dvec3& o, const glm::dvec3& d, const Face
     const double det = glm::dot(t.e1, p);
     if (std::abs(det) < 1e-300 || !std::isfinite(det)) return glm::dvec3(1.0 / 3.0);  // seen edge-on
     const glm::dvec3 s = o - t.a, q = glm::cross(s, t.e1);
-    const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
+    const double inverse = 1.0 / det;  // one division a pixel where it can (a dozen were its cost)
+    const double u = glm::dot(s, p) * inverse, v = glm::dot(d, q) * inverse;
     glm::dvec3 w = glm::max(glm::dvec3(1.0 - u - v, u, v), glm::dvec3(0.0));
     const double sum = w.x + w.y + w.z;
-    return sum > 0.0 ? w / sum : glm::dvec3(1.0 / 3.0);
+    return sum > 0.0 ? w * (1.0 / sum) : glm::dvec3(1.0 / 3.0);
 }
 
 // Every field of one vertex side by side: a pixel reads three vertices, so it touches a few
@@ -94,20 +95,20 @@ struct Sample {
 
 glm::dvec3 unit(const glm::dvec3& v) {
     const double len = glm::length(v);
-    return len > 0.0 && std::isfinite(len) ? v / len : glm::dvec3(0.0);
+    return len > 0.0 && std::isfinite(len) ? v * (1.0 / len) : glm::dvec3(0.0);
 }
 
 // The unit image-space direction (pixels: x right, y down) of world direction `d` at the point
-// whose camera-space position is `q`, the
-// derivative of the projection; the sign with x > 0 (or x = 0, y > 0): a principal direction
-// is an axis, so this fixes one of its two ends. (0, 0) when it projects to a point.
+// whose camera-space position is `q`: the derivative of the projection, without its positive
+// factor 1/q.z² (the normalisation drops it); the sign with x > 0 (or x = 0, y > 0): a
+// principal direction is an axis, so this fixes one of its two ends. (0, 0) when it projects
+// to a point.
 glm::dvec2 image_direction(const glm::dmat4& view, bool orthographic, const glm::dvec3& q, const glm::dvec3& d) {
     const glm::dvec3 e = glm::dmat3(view) * d;
-    glm::dvec2 s =
-        orthographic ? glm::dvec2(e.x, -e.y) : glm::dvec2(-e.x * q.z + q.x * e.z, e.y * q.z - q.y * e.z) / (q.z * q.z);
+    glm::dvec2 s = orthographic ? glm::dvec2(e.x, -e.y) : glm::dvec2(-e.x * q.z + q.x * e.z, e.y * q.z - q.y * e.z);
     const double len = glm::length(s);
     if (!(len > 1e-12 * (std::abs(s.x) + std::abs(s.y) + 1e-300)) || !std::isfinite(len)) return glm::dvec2(0.0);
-    s /= len;
+    s *= 1.0 / len;
     return s.x < 0.0 || (s.x == 0.0 && s.y < 0.0) ? -s : s;
 }
 
@@ -116,13 +117,14 @@ struct PixelContext {
     explicit PixelContext(const Frame& frame)
         : view(frame.camera.view()),
           inverse_view_proj(glm::inverse(glm::dmat4(frame.camera.projection(frame.aspect())) * view)),
-          view_vector(frame.camera),
+          eye(frame.camera.eye),
+          view_direction(unit(glm::dvec3(frame.camera.eye) - glm::dvec3(frame.camera.target))),
           light(frame.light),
           orthographic(frame.camera.orthographic),
           width(frame.options.width),
           height(frame.options.height) {}
     glm::dmat4 view, inverse_view_proj;
-    geometry::ViewVector view_vector;
+    glm::dvec3 eye, view_direction;
     const Light& light;
     bool orthographic;
     int width, height;
@@ -134,7 +136,7 @@ struct PixelContext {
         // Origin and direction of the ray through the centre of pixel x.
         std::pair<glm::dvec3, glm::dvec3> at(int x) const {
             const glm::dvec4 a = near0 + double(x) * step, b = far0 + double(x) * step;
-            const glm::dvec3 near(a / a.w), far(b / b.w);
+            const glm::dvec3 near = glm::dvec3(a) * (1.0 / a.w), far = glm::dvec3(b) * (1.0 / b.w);
             return {near, far - near};
         }
     };
@@ -142,6 +144,12 @@ struct PixelContext {
         const double nx = 0.5 / width * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / height * 2.0, step = 2.0 / width;
         return {inverse_view_proj * glm::dvec4(nx, ny, -1.0, 1.0), inverse_view_proj * glm::dvec4(nx, ny, 1.0, 1.0),
                 inverse_view_proj * glm::dvec4(step, 0.0, 0.0, 0.0)};
+    }
+    // The unit view vector v at p (geometry::ViewVector, inlined): towards the eye, or the
+    // orthographic camera's direction.
+    glm::dvec3 to_eye(const glm::dvec3& p) const {
+        if (orthographic) return view_direction;
+        return unit(eye - p);
     }
     // Towards the light from p (Light::type: a directional light shines from position to target).
     glm::dvec3 to_light(const glm::dvec3& p) const {
@@ -152,8 +160,7 @@ struct PixelContext {
 
 // The fields asked for at one pixel.
 void write_pixel(const PixelContext& ctx, AovSet want, size_t scales, const Sample& s, size_t i, AovImages& out) {
-    if (want.contains(Aov::Ndotv))
-        out.ndotv[i] = float(glm::dot(unit(s.at(&PackedVertex::normal)), ctx.view_vector.at(glm::vec3(s.p))));
+    if (want.contains(Aov::Ndotv)) out.ndotv[i] = float(glm::dot(unit(s.at(&PackedVertex::normal)), ctx.to_eye(s.p)));
     if (want.contains(Aov::Kr)) out.kr[i] = float(s.at(&PackedVertex::kr));
     if (want.contains(Aov::Dwkr)) out.dwkr[i] = float(s.at(&PackedVertex::dwkr));
     if (want.contains(Aov::K1)) out.k1[i] = float(s.at(&PackedVertex::k1));
