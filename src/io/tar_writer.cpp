@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -43,7 +44,8 @@ bool split_ustar_name(std::string_view name, std::string_view& prefix, std::stri
 
 std::string header(std::string_view prefix, std::string_view name, uint64_t size, char type) {
     std::string h(kBlock, '\0');
-    std::memcpy(&h[0], name.data(), std::min<size_t>(name.size(), 100));
+    // copy, not memcpy: an empty view may hold a null pointer, which memcpy must not be given.
+    std::copy_n(name.data(), std::min<size_t>(name.size(), 100), h.begin());
     octal(&h[100], 8, 0644);  // mode
     octal(&h[108], 8, 0);     // uid
     octal(&h[116], 8, 0);     // gid
@@ -52,7 +54,7 @@ std::string header(std::string_view prefix, std::string_view name, uint64_t size
     h[156] = type;
     std::memcpy(&h[257], "ustar", 6);  // magic "ustar\0", version "00"
     std::memcpy(&h[263], "00", 2);
-    std::memcpy(&h[345], prefix.data(), std::min<size_t>(prefix.size(), 155));
+    std::copy_n(prefix.data(), std::min<size_t>(prefix.size(), 155), h.begin() + 345);
     // The checksum: the sum of the header's bytes (unsigned) with the field itself as spaces.
     std::memset(&h[148], ' ', 8);
     unsigned sum = 0;
