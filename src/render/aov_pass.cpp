@@ -11,6 +11,7 @@
 #include "inkshade/error.hpp"
 #include "render/back_faces.hpp"
 #include "render/frame.hpp"
+#include "render/gl_rows.hpp"
 
 namespace inkshade::render {
 
@@ -25,15 +26,6 @@ gpu::GlTexture make_texture(int width, int height, GLenum format) {
 void check_complete(const gpu::GlFramebuffer& fbo) {
     if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError("cannot create the AOV targets (out of memory?)");
-}
-
-// Rows of `row_values` values, bottom row first as GL reads them, into top row first.
-template <class T>
-void flip_rows(std::vector<T>& v, size_t row_values) {
-    const size_t rows = v.size() / row_values;
-    for (size_t y = 0; y < rows / 2; ++y)
-        std::swap_ranges(v.begin() + std::ptrdiff_t(y * row_values), v.begin() + std::ptrdiff_t((y + 1) * row_values),
-                         v.begin() + std::ptrdiff_t((rows - 1 - y) * row_values));
 }
 
 struct AovTargets {

@@ -11,6 +11,7 @@
 #include "inkshade/error.hpp"
 #include "render/back_faces.hpp"
 #include "render/frame.hpp"
+#include "render/gl_rows.hpp"
 #include "render/surface_fields.hpp"
 
 namespace inkshade::render {
@@ -75,9 +76,7 @@ private:
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glGetTextureImage(targets_->face.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                           GLsizei(faces.size() * sizeof(uint32_t)), faces.data());
-        for (size_t y = 0; y < height / 2; ++y)  // GL's rows bottom first
-            std::swap_ranges(faces.begin() + std::ptrdiff_t(y * width), faces.begin() + std::ptrdiff_t((y + 1) * width),
-                             faces.begin() + std::ptrdiff_t((height - 1 - y) * width));
+        flip_rows(faces, width);
         return faces;
     }
 
