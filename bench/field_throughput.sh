@@ -8,7 +8,10 @@
 # printed last, with the median of each run's own ratio (the pair ran back to back, so it
 # shares the machine's load). The issue's acceptance: ratio >= 0.5 on a 75 k-face mesh. On a
 # machine that other work shares, `chrt -r 10 bench/field_throughput.sh` runs both commands
-# ahead of it (docs/benchmarks.md).
+# ahead of it (docs/benchmarks.md). Each command writes into a directory of its own and nothing
+# is deleted until every run is timed: ext4 skips inodes freed in the last minute when it
+# places a new file, so deleting one run's thousands of files makes the next run's file
+# creation pay for them, and the fields run, with 13 files a view against 2, pays most.
 set -euo pipefail
 build=${1:-build}
 runs=${RUNS:-3}
@@ -32,10 +35,9 @@ echo "   machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'), load 
 : >"$tmp/fields"
 : >"$tmp/ratios"
 one() {  # KIND [--aov LIST]: prints images/s
-  rm -rf "$tmp/out"
-  local t0 t1
+  local t0 t1 out="$tmp/out.$1.$run"
   t0=$(now)
-  "$bin" batch "$tmp/jobs.csv" -o "$tmp/out" --size "$size" --quiet "${@:2}" >/dev/null
+  "$bin" batch "$tmp/jobs.csv" -o "$out" --size "$size" --quiet "${@:2}" >/dev/null
   t1=$(now)
   awk -v n="$views" -v a="$t0" -v b="$t1" 'BEGIN {printf "%.3f\n", n / (b - a)}' | tee -a "$tmp/$1"
 }

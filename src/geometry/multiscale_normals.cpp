@@ -1,5 +1,6 @@
-// Smoothed normals: the sources (one per occupied cell of side σ/2), a hash grid of cells of side
-// 3σ over them, then each vertex sums the sources in the 27 grid cells around it (parallel).
+// Smoothed normals: the sources (one per occupied cell of side σ/2), sorted into a hash grid of
+// cells of side 3σ, then each vertex sums the sources in the 27 grid cells around it (in
+// parallel, the vertices of one grid cell together).
 #include "geometry/multiscale_normals.hpp"
 
 #include <tbb/blocked_range.h>
@@ -44,6 +45,76 @@ struct Source {
     double area = 0.0;
 };
 
+// The sources sorted by their cell of side `reach` (in source order within a cell, so each
+// vertex sums them in the order it did when each cell held a list), and each cell's range.
+struct Grid {
+    Grid(const std::vector<Source>& sources, double reach) {
+        std::vector<uint32_t> cell_of_source(sources.size(), kNone);
+        std::vector<Cell> cells;
+        for (uint32_t k = 0; k < sources.size(); ++k) {
+            Cell cell;
+            if (!cell_of(sources[k].weighted_position, reach, cell)) continue;
+            auto [it, inserted] = range.try_emplace(cell, uint32_t(cells.size()), 0u);
+            if (inserted) cells.push_back(cell);
+            cell_of_source[k] = it->second.first;
+            ++it->second.second;
+        }
+        // Counting sort: a cell's sources start after those of the cells numbered before it.
+        std::vector<uint32_t> start(cells.size() + 1, 0);
+        for (size_t c = 0; c < cells.size(); ++c) start[c + 1] = start[c] + range[cells[c]].second;
+        for (size_t c = 0; c < cells.size(); ++c) range[cells[c]] = {start[c], start[c + 1]};
+        position.resize(start.back());
+        normal.resize(start.back());
+        for (uint32_t k = 0; k < sources.size(); ++k)
+            if (const uint32_t c = cell_of_source[k]; c != kNone) {
+                position[start[c]] = sources[k].weighted_position;
+                normal[start[c]++] = sources[k].normal;
+            }
+    }
+    // The ranges of the 27 cells around `home` that hold sources, in z, y, x order.
+    void around(const Cell& home, std::vector<std::pair<uint32_t, uint32_t>>& out) const {
+        out.clear();
+        for (int64_t dz = -1; dz <= 1; ++dz)
+            for (int64_t dy = -1; dy <= 1; ++dy)
+                for (int64_t dx = -1; dx <= 1; ++dx)
+                    if (const auto it = range.find({home.x + dx, home.y + dy, home.z + dz}); it != range.end())
+                        out.push_back(it->second);
+    }
+    static constexpr uint32_t kNone = ~0u;
+    std::vector<glm::dvec3> position, normal;
+    std::unordered_map<Cell, std::pair<uint32_t, uint32_t>, CellHash> range;
+};
+
+// The vertices grouped by their cell of side `reach`: the vertices of a group read the same 27
+// cells, looked up once for all of them (at the coarse scales a cell holds hundreds).
+struct Groups {
+    Groups(const Mesh& mesh, double reach) {
+        std::unordered_map<Cell, uint32_t, CellHash> group_of;
+        std::vector<uint32_t> group(mesh.positions.size(), Grid::kNone);
+        std::vector<uint32_t> count;
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            Cell cell;
+            if (!finite(mesh.positions[i]) || !cell_of(glm::dvec3(mesh.positions[i]), reach, cell)) continue;
+            auto [it, inserted] = group_of.try_emplace(cell, uint32_t(cells.size()));
+            if (inserted) {
+                cells.push_back(cell);
+                count.push_back(0);
+            }
+            group[i] = it->second;
+            ++count[it->second];
+        }
+        first.assign(cells.size() + 1, 0);
+        for (size_t g = 0; g < cells.size(); ++g) first[g + 1] = first[g] + count[g];
+        vertices.resize(first.back());
+        std::vector<uint32_t> next(first.begin(), first.end() - 1);
+        for (size_t i = 0; i < group.size(); ++i)
+            if (group[i] != Grid::kNone) vertices[next[group[i]]++] = uint32_t(i);
+    }
+    std::vector<Cell> cells;
+    std::vector<uint32_t> first;     // group g's vertices: vertices[first[g] .. first[g + 1])
+    std::vector<uint32_t> vertices;  // grouped, in vertex order within a group
+};
+
 }  // namespace
 
 std::vector<glm::vec3> smoothed_normals(const Mesh& mesh, const std::vector<glm::vec3>& normals, float sigma) {
@@ -73,34 +144,31 @@ std::vector<glm::vec3> smoothed_normals(const Mesh& mesh, const std::vector<glm:
         src.normal += area[i] * glm::dvec3(normals[i]);
         src.area += area[i];
     }
-    std::unordered_map<Cell, std::vector<uint32_t>, CellHash> grid;
-    for (uint32_t k = 0; k < sources.size(); ++k) {
-        sources[k].weighted_position /= sources[k].area;
-        Cell cell;
-        if (cell_of(sources[k].weighted_position, reach, cell)) grid[cell].push_back(k);
-    }
+    for (Source& src : sources) src.weighted_position /= src.area;
+    const Grid grid(sources, reach);
+    const Groups groups(mesh, reach);
 
     std::vector<glm::vec3> out(normals);
     const double inv_two_s2 = 1.0 / (2.0 * s * s);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kGrain), [&](const auto& range) {
-        for (size_t i = range.begin(); i != range.end(); ++i) {
-            Cell home;
-            const glm::dvec3 p(mesh.positions[i]);
-            if (!finite(mesh.positions[i]) || !cell_of(p, reach, home)) continue;
-            glm::dvec3 sum(0.0);
-            for (int64_t dz = -1; dz <= 1; ++dz)
-                for (int64_t dy = -1; dy <= 1; ++dy)
-                    for (int64_t dx = -1; dx <= 1; ++dx) {
-                        const auto it = grid.find({home.x + dx, home.y + dy, home.z + dz});
-                        if (it == grid.end()) continue;
-                        for (const uint32_t k : it->second) {
-                            const glm::dvec3 d = sources[k].weighted_position - p;
-                            const double d2 = glm::dot(d, d);
-                            if (d2 < reach * reach) sum += std::exp(-d2 * inv_two_s2) * sources[k].normal;
-                        }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, groups.cells.size(), kGrain / 16), [&](const auto& range) {
+        std::vector<std::pair<uint32_t, uint32_t>> near;  // the source ranges of the 27 cells
+        for (size_t g = range.begin(); g != range.end(); ++g) {
+            grid.around(groups.cells[g], near);
+            for (uint32_t k = groups.first[g]; k != groups.first[g + 1]; ++k) {
+                const uint32_t i = groups.vertices[k];
+                const glm::dvec3 p(mesh.positions[i]);
+                glm::dvec3 sum(0.0);
+                for (const auto& [begin, end] : near)
+                    for (uint32_t q = begin; q != end; ++q) {
+                        const glm::dvec3 d = grid.position[q] - p;
+                        const double d2 = glm::dot(d, d);
+                        // The weight in float: std::exp in double took most of the time, and
+                        // float's rounding (6e-8) is far below what the unit normal keeps.
+                        if (d2 < reach * reach) sum += double(std::exp(float(-d2 * inv_two_s2))) * grid.normal[q];
                     }
-            const double len = glm::length(sum);
-            if (len > 0.0 && std::isfinite(len)) out[i] = glm::vec3(sum / len);
+                const double len = glm::length(sum);
+                if (len > 0.0 && std::isfinite(len)) out[i] = glm::vec3(sum / len);
+            }
         }
     });
     return out;

@@ -35,15 +35,17 @@ struct FaceCorners {
 };
 
 // Barycentric coordinates of where the ray (o, d) meets the plane of the face, clamped into
-// the triangle (a pixel centre on an edge may fall a rounding error outside).
+// the triangle (a pixel centre on an edge may fall a rounding error outside). Möller and
+// Trumbore's u and v share the denominator det, so the weights are taken unscaled
+// (det − U − V, U, V), clamped, and divided once by their sum. d need not be unit: the weights
+// do not change with its length.
 glm::dvec3 ray_barycentrics(const glm::dvec3& o, const glm::dvec3& d, const FaceCorners& t) {
     const glm::dvec3 p = glm::cross(d, t.e2);
     const double det = glm::dot(t.e1, p);
     if (std::abs(det) < 1e-300 || !std::isfinite(det)) return glm::dvec3(1.0 / 3.0);  // seen edge-on
     const glm::dvec3 s = o - t.a, q = glm::cross(s, t.e1);
-    const double inverse = 1.0 / det;  // one division a pixel where it can (a dozen were its cost)
-    const double u = glm::dot(s, p) * inverse, v = glm::dot(d, q) * inverse;
-    glm::dvec3 w = glm::max(glm::dvec3(1.0 - u - v, u, v), glm::dvec3(0.0));
+    const double u = glm::dot(s, p), v = glm::dot(d, q);
+    const glm::dvec3 w = glm::max(glm::dvec3(det - u - v, u, v) * (det < 0.0 ? -1.0 : 1.0), glm::dvec3(0.0));
     const double sum = w.x + w.y + w.z;
     return sum > 0.0 ? w * (1.0 / sum) : glm::dvec3(1.0 / 3.0);
 }
@@ -98,6 +100,12 @@ glm::dvec3 unit(const glm::dvec3& v) {
     return len > 0.0 && std::isfinite(len) ? v * (1.0 / len) : glm::dvec3(0.0);
 }
 
+// The cosine of the angle between a and b; 0 when either vanishes.
+double cosine(const glm::dvec3& a, const glm::dvec3& b) {
+    const double len2 = glm::dot(a, a) * glm::dot(b, b);
+    return len2 > 0.0 && std::isfinite(len2) ? glm::dot(a, b) / std::sqrt(len2) : 0.0;
+}
+
 // The unit image-space direction (pixels: x right, y down) of world direction `d` at the point
 // whose camera-space position is `q`: the derivative of the projection, without its positive
 // factor 1/q.z² (the normalisation drops it); the sign with x > 0 (or x = 0, y > 0): a
@@ -133,11 +141,12 @@ struct PixelContext {
     // far points are linear in x, so a row needs two matrix products and a step.
     struct RowRays {
         glm::dvec4 near0, far0, step;  // pixel 0's near and far points; one pixel along x
-        // Origin and direction of the ray through the centre of pixel x.
+        // Origin and direction (not unit) of the ray through the centre of pixel x: from the
+        // near point a/a.w towards the far point b/b.w, the direction scaled by a.w·b.w to
+        // save a division.
         std::pair<glm::dvec3, glm::dvec3> at(int x) const {
             const glm::dvec4 a = near0 + double(x) * step, b = far0 + double(x) * step;
-            const glm::dvec3 near = glm::dvec3(a) * (1.0 / a.w), far = glm::dvec3(b) * (1.0 / b.w);
-            return {near, far - near};
+            return {glm::dvec3(a) * (1.0 / a.w), glm::dvec3(b) * a.w - glm::dvec3(a) * b.w};
         }
     };
     RowRays row(int y) const {
@@ -145,22 +154,19 @@ struct PixelContext {
         return {inverse_view_proj * glm::dvec4(nx, ny, -1.0, 1.0), inverse_view_proj * glm::dvec4(nx, ny, 1.0, 1.0),
                 inverse_view_proj * glm::dvec4(step, 0.0, 0.0, 0.0)};
     }
-    // The unit view vector v at p (geometry::ViewVector, inlined): towards the eye, or the
-    // orthographic camera's direction.
-    glm::dvec3 to_eye(const glm::dvec3& p) const {
-        if (orthographic) return view_direction;
-        return unit(eye - p);
-    }
+    // The view vector at p (geometry::ViewVector) times a positive factor (cosine() normalises):
+    // towards the eye, or the orthographic camera's direction.
+    glm::dvec3 to_eye_unscaled(const glm::dvec3& p) const { return orthographic ? view_direction : eye - p; }
     // Towards the light from p (Light::type: a directional light shines from position to target).
     glm::dvec3 to_light(const glm::dvec3& p) const {
-        return light.type == LightType::Directional ? unit(glm::dvec3(light.position - light.target))
-                                                    : unit(glm::dvec3(light.position) - p);
+        return light.type == LightType::Directional ? light_direction : unit(glm::dvec3(light.position) - p);
     }
+    glm::dvec3 light_direction = unit(glm::dvec3(light.position - light.target));  // a directional light's
 };
 
 // The fields asked for at one pixel.
 void write_pixel(const PixelContext& ctx, AovSet want, size_t scales, const Sample& s, size_t i, AovImages& out) {
-    if (want.contains(Aov::Ndotv)) out.ndotv[i] = float(glm::dot(unit(s.at(&PackedVertex::normal)), ctx.to_eye(s.p)));
+    if (want.contains(Aov::Ndotv)) out.ndotv[i] = float(cosine(s.at(&PackedVertex::normal), ctx.to_eye_unscaled(s.p)));
     if (want.contains(Aov::Kr)) out.kr[i] = float(s.at(&PackedVertex::kr));
     if (want.contains(Aov::Dwkr)) out.dwkr[i] = float(s.at(&PackedVertex::dwkr));
     if (want.contains(Aov::K1)) out.k1[i] = float(s.at(&PackedVertex::k1));
