@@ -13,6 +13,7 @@
 #include <memory>
 #include <numeric>
 
+#include "geometry/hard_edge_groups.hpp"
 #include "geometry/hard_edges.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/vertex_faces.hpp"
@@ -180,7 +181,8 @@ void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting, con
     // Compared as a dot product of unit normals; the small slack keeps exactly-at-limit edges
     // (a 30° split of a 12-gon prism) on the smooth side whatever the rounding.
     const float cos_limit = std::cos(glm::radians(std::max(angle_degrees, 0.0f))) - 1e-6f;
-    const HardEdgeFlags flags = hard_edge_flags(mesh, fn, cos_limit);
+    HardEdgeFlags flags = hard_edge_flags(mesh, fn, cos_limit);
+    drop_small_hard_edge_groups(mesh, flags.flags);
     const std::vector<uint8_t>& hard = flags.flags;
     const VertexFaces& vf = flags.stars;  // empty at vertices far from a hard edge
     if (std::all_of(hard.begin(), hard.end(), [](uint8_t h) { return h == 0; })) return;

@@ -64,21 +64,23 @@ RtscAgreement& RtscAgreement::operator+=(const RtscAgreement& o) {
     return *this;
 }
 
-RtscAgreement rtsc_agreement(const RtscDepthBuffer& buffer, const LineLayer& layer, double tolerance_px) {
+RtscAgreement rtsc_agreement(const RtscDepthBuffer& buffer, const LineLayer& layer, double tolerance_px,
+                             const LineLayer* drawn) {
     constexpr double kSpacing = 0.25;
+    const LineLayer& compared = drawn ? *drawn : layer;
     ImagePointGrid ours(tolerance_px), theirs(tolerance_px);
     std::vector<std::pair<glm::dvec2, double>> rtsc_samples;
     RtscAgreement a;
     for (const auto* list : {&layer.visible, &layer.hidden})
         for_each_sample(*list, kSpacing, [&](glm::dvec2 p, double depth, double length, const LinePath&) {
-            if (list == &layer.visible) ours.add(p);
             if (buffer.passes(p, depth)) theirs.add(p), rtsc_samples.emplace_back(p, length);
         });
+    for_each_sample(compared.visible, kSpacing, [&](glm::dvec2 p, double, double, const LinePath&) { ours.add(p); });
     for (const auto& [p, length] : rtsc_samples) {
         a.rtsc_visible += length;
         if (ours.near(p, tolerance_px)) a.recalled += length;
     }
-    for_each_sample(layer.visible, kSpacing, [&](glm::dvec2 p, double, double length, const LinePath&) {
+    for_each_sample(compared.visible, kSpacing, [&](glm::dvec2 p, double, double length, const LinePath&) {
         a.visible += length;
         if (theirs.near(p, tolerance_px)) a.precise += length;
     });

@@ -32,7 +32,9 @@ private:
 };
 
 // How a drawing's visible paths of one layer agree with rtsc's depth test applied to all its
-// paths (visible and hidden, the same extraction): lengths in pixels.
+// paths (visible and hidden, the same extraction): lengths in pixels. With `drawn`, the
+// visible paths compared are drawn's (another extraction of the same view, e.g. with the
+// default auto-smooth where `layer` has rtsc's smooth normals).
 struct RtscAgreement {
     double rtsc_visible = 0.0;  // length rtsc's test draws
     double recalled = 0.0;      // ... of it within `tolerance_px` of a visible path
@@ -42,6 +44,7 @@ struct RtscAgreement {
     double precision() const { return visible > 0.0 ? precise / visible : 1.0; }
     RtscAgreement& operator+=(const RtscAgreement& o);
 };
-RtscAgreement rtsc_agreement(const RtscDepthBuffer& buffer, const LineLayer& layer, double tolerance_px = 2.0);
+RtscAgreement rtsc_agreement(const RtscDepthBuffer& buffer, const LineLayer& layer, double tolerance_px = 2.0,
+                             const LineLayer* drawn = nullptr);
 
 }  // namespace inkshade::test

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -142,8 +143,12 @@ TEST(SmoothContour, CoarseCadPartDrawsTheVertexNormalsZeroCrossings) {
 
 // The visible contour against rtsc's depth test (tests/geometry/rtsc_depth_buffer.hpp) over
 // all levels of the same extraction, from eight views around the part at 1024².
-test::RtscAgreement agreement_with_rtsc(const Mesh& mesh, float elevation_step = 0.0f) {
+// `drawn`: a second load of the mesh (the default auto-smooth) whose visible contour is
+// compared with rtsc's drawing of `mesh` (docs/benchmarks.md); none: mesh's own.
+test::RtscAgreement agreement_with_rtsc(const Mesh& mesh, float elevation_step = 0.0f, const Mesh* drawn = nullptr) {
     LineExtractor extractor(mesh);
+    std::optional<LineExtractor> drawn_extractor;
+    if (drawn) drawn_extractor.emplace(*drawn);
     test::RtscAgreement sum;
     for (int k = 0; k < 8; ++k) {
         CameraOptions options;
@@ -152,8 +157,11 @@ test::RtscAgreement agreement_with_rtsc(const Mesh& mesh, float elevation_step =
         const int size = 1024;
         const Camera camera = frame_camera(mesh.bounds(), options, 1.0f, mesh.positions);
         const LineDrawing drawing = extractor.draw(camera, size, size, {{"contour", {{"hidden", {1.0f}}}}});
-        const test::RtscAgreement a =
-            test::rtsc_agreement(test::RtscDepthBuffer(mesh, camera, size, size), drawing.layers.at(0));
+        const std::optional<LineDrawing> other =
+            drawn ? std::optional(drawn_extractor->draw(camera, size, size, {{"contour", {}}})) : std::nullopt;
+        const test::RtscAgreement a = test::rtsc_agreement(test::RtscDepthBuffer(mesh, camera, size, size),
+                                                           drawing.layers.at(0), 2.0,
+                                                           other ? &other->layers.at(0) : nullptr);
         std::printf("[ measure  ] view %d: recall %.3f precision %.3f (rtsc %.0f px, visible %.0f px)\n", k, a.recall(),
                     a.precision(), a.rtsc_visible, a.visible);
         sum += a;
@@ -217,8 +225,9 @@ TEST(SmoothContour, CoarseSphereOutlineIsWhole) {
 }
 
 // INKSHADE_RTSC_MESHES=FILE[;FILE...]: each mesh loaded with --smooth-angle 180 (rtsc's
-// normals), its visible contour against rtsc's depth test. Skipped without it (the parts are
-// not in the repository); docs/benchmarks.md has the figures.
+// normals), its visible contour against rtsc's depth test; then the visible contour of the
+// default load (auto-smooth: hard-edge contours too) against that same rtsc drawing. Skipped
+// without it (the parts are not in the repository); docs/benchmarks.md has the figures.
 TEST(SmoothContour, RtscAgreementOfMeshesFromEnvironment) {
     const char* list = std::getenv("INKSHADE_RTSC_MESHES");
     if (!list || !*list) GTEST_SKIP() << "INKSHADE_RTSC_MESHES not set";
@@ -226,8 +235,12 @@ TEST(SmoothContour, RtscAgreementOfMeshesFromEnvironment) {
     for (std::string file; std::getline(files, file, ';');) {
         LoadOptions options;
         options.smooth_angle = 180.0f;
-        const test::RtscAgreement a = agreement_with_rtsc(load_mesh(file, options), 5.0f);
+        const Mesh smooth = load_mesh(file, options), by_default = load_mesh(file);
+        const test::RtscAgreement a = agreement_with_rtsc(smooth, 5.0f);
         std::printf("[ measure  ] %s: recall %.3f precision %.3f\n", file.c_str(), a.recall(), a.precision());
+        const test::RtscAgreement d = agreement_with_rtsc(smooth, 5.0f, &by_default);
+        std::printf("[ measure  ] %s, default load: recall %.3f precision %.3f\n", file.c_str(), d.recall(),
+                    d.precision());
     }
 }
 
