@@ -8,20 +8,26 @@ namespace {
 
 // Counts each listed vertex's corners into offsets[v + 2], sums them, then lists the faces
 // with offsets[v + 1] as the fill position, which leaves it at the star's end: no second
-// array of fill positions.
+// array of fill positions. Both passes split the vertices among the threads (for_vertex_ranges).
 template <class Listed>
 VertexFaces stars_of(const Mesh& mesh, Listed listed) {
     const size_t n = mesh.positions.size();
     VertexFaces vf;
     vf.offsets.assign(n + 2, 0);
-    for (const glm::uvec3& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k)
-            if (listed(t[k])) ++vf.offsets[t[k] + 2];
+    for_vertex_ranges(n, [&](size_t lo, size_t hi) {
+        for (const glm::uvec3& t : mesh.triangles)
+            for (int k = 0; k < 3; ++k)
+                if (t[k] >= lo && t[k] < hi && listed(t[k])) ++vf.offsets[t[k] + 2];
+    });
     std::partial_sum(vf.offsets.begin(), vf.offsets.end(), vf.offsets.begin());
     vf.faces.resize(vf.offsets[n + 1]);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f)
-        for (int k = 0; k < 3; ++k)
-            if (listed(mesh.triangles[f][k])) vf.faces[vf.offsets[mesh.triangles[f][k] + 1]++] = uint32_t(f);
+    for_vertex_ranges(n, [&](size_t lo, size_t hi) {
+        for (size_t f = 0; f < mesh.triangles.size(); ++f)
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.triangles[f][k];
+                if (v >= lo && v < hi && listed(v)) vf.faces[vf.offsets[v + 1]++] = uint32_t(f);
+            }
+    });
     vf.offsets.pop_back();
     return vf;
 }
