@@ -32,12 +32,14 @@ struct UninitialisedAllocator : std::allocator<T> {
     }
 };
 
-// Calls body(lo, hi) for a few vertex ranges covering [0, n) in parallel (one per thread): a
-// pass that scatters per-corner values into per-vertex entries reads every face in each range
-// and writes only its own vertices, so it needs no atomics and keeps face order.
+// Calls body(lo, hi) for a few vertex ranges covering [0, n) in parallel (one per thread, at
+// most max_parts): a pass that scatters per-corner values into per-vertex entries reads every
+// face in each range and writes only its own vertices, so it needs no atomics and keeps face
+// order. Each range reads all faces: worth it where most corners write something.
 template <class Body>
-void for_vertex_ranges(size_t n, Body&& body) {
-    const size_t parts = std::clamp<size_t>(size_t(tbb::this_task_arena::max_concurrency()), 1, n / 4096 + 1);
+void for_vertex_ranges(size_t n, Body&& body, size_t max_parts = ~size_t(0)) {
+    const size_t threads = size_t(tbb::this_task_arena::max_concurrency());
+    const size_t parts = std::clamp<size_t>(std::min(threads, max_parts), 1, n / 4096 + 1);
     tbb::parallel_for(size_t(0), parts, [&](size_t p) { body(n * p / parts, n * (p + 1) / parts); });
 }
 
