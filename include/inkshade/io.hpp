@@ -50,7 +50,7 @@ struct LoadOptions {
     // off to report what the file holds. Built-in models have none.
     bool drop_duplicate_faces = true;
     // Auto-smooth for files without normals: shading normals split at edges whose faces meet at
-    // more than this many degrees (Mesh::shading_normals); 180 = one smooth normal per vertex.
+    // more than this many degrees (Mesh::shading_splits); 180 = one smooth normal per vertex.
     float smooth_angle = 30.0f;
     // How computed normals weight the faces: by angle, or by area as three.js does (Scene's
     // load_options asks for it in the three.js convention).

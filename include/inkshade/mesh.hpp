@@ -1,5 +1,6 @@
 // The indexed triangle mesh every part of Inkshade works on.
 #pragma once
+#include <bit>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -124,16 +125,56 @@ struct BoundingBox {
 // sums the unnormalised cross products), for renders in three.js's convention.
 enum class NormalWeighting { Angle, Area };
 
+// The shading normals of a mesh's hard edges, stored only where a hard edge splits a vertex:
+// the faces around a vertex, joined across its smooth edges, form fans; at a vertex of several
+// fans ("split") each fan has its own normal, and every other vertex keeps its smooth normal
+// (Mesh::normals). Memory: a bit per vertex, plus a few words per split vertex and per face
+// corner there. Shading normal ids number the fans vertex by vertex (one id for a vertex of one
+// fan): id(v, fan) = v + (fans beyond the first at split vertices before v) + fan.
+struct ShadingSplits {
+    static constexpr uint32_t kNone = ~0u;
+    size_t triangle_count = 0;           // of the mesh they were made for
+    std::vector<uint64_t> split;         // bit v % 64 of word v / 64: vertex v is split
+    std::vector<uint32_t> rank;          // per word: split vertices before it
+    std::vector<uint32_t> extra;         // per split vertex, and one more: fans beyond the first before it
+    std::vector<uint32_t> corner_start;  // per split vertex, and one more: its range in corner_face/corner_fan
+    std::vector<uint32_t> corner_face;   // the faces at the split vertex, ascending (a face twice
+                                         // at a repeated index: its first listing counts)
+    std::vector<uint32_t> corner_fan;    // the fan of each
+    std::vector<glm::vec3> normals;      // fan i of split vertex `slot` at extra[slot] + slot + i
+
+    bool empty() const { return split.empty(); }
+    // Vertex v's index among the split vertices, kNone when it is not split.
+    uint32_t slot(uint32_t v) const {
+        const size_t word = v / 64;
+        const uint64_t bit = uint64_t(1) << (v % 64);
+        if (word >= split.size() || !(split[word] & bit)) return kNone;
+        return rank[word] + uint32_t(std::popcount(split[word] & (bit - 1)));
+    }
+    // The fan of face f at split vertex `slot` (0 when f is not there).
+    uint32_t fan(uint32_t slot, uint32_t f) const;
+    glm::vec3 normal(uint32_t slot, uint32_t f) const { return normals[extra[slot] + slot + fan(slot, f)]; }
+    // The shading normal id of face f's corner at vertex v.
+    uint32_t id(uint32_t v, uint32_t f) const {
+        const size_t word = v / 64;
+        const uint64_t bit = uint64_t(1) << (v % 64);
+        const uint64_t bits = word < split.size() ? split[word] : 0;
+        const uint32_t before = word < rank.size() ? rank[word] + uint32_t(std::popcount(bits & (bit - 1))) : 0;
+        return v + (before < extra.size() ? extra[before] : 0) + ((bits & bit) ? fan(before, f) : 0);
+    }
+    size_t memory_bytes() const;
+    bool operator==(const ShadingSplits&) const = default;
+};
+
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::uvec3> triangles;  // indices into positions, counter-clockwise = front
     std::vector<glm::vec3> normals;     // per vertex; empty = compute (angle-weighted)
-    // Hard edges (auto-smooth, geometry/auto_smooth.hpp): when shading_normal_ids has one entry
-    // per triangle, corner k of triangle f shades with shading_normals[shading_normal_ids[f][k]]
-    // instead of normals[triangles[f][k]]. load_mesh sets them for files without normals;
-    // `normals` stays the smooth field that curvature and the inverted hull read.
-    std::vector<glm::uvec3> shading_normal_ids;
-    std::vector<glm::vec3> shading_normals;
+    // Hard edges (auto-smooth, geometry/auto_smooth.hpp): where they split a vertex's normal,
+    // its corners shade with shading_normal(f, k) instead of normals[triangles[f][k]]
+    // (ShadingSplits). load_mesh sets them for files without normals; `normals` stays the
+    // smooth field that curvature and the inverted hull read.
+    ShadingSplits shading_splits;
     std::vector<glm::vec3> colors;         // per vertex RGB in [0,1] replacing the material's diffuse
                                            // (glTF: COLOR_0 x baseColorFactor, linear); empty = material colour
     std::vector<glm::vec2> uvs;            // per vertex, v = 0 at the image bottom (OBJ); may be empty
@@ -162,7 +203,21 @@ struct Mesh {
     std::vector<std::string> unusable_lights;
     FilePoseNames pose_names;  // what the file's animations, morph targets and expressions are called
 
-    bool has_hard_edges() const { return !triangles.empty() && shading_normal_ids.size() == triangles.size(); }
+    bool has_hard_edges() const {
+        return !triangles.empty() && !shading_splits.empty() && shading_splits.triangle_count == triangles.size() &&
+               shading_splits.rank.size() == positions.size() / 64 + 1;
+    }
+    // With hard edges: the shading normal id of corner k of face f (ShadingSplits), ids below
+    // shading_normal_count(); and its normal. The face must index existing vertices.
+    uint32_t shading_normal_id(size_t f, int k) const { return shading_splits.id(triangles[f][k], uint32_t(f)); }
+    glm::vec3 shading_normal(size_t f, int k) const {
+        const uint32_t v = triangles[f][k];
+        const uint32_t slot = shading_splits.slot(v);
+        return slot == ShadingSplits::kNone ? normals[v] : shading_splits.normal(slot, uint32_t(f));
+    }
+    size_t shading_normal_count() const {
+        return positions.size() + (shading_splits.extra.empty() ? 0 : shading_splits.extra.back());
+    }
     size_t vertex_count() const { return positions.size(); }
     size_t triangle_count() const { return triangles.size(); }
     BoundingBox bounds() const;

@@ -1,16 +1,17 @@
 // Hard edges come from hard_edge_flags (hard_edges.hpp). Fans are then found vertex by vertex
-// over the vertex's own faces (a few, typically six): no mesh-wide edge table or union-find
-// over 3F corners, and the vertices run in parallel. Normal ids are numbered vertex by vertex
-// and, within a vertex, in order of each fan's lowest face, so the result does not depend on
-// the thread count.
+// over the vertex's own faces (a few, typically six), only at the ends of hard edges: no
+// mesh-wide edge table, union-find over 3F corners or per-corner array, and those vertices run
+// in parallel. Fans are numbered within a vertex in order of each fan's lowest face, so the
+// result does not depend on the thread count.
 #include "geometry/auto_smooth.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <memory>
 #include <numeric>
 
 #include "geometry/hard_edge_groups.hpp"
@@ -97,85 +98,91 @@ uint32_t fans_at(uint32_t v, const Mesh& mesh, const std::vector<glm::vec3>& fn,
     return number_fans(fn, star, k, s);
 }
 
-// Whether a hard edge ends at v: else its faces form one fan, found without sorting.
-bool hard_edge_at(uint32_t v, const Mesh& mesh, const std::vector<uint8_t>& hard, const uint32_t* star, size_t k) {
-    for (size_t a = 0; a < k; ++a) {
-        if (!hard[star[a]]) continue;
-        const glm::uvec3 t = mesh.triangles[star[a]];
-        for (int c = 0; c < 3; ++c)
-            if (((hard[star[a]] >> c) & 1u) && (t[c] == v || t[(c + 1) % 3] == v)) return true;
-    }
-    return false;
-}
-
-// Corner k of face f's shading normal id. A vertex of one fan has one id; at a vertex of
-// several, the face's fan is found by a binary search of its star (in face order); a face with
-// a repeated index is listed once per corner there, consecutively, and its corners share the
-// first listing's fan.
-uint32_t corner_id(const Mesh& mesh, const VertexFaces& vf, const std::vector<uint32_t>& fan_start,
-                   const uint32_t* corner_fan, uint32_t f, int k) {
-    const uint32_t v = mesh.triangles[f][k];
-    if (fan_start[v + 1] - fan_start[v] <= 1) return fan_start[v];
-    const uint32_t* at = std::lower_bound(vf.begin(v), vf.end(v), f);
-    return fan_start[v] + corner_fan[at - vf.faces.data()];
-}
-
-// Each fan's unit normal at the vertices of `summed` (those of several fans, and of one without
-// a smooth normal): its faces' weighted normals summed; a fan of degenerate faces has no
-// direction of its own and takes the smooth normal. Every other vertex has one fan, which takes
-// its smooth normal (auto_smooth).
-void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                 const std::vector<uint32_t>& fan_start, const uint32_t* corner_fan,
-                 const std::vector<uint32_t>& summed, NormalWeighting weighting, std::vector<glm::vec3>& normals) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), kGrain), [&](const auto& range) {
-        for (size_t v = range.begin(); v != range.end(); ++v)
-            for (uint32_t id = fan_start[v]; id < fan_start[v + 1]; ++id)
-                normals[id] = v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0.0f, 0.0f, 1.0f);
-    });
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, summed.size(), 256), [&](const auto& range) {
-        std::vector<glm::vec3> sums;
-        for (size_t s = range.begin(); s != range.end(); ++s) {
-            const uint32_t v = summed[s];
-            sums.assign(fan_start[v + 1] - fan_start[v], glm::vec3(0.0f));
-            const bool one_fan = sums.size() == 1;  // corner_fan is not written there
-            int c = -1;
-            for (uint32_t i = vf.offsets[v]; i < vf.offsets[v + 1]; ++i) {
-                const uint32_t f = vf.faces[i];
-                const glm::uvec3 t = mesh.triangles[f];
-                const bool again = i > vf.offsets[v] && vf.faces[i - 1] == f;  // the face's next corner at v
-                c = again ? c + 1 : 0;
-                while (t[c] != v) ++c;
-                sums[one_fan ? 0
-                     : again ? corner_fan[i - 1]
-                             : corner_fan[i]] += corner_weight(mesh, f, c, weighting) * fn[f];
-            }
-            for (size_t j = 0; j < sums.size(); ++j) {
-                const float len = glm::length(sums[j]);
-                if (len > 0.0f && std::isfinite(len))
-                    normals[fan_start[v] + j] = sums[j] / len;
-                else if (v >= mesh.normals.size())
-                    normals[fan_start[v] + j] = glm::vec3(0.0f, 0.0f, 1.0f);
-            }
+// The ends of the hard edges, ascending: the only vertices that may have several fans. Read
+// from the flags face by face; a mesh with few hard edges lists few.
+std::vector<uint32_t> hard_edge_ends(const Mesh& mesh, const std::vector<uint8_t>& hard) {
+    tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, hard.size(), kGrain * 4), [&](const auto& range) {
+        std::vector<uint32_t>& out = found.local();
+        for (size_t f = range.begin(); f != range.end(); ++f) {
+            if (!hard[f]) continue;
+            const glm::uvec3 t = mesh.triangles[f];
+            for (int k = 0; k < 3; ++k)
+                if ((hard[f] >> k) & 1u) {
+                    out.push_back(t[k]);
+                    out.push_back(t[(k + 1) % 3]);
+                }
         }
     });
+    std::vector<uint32_t> ends;
+    for (const std::vector<uint32_t>& part : found) ends.insert(ends.end(), part.begin(), part.end());
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    return ends;
+}
+
+// Each fan's unit normal at split vertex v: its faces' weighted normals summed; a fan of
+// degenerate faces has no direction of its own and takes the smooth normal. `fan` is the fan
+// of each face of v's star (fans_at).
+void fan_normals(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, uint32_t v,
+                 const uint32_t* fan, NormalWeighting weighting, glm::vec3* out, size_t fans) {
+    std::fill_n(out, fans, glm::vec3(0.0f));
+    int c = -1;
+    for (uint32_t i = vf.offsets[v]; i < vf.offsets[v + 1]; ++i) {
+        const uint32_t f = vf.faces[i];
+        const glm::uvec3 t = mesh.triangles[f];
+        // The face's next corner at v: a face with a repeated index is listed once per corner,
+        // consecutively, and its second listing shares the first one's fan.
+        const bool again = i > vf.offsets[v] && vf.faces[i - 1] == f;
+        c = again ? c + 1 : 0;
+        while (t[c] != v) ++c;
+        out[fan[(again ? i - 1 : i) - vf.offsets[v]]] += corner_weight(mesh, f, c, weighting) * fn[f];
+    }
+    for (size_t j = 0; j < fans; ++j) {
+        const float len = glm::length(out[j]);
+        out[j] = len > 0.0f && std::isfinite(len) ? out[j] / len : mesh.normals[v];
+    }
+}
+
+// The split vertices among the hard edges' ends (those of several fans) and their slots: sets
+// their bits and ranks, and per slot the fan count and star size as prefix sums.
+void number_splits(const Mesh& mesh, const VertexFaces& vf, const std::vector<uint32_t>& ends,
+                   const std::vector<uint32_t>& fans, ShadingSplits& s) {
+    s.split.assign(mesh.positions.size() / 64 + 1, 0);
+    for (size_t i = 0; i < ends.size(); ++i)
+        if (fans[i] > 1) s.split[ends[i] / 64] |= uint64_t(1) << (ends[i] % 64);
+    s.rank.resize(s.split.size());
+    uint32_t count = 0;
+    for (size_t word = 0; word < s.split.size(); ++word) {
+        s.rank[word] = count;
+        count += uint32_t(std::popcount(s.split[word]));
+    }
+    s.extra.assign(count + 1, 0);
+    s.corner_start.assign(count + 1, 0);
+    for (size_t i = 0, slot = 0; i < ends.size(); ++i) {
+        if (fans[i] < 2) continue;
+        s.extra[slot + 1] = s.extra[slot] + fans[i] - 1;
+        s.corner_start[slot + 1] = s.corner_start[slot] + (vf.offsets[ends[i] + 1] - vf.offsets[ends[i]]);
+        ++slot;
+    }
 }
 
 }  // namespace
 
 void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting) {
     if (!(angle_degrees < 180.0f) || mesh.triangles.empty()) {
-        mesh.shading_normals.clear();
-        mesh.shading_normal_ids.clear();
+        mesh.shading_splits = ShadingSplits();
         return;
     }
     auto_smooth(mesh, angle_degrees, weighting, face_normals(mesh));
 }
 
 void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting, const std::vector<glm::vec3>& fn) {
-    mesh.shading_normals.clear();
-    mesh.shading_normal_ids.clear();
-    if (!(angle_degrees < 180.0f) || mesh.triangles.empty() || fn.size() != mesh.triangles.size()) return;
+    mesh.shading_splits = ShadingSplits();
     const size_t n = mesh.positions.size();
+    if (!(angle_degrees < 180.0f) || mesh.triangles.empty() || fn.size() != mesh.triangles.size() ||
+        mesh.normals.size() != n)
+        return;
     for (const glm::uvec3& t : mesh.triangles)
         if (t.x >= n || t.y >= n || t.z >= n) return;  // load_mesh validates first; nothing to split here
     // Compared as a dot product of unit normals; the small slack keeps exactly-at-limit edges
@@ -185,44 +192,38 @@ void auto_smooth(Mesh& mesh, float angle_degrees, NormalWeighting weighting, con
     drop_small_hard_edge_groups(mesh, flags.flags);
     const std::vector<uint8_t>& hard = flags.flags;
     const VertexFaces& vf = flags.stars;  // empty at vertices far from a hard edge
-    if (std::all_of(hard.begin(), hard.end(), [](uint8_t h) { return h == 0; })) return;
 
-    // Pass 1: fans per vertex, where a hard edge ends. Pass 2: their ids, numbered after a
-    // prefix sum, and normals. corner_fan is written at vertices of several fans only, so the
-    // pages of the rest are never touched.
-    std::vector<uint32_t> fan_start(n + 1, 0);
-    const std::unique_ptr<uint32_t[]> corner_fan(new uint32_t[vf.faces.size()]);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kGrain), [&](const auto& range) {
+    // Pass 1: the fan count at each end of a hard edge. Pass 2, at those of several fans after
+    // the prefix sums: their faces' fans (found again) and the fans' normals.
+    const std::vector<uint32_t> ends = hard_edge_ends(mesh, hard);
+    std::vector<uint32_t> fans(ends.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, ends.size(), 64), [&](const auto& range) {
         Scratch scratch;
-        for (size_t v = range.begin(); v != range.end(); ++v) {
-            const size_t begin = vf.offsets[v], k = vf.offsets[v + 1] - begin;
-            const uint32_t* star = vf.faces.data() + begin;
-            if (!hard_edge_at(uint32_t(v), mesh, hard, star, k)) {
-                fan_start[v + 1] = flags.referenced[v] ? 1 : 0;
-                continue;
-            }
-            fan_start[v + 1] = fans_at(uint32_t(v), mesh, fn, hard, star, k, scratch);
-            if (fan_start[v + 1] > 1) std::copy(scratch.fan.begin(), scratch.fan.end(), corner_fan.get() + begin);
+        for (size_t i = range.begin(); i != range.end(); ++i)
+            fans[i] = fans_at(ends[i], mesh, fn, hard, vf.begin(ends[i]), vf.end(ends[i]) - vf.begin(ends[i]), scratch);
+    });
+    if (std::all_of(fans.begin(), fans.end(), [](uint32_t c) { return c < 2; })) return;
+    ShadingSplits s;
+    s.triangle_count = mesh.triangles.size();
+    number_splits(mesh, vf, ends, fans, s);
+    const size_t count = s.extra.size() - 1;
+    s.corner_face.resize(s.corner_start.back());
+    s.corner_fan.resize(s.corner_start.back());
+    s.normals.resize(s.extra.back() + count);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, ends.size(), 64), [&](const auto& range) {
+        Scratch scratch;
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+            if (fans[i] < 2) continue;
+            const uint32_t v = ends[i], slot = s.slot(v);
+            const size_t k = vf.end(v) - vf.begin(v);
+            fans_at(v, mesh, fn, hard, vf.begin(v), k, scratch);
+            std::copy(vf.begin(v), vf.end(v), s.corner_face.begin() + s.corner_start[slot]);
+            std::copy(scratch.fan.begin(), scratch.fan.end(), s.corner_fan.begin() + s.corner_start[slot]);
+            fan_normals(mesh, vf, fn, v, scratch.fan.data(), weighting, s.normals.data() + s.extra[slot] + slot,
+                        fans[i]);
         }
     });
-    std::vector<uint32_t> summed;  // vertices of several fans, and of one without a smooth normal
-    bool any_split = false;
-    for (size_t v = 0; v < n; ++v) {
-        any_split |= fan_start[v + 1] > 1;
-        if (fan_start[v + 1] > 1 || (fan_start[v + 1] == 1 && v >= mesh.normals.size())) summed.push_back(uint32_t(v));
-    }
-    if (!any_split) return;
-    std::partial_sum(fan_start.begin(), fan_start.end(), fan_start.begin());
-
-    std::vector<glm::uvec3> ids(mesh.triangles.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, ids.size(), kGrain), [&](const auto& range) {
-        for (size_t f = range.begin(); f != range.end(); ++f)
-            for (int k = 0; k < 3; ++k) ids[f][k] = corner_id(mesh, vf, fan_start, corner_fan.get(), uint32_t(f), k);
-    });
-    std::vector<glm::vec3> normals(fan_start[n]);
-    fan_normals(mesh, vf, fn, fan_start, corner_fan.get(), summed, weighting, normals);
-    mesh.shading_normals = std::move(normals);
-    mesh.shading_normal_ids = std::move(ids);
+    mesh.shading_splits = std::move(s);
 }
 
 }  // namespace inkshade::geometry

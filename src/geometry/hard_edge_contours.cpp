@@ -5,7 +5,9 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "geometry/face_segments.hpp"
@@ -13,50 +15,87 @@
 namespace inkshade::geometry {
 namespace {
 
-using Corner = ShadingCorner;
+// A corner as the view reads it: its vertex, shading normal id (Mesh::shading_normal_id), and
+// where its n·v lies in the view's array (view_dot_normals).
+struct Corner {
+    uint32_t vertex, normal, at;
+};
 
 // Where n·v vanishes on the edge (a, b) of one face: computed from the ends ordered by shading
 // normal id, so the face on the other side of a smooth edge, and the hard-edge piece that ends
 // there, get the same bits.
 glm::vec3 crossing(const Mesh& mesh, const std::vector<float>& g, Corner a, Corner b) {
     if (b.normal < a.normal) std::swap(a, b);
-    const double ga = g[a.normal], gb = g[b.normal];
+    const double ga = g[a.at], gb = g[b.at];
     const double t = ga / (ga - gb);
     const glm::dvec3 pa(mesh.positions[a.vertex]), pb(mesh.positions[b.vertex]);
     return glm::vec3(pa + t * (pb - pa));
 }
 
 bool face_is_valid(const Mesh& mesh, size_t f) {
-    const glm::uvec3 t = mesh.triangles[f], s = mesh.shading_normal_ids[f];
-    const size_t n = mesh.positions.size(), m = mesh.shading_normals.size();
-    return t.x < n && t.y < n && t.z < n && s.x < m && s.y < m && s.z < m;
+    const glm::uvec3 t = mesh.triangles[f];
+    const size_t n = mesh.positions.size();
+    return t.x < n && t.y < n && t.z < n;
 }
 
-Corner corner(const Mesh& mesh, size_t f, int k) {
-    return {mesh.triangles[f][k % 3], mesh.shading_normal_ids[f][k % 3]};
+bool is_split(const ShadingSplits& s, uint32_t v) { return (s.split[v / 64] >> (v % 64)) & 1u; }
+
+// Where face f's n·v at split vertex v lies in the view's array: after the vertices', at its
+// fan's normal (out of line: few corners need it).
+[[gnu::noinline]] uint32_t split_at(const Mesh& mesh, uint32_t v, uint32_t f) {
+    const ShadingSplits& s = mesh.shading_splits;
+    const uint32_t slot = s.slot(v);
+    return uint32_t(mesh.positions.size()) + s.extra[slot] + slot + s.fan(slot, f);
 }
 
-// n·v per shading normal, at the vertex it belongs to.
-std::vector<float> shading_view_dot_normal(const Mesh& mesh, const HardEdgeTable& table, const Camera& camera) {
+Corner corner_at(const Mesh& mesh, uint32_t f, uint32_t v) {
+    return {v, mesh.shading_splits.id(v, f), is_split(mesh.shading_splits, v) ? split_at(mesh, v, f) : v};
+}
+
+// n·v of each vertex's smooth normal, then of each fan normal of the split vertices, after
+// them (ShadingSplits::normals): a corner off a split vertex reads its vertex's entry, as the
+// smooth contour does, so a view costs what it costs without hard edges. A split vertex's own
+// entry is NaN (n·v is finite elsewhere): one test of a face's three values finds its corners
+// at split vertices.
+std::vector<float> view_dot_normals(const Mesh& mesh, const Camera& camera) {
     const ViewVector view(camera);
-    std::vector<float> g(table.owner.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.size(), kFaceGrain), [&](const auto& range) {
-        for (size_t i = range.begin(); i != range.end(); ++i) {
-            const double d = glm::dot(glm::dvec3(mesh.shading_normals[i]), view.at(mesh.positions[table.owner[i]]));
-            g[i] = std::isfinite(d) ? float(d) : 0.0f;
+    const ShadingSplits& s = mesh.shading_splits;
+    const size_t n = mesh.positions.size();
+    std::vector<float> g(n + s.normals.size());
+    auto dot = [&](const glm::vec3& normal, size_t v) {
+        const double d = glm::dot(glm::dvec3(normal), view.at(mesh.positions[v]));
+        return std::isfinite(d) ? float(d) : 0.0f;
+    };
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, s.split.size(), kFaceGrain / 64), [&](const auto& range) {
+        for (size_t word = range.begin(); word != range.end(); ++word) {
+            for (size_t v = word * 64; v < std::min(n, word * 64 + 64); ++v) g[v] = dot(mesh.normals[v], v);
+            uint32_t slot = s.rank[word];
+            for (uint64_t bits = s.split[word]; bits != 0; bits &= bits - 1, ++slot) {
+                const size_t v = word * 64 + size_t(std::countr_zero(bits));
+                g[v] = std::numeric_limits<float>::quiet_NaN();
+                for (uint32_t i = s.extra[slot] + slot; i < s.extra[slot + 1] + slot + 1; ++i)
+                    g[n + i] = dot(s.normals[i], v);
+            }
         }
     });
     return g;
 }
 
 std::vector<LineSegment> face_crossings(const Mesh& mesh, const std::vector<float>& g) {
+    const ShadingSplits& s = mesh.shading_splits;
     return collect_face_segments(mesh.triangles.size(), [&](size_t f, std::vector<LineSegment>& out) {
         if (!face_is_valid(mesh, f)) return;
-        const glm::uvec3 s = mesh.shading_normal_ids[f];
-        const bool pos[3] = {g[s.x] >= 0.0f, g[s.y] >= 0.0f, g[s.z] >= 0.0f};
+        const glm::uvec3 t = mesh.triangles[f];
+        uint32_t at[3] = {t.x, t.y, t.z};
+        float value[3] = {g[t.x], g[t.y], g[t.z]};
+        if (std::isnan(value[0] + value[1] + value[2]))  // a corner at a split vertex
+            for (int k = 0; k < 3; ++k)
+                if (std::isnan(value[k])) value[k] = g[at[k] = split_at(mesh, t[k], uint32_t(f))];
+        const bool pos[3] = {value[0] >= 0.0f, value[1] >= 0.0f, value[2] >= 0.0f};
         if (pos[0] == pos[1] && pos[1] == pos[2]) return;
         const int k = pos[1] == pos[2] ? 0 : (pos[0] == pos[2] ? 1 : 2);  // the odd one out
-        const Corner ck = corner(mesh, f, k), cnext = corner(mesh, f, k + 1), cprev = corner(mesh, f, k + 2);
+        auto c = [&](int i) { return Corner{t[i % 3], s.id(t[i % 3], uint32_t(f)), at[i % 3]}; };
+        const Corner ck = c(k), cnext = c(k + 1), cprev = c(k + 2);
         if (ck.vertex == cnext.vertex || ck.vertex == cprev.vertex) return;  // repeated index
         LineSegment seg;
         seg.face = uint32_t(f);
@@ -80,10 +119,10 @@ void hard_edge_pieces(const Mesh& mesh, const std::vector<float>& g, const HalfE
                       std::vector<LineSegment>& out) {
     const uint32_t i = std::min(A.from.vertex, A.to.vertex), j = std::max(A.from.vertex, A.to.vertex);
     // Each face's corners at i and j.
-    auto at = [](const HalfEdge& h, uint32_t v) { return h.from.vertex == v ? h.from : h.to; };
-    const Corner ai = at(A, i), aj = at(A, j), bi = at(B, i), bj = at(B, j);
+    auto end = [&](const HalfEdge& h, uint32_t v) { return corner_at(mesh, h.face, v); };
+    const Corner ai = end(A, i), aj = end(A, j), bi = end(B, i), bj = end(B, j);
     if (ai.normal == bi.normal && aj.normal == bj.normal) return;  // smooth: face crossings cover it
-    const double gai = g[ai.normal], gaj = g[aj.normal], gbi = g[bi.normal], gbj = g[bj.normal];
+    const double gai = g[ai.at], gaj = g[aj.at], gbi = g[bi.at], gbj = g[bj.at];
 
     struct Stop {
         double t;
@@ -120,35 +159,25 @@ void hard_edge_pieces(const Mesh& mesh, const std::vector<float>& g, const HalfE
     }
 }
 
-// Vertices with more than one shading normal: a hard edge has one at an end at least.
-std::vector<uint8_t> split_vertices(const Mesh& mesh, HardEdgeTable& table) {
-    table.owner.assign(mesh.shading_normals.size(), 0);
-    std::vector<uint32_t> first(mesh.positions.size(), ~0u);
-    std::vector<uint8_t> split(mesh.positions.size(), 0);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-        if (!face_is_valid(mesh, f)) continue;
-        for (int k = 0; k < 3; ++k) {
-            const Corner c = corner(mesh, f, k);
-            table.owner[c.normal] = c.vertex;
-            if (first[c.vertex] == ~0u) first[c.vertex] = c.normal;
-            split[c.vertex] |= first[c.vertex] != c.normal;
-        }
-    }
-    return split;
-}
-
 }  // namespace
 
 HardEdgeTable hard_edge_table(const Mesh& mesh) {
+    // A hard edge has a split vertex (one of several shading normals) at an end at least: the
+    // faces at split vertices are listed in ShadingSplits::corner_face.
     HardEdgeTable table;
-    const std::vector<uint8_t> split = split_vertices(mesh, table);
+    const ShadingSplits& s = mesh.shading_splits;
     std::vector<HalfEdge> half;
-    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-        if (!face_is_valid(mesh, f)) continue;
+    std::vector<uint32_t> faces = s.corner_face;
+    tbb::parallel_sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    for (uint32_t f : faces) {
+        if (f >= mesh.triangles.size() || !face_is_valid(mesh, f)) continue;
+        const glm::uvec3 t = mesh.triangles[f];
         for (int k = 0; k < 3; ++k) {
-            const Corner from = corner(mesh, f, k), to = corner(mesh, f, k + 1);
-            if (from.vertex != to.vertex && (split[from.vertex] || split[to.vertex]))
-                half.push_back({edge_key(from.vertex, to.vertex), uint32_t(f), from, to});
+            const ShadingCorner from{t[k], mesh.shading_normal_id(f, k)},
+                to{t[(k + 1) % 3], mesh.shading_normal_id(f, (k + 1) % 3)};
+            if (from.vertex != to.vertex && (is_split(s, from.vertex) || is_split(s, to.vertex)))
+                half.push_back({edge_key(from.vertex, to.vertex), f, from, to});
         }
     }
     tbb::parallel_sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
@@ -172,7 +201,7 @@ HardEdgeTable hard_edge_table(const Mesh& mesh) {
 
 std::vector<LineSegment> extract_hard_edge_contours(const Mesh& mesh, const HardEdgeTable& table,
                                                     const Camera& camera) {
-    const std::vector<float> g = shading_view_dot_normal(mesh, table, camera);
+    const std::vector<float> g = view_dot_normals(mesh, camera);
     std::vector<LineSegment> out = face_crossings(mesh, g);
     const std::vector<LineSegment> edges =
         collect_per_face<LineSegment>(table.edges.size(), [&](size_t e, std::vector<LineSegment>& found) {

@@ -23,15 +23,14 @@ struct HardEdgeSide {
     ShadingCorner from, to;
 };
 
-// What the contour needs of a mesh's hard edges, whatever the view: the vertex of each shading
-// normal, and the hard edges (edges of exactly two faces whose shading normals differ at an
-// end) with their two sides, sorted by (key, face). Built once per mesh in O(F) plus a sort of
-// the edges at vertices with more than one shading normal; its size grows with the hard edges.
+// What the contour needs of a mesh's hard edges, whatever the view: the hard edges (edges of
+// exactly two faces whose shading normals differ at an end) with their two sides, sorted by
+// (key, face). Built once per mesh from the faces at split vertices (ShadingSplits); its size
+// grows with the hard edges.
 struct HardEdgeTable {
-    std::vector<uint32_t> owner;  // per shading normal
     std::vector<std::array<HardEdgeSide, 2>> edges;
 
-    size_t memory_bytes() const { return owner.size() * sizeof(uint32_t) + edges.size() * sizeof(edges[0]); }
+    size_t memory_bytes() const { return edges.size() * sizeof(edges[0]); }
 };
 HardEdgeTable hard_edge_table(const Mesh& mesh);
 

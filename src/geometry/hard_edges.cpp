@@ -17,8 +17,10 @@
 namespace inkshade::geometry {
 namespace {
 
-constexpr size_t kGrain = 16384;                    // faces or vertices per TBB task
-constexpr uint8_t kHard = 0x07, kCandidate = 0x38;  // bit k: hard; bit k + 3: passed the first test
+constexpr size_t kGrain = 16384;  // faces or vertices per TBB task
+// Bit k: hard; bit k + 3: passed the first test; bit 6: the first test sees the face (cleared
+// at the end: the flags' own bytes, so no array of their own).
+constexpr uint8_t kHard = 0x07, kCandidate = 0x38, kSeen = 0x40;
 
 template <class Body>
 void for_each_index(size_t count, Body&& body) {
@@ -141,52 +143,62 @@ uint64_t mix(uint64_t x) {
     return x ^ (x >> 31);
 }
 
-// Which faces the first test must see (1) and which not (0). Two faces that share a vertex
-// and whose normals each lie within half the angle of its normal meet at no more than the
-// angle (the triangle inequality of angles), so an edge between two such "calm" faces is no
-// candidate: only edges at a corner of a face that is not calm may be. Edges of three or more
-// faces: around a vertex where every edge has two faces, wound alike, each neighbour is once the
-// next corner and once the previous one of the faces there, so a hash sum of next minus
-// previous corners vanishes; at a border, a non-manifold edge or a winding flip it does not
-// (short of a hash collision, or an edge of four faces two each way among calm faces). Faces
-// at such vertices are seen too. Without one unit normal per vertex every face is seen. The
-// sums are scattered face by face (no star table yet): a face with a repeated index adds, at
-// each corner there, what its first corner there adds, as a walk of the star would.
+// Which faces the first test must see: marked kSeen in `flags`; returns the vertices of those
+// faces (1), whose stars it reads. Two faces that share a vertex and whose normals each lie
+// within half the angle of its normal meet at no more than the angle (the triangle inequality
+// of angles), so an edge between two such "calm" faces is no candidate: only edges at a corner
+// of a face that is not calm may be. Edges of three or more faces: around a vertex where every
+// edge has two faces, wound alike, each neighbour is once the next corner and once the previous
+// one of the faces there, so a hash sum of next minus previous corners vanishes; at a border, a
+// non-manifold edge or a winding flip it does not (short of a hash collision, or an edge of four
+// faces two each way among calm faces). Faces at such vertices are seen too. Without one unit
+// normal per vertex every face is seen. The sums are scattered face by face (no star table
+// yet; for_vertex_ranges): a face with a repeated index adds, at each corner there, what its
+// first corner there adds, as a walk of the star would. One array per vertex serves first for
+// the vertices near a restless face and then for the answer, so its pages are touched once.
 std::vector<uint8_t> faces_to_test(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit,
-                                   std::vector<uint8_t>& referenced) {
+                                   std::vector<uint8_t>& flags) {
     const size_t faces = mesh.triangles.size(), n = mesh.positions.size();
-    referenced.assign(n, 0);
-    for (const glm::uvec3& t : mesh.triangles) referenced[t.x] = referenced[t.y] = referenced[t.z] = 1;
     const float half = 0.5f * std::acos(std::clamp(cos_limit, -1.0f, 1.0f)) - 1e-3f;  // margin for rounding
-    if (mesh.normals.size() != n || !(half > 0.0f)) return std::vector<uint8_t>(faces, 1);
-    const float cos_half = std::cos(half);
-    std::vector<uint8_t> restless(faces);  // not calm
-    for_each_index(faces, [&](size_t f) {
-        const glm::uvec3 t = mesh.triangles[f];
-        bool calm = fn[f] != glm::vec3(0.0f);
-        for (int k = 0; k < 3 && calm; ++k) {
-            const glm::vec3 nv = mesh.normals[t[k]];
-            calm = glm::dot(fn[f], nv) >= cos_half * glm::length(nv);
-        }
-        restless[f] = !calm;
-    });
-    std::vector<uint64_t> turn(n, 0);  // Σ h(next) − h(previous), wrapping
-    std::vector<uint8_t> busy(n, 0);   // restless star, then or turn ≠ 0
-    for (size_t f = 0; f < faces; ++f) {
-        const glm::uvec3 t = mesh.triangles[f];
-        for (int c = 0; c < 3; ++c) {
-            const uint32_t v = t[c];
-            const int k = t.x == v ? 0 : (t.y == v ? 1 : 2);
-            turn[v] += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
-            busy[v] |= restless[f];
-        }
+    std::vector<uint8_t> busy(n, 0);  // restless star, then or turn ≠ 0; then the answer
+    const bool all = mesh.normals.size() != n || !(half > 0.0f);
+    if (!all) {
+        const float cos_half = std::cos(half);
+        for_each_index(faces, [&](size_t f) {  // kSeen here: not calm
+            const glm::uvec3 t = mesh.triangles[f];
+            bool calm = fn[f] != glm::vec3(0.0f);
+            for (int k = 0; k < 3 && calm; ++k) {
+                const glm::vec3 nv = mesh.normals[t[k]];
+                calm = glm::dot(fn[f], nv) >= cos_half * glm::length(nv);
+            }
+            flags[f] = calm ? 0 : kSeen;
+        });
+        std::vector<uint64_t> turn(n, 0);  // Σ h(next) − h(previous), wrapping
+        for_vertex_ranges(n, [&](size_t lo, size_t hi) {
+            for (size_t f = 0; f < faces; ++f) {
+                const glm::uvec3 t = mesh.triangles[f];
+                for (int c = 0; c < 3; ++c) {
+                    const uint32_t v = t[c];
+                    if (v < lo || v >= hi) continue;
+                    const int k = t.x == v ? 0 : (t.y == v ? 1 : 2);
+                    turn[v] += mix(t[(k + 1) % 3]) - mix(t[(k + 2) % 3]);
+                    busy[v] |= flags[f];
+                }
+            }
+            for (size_t v = lo; v < hi; ++v) busy[v] |= uint8_t(turn[v] != 0);
+        });
     }
-    for_each_index(n, [&](size_t v) { busy[v] |= uint8_t(turn[v] != 0); });
     for_each_index(faces, [&](size_t f) {
         const glm::uvec3 t = mesh.triangles[f];
-        restless[f] = busy[t.x] | busy[t.y] | busy[t.z];
+        flags[f] = all || (busy[t.x] | busy[t.y] | busy[t.z]) ? kSeen : 0;
     });
-    return restless;
+    std::fill(busy.begin(), busy.end(), uint8_t(0));
+    for_each_index(faces, [&](size_t f) {
+        if (!flags[f]) return;
+        for (int k = 0; k < 3; ++k)
+            std::atomic_ref<uint8_t>(busy[mesh.triangles[f][k]]).store(1, std::memory_order_relaxed);
+    });
+    return busy;
 }
 
 // The first test of the edges from vertex v to higher vertices u, each once: its faces (those
@@ -195,7 +207,7 @@ std::vector<uint8_t> faces_to_test(const Mesh& mesh, const std::vector<glm::vec3
 // with an atomic or (a face's edges are decided at up to three vertices); returns whether any
 // is a candidate.
 bool first_test_at(uint32_t v, const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn,
-                   float cos_limit, const std::vector<uint8_t>& seen, std::vector<uint8_t>& flags) {
+                   float cos_limit, std::vector<uint8_t>& flags) {
     constexpr size_t kMax = 32;  // the faces of a larger star (a fan's centre) are read as needed
     const uint32_t* star = vf.begin(v);
     const size_t k = size_t(vf.end(v) - star);
@@ -229,7 +241,7 @@ bool first_test_at(uint32_t v, const Mesh& mesh, const VertexFaces& vf, const st
             if (!bit) continue;
             for (uint32_t m = 0; m < std::min<uint32_t>(count, kMax); ++m) {
                 const uint32_t g = star[members[m]];
-                if (!seen[g]) continue;
+                if (!(std::atomic_ref<uint8_t>(flags[g]).load(std::memory_order_relaxed) & kSeen)) continue;
                 const glm::uvec3 s = tri(members[m]);
                 uint8_t bits = 0;
                 for (int e = 0; e < 3; ++e) {
@@ -249,54 +261,36 @@ bool first_test_at(uint32_t v, const Mesh& mesh, const VertexFaces& vf, const st
 // faces_to_test picks, edge by edge at its lower vertex (first_test_at). Returns whether any
 // edge is a candidate.
 bool first_test(const Mesh& mesh, const std::vector<glm::vec3>& fn, float cos_limit, HardEdgeFlags& out) {
-    const std::vector<uint8_t> seen = faces_to_test(mesh, fn, cos_limit, out.referenced);
-    std::vector<uint8_t> listed(mesh.positions.size(), 0);  // the corners of seen faces
-    for (size_t f = 0; f < seen.size(); ++f)
-        if (seen[f]) listed[mesh.triangles[f].x] = listed[mesh.triangles[f].y] = listed[mesh.triangles[f].z] = 1;
+    const std::vector<uint8_t> listed = faces_to_test(mesh, fn, cos_limit, out.flags);
     out.stars = vertex_faces(mesh, listed);
     std::atomic<bool> any{false};
     for_each_index(mesh.positions.size(), [&](size_t v) {
-        if (listed[v] && first_test_at(uint32_t(v), mesh, out.stars, fn, cos_limit, seen, out.flags))
+        if (listed[v] && first_test_at(uint32_t(v), mesh, out.stars, fn, cos_limit, out.flags))
             any.store(true, std::memory_order_relaxed);
     });
     return any.load();
 }
 
 // Second test: a candidate edge is hard when its two sides stand apart by more than the angle
-// plus their scatter. Decided once per edge, by its lower face; clears the candidate bits.
+// plus their scatter. Decided once per edge, by its lower face, which sets the hard bit of both
+// faces with an atomic or (the candidate bits it reads do not change meanwhile).
 void second_test(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& fn, float cos_limit,
                  std::vector<uint8_t>& flags) {
-    const size_t faces = mesh.triangles.size();
-    std::vector<uint8_t> decided(faces, 0);  // bit k: hard, for edges whose lower face is f
-    for_each_index(faces, [&](size_t f) {
-        if (!(flags[f] & kCandidate)) return;
+    for_each_index(mesh.triangles.size(), [&](size_t f) {
+        const uint8_t bits = std::atomic_ref<uint8_t>(flags[f]).load(std::memory_order_relaxed);
+        if (!(bits & kCandidate)) return;
         const glm::uvec3 t = mesh.triangles[f];
         for (int k = 0; k < 3; ++k) {
-            if (!(flags[f] & (8u << k))) continue;
-            const EdgeMate mate = edge_mate(mesh, vf, uint32_t(f), t[k], t[(k + 1) % 3]);
-            if (f < mate.face &&
-                sides_stand_apart(mesh, vf, fn, uint32_t(f), mate.face, t[k], t[(k + 1) % 3], cos_limit))
-                decided[f] |= uint8_t(1u << k);
-        }
-    });
-    for_each_index(faces, [&](size_t f) {
-        if (!(flags[f] & kCandidate)) return;
-        const glm::uvec3 t = mesh.triangles[f];
-        uint8_t bits = flags[f] & kHard;
-        for (int k = 0; k < 3; ++k) {
-            if (!(flags[f] & (8u << k))) continue;
+            if (!(bits & (8u << k))) continue;
             const uint32_t v = t[k], w = t[(k + 1) % 3];
             const EdgeMate mate = edge_mate(mesh, vf, uint32_t(f), v, w);
-            if (f < mate.face) {
-                bits |= decided[f] & (1u << k);
-                continue;
-            }
+            if (f > mate.face || !sides_stand_apart(mesh, vf, fn, uint32_t(f), mate.face, v, w, cos_limit)) continue;
+            std::atomic_ref<uint8_t>(flags[f]).fetch_or(uint8_t(1u << k), std::memory_order_relaxed);
             const glm::uvec3 u = mesh.triangles[mate.face];
             for (int j = 0; j < 3; ++j)
                 if ((u[j] == w && u[(j + 1) % 3] == v) || (u[j] == v && u[(j + 1) % 3] == w))
-                    bits |= uint8_t(((decided[mate.face] >> j) & 1u) << k);
+                    std::atomic_ref<uint8_t>(flags[mate.face]).fetch_or(uint8_t(1u << j), std::memory_order_relaxed);
         }
-        flags[f] = bits;
     });
 }
 
@@ -306,6 +300,7 @@ HardEdgeFlags hard_edge_flags(const Mesh& mesh, const std::vector<glm::vec3>& fn
     HardEdgeFlags out;
     out.flags.assign(mesh.triangles.size(), 0);
     if (first_test(mesh, fn, cos_limit, out)) second_test(mesh, out.stars, fn, cos_limit, out.flags);
+    for_each_index(out.flags.size(), [&](size_t f) { out.flags[f] &= kHard; });
     return out;
 }
 

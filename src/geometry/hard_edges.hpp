@@ -22,9 +22,8 @@ struct HardEdgeFlags {
     std::vector<uint8_t> flags;
     // The stars of the vertices of the faces the first test saw, the only ones a hard edge can
     // touch; the other vertices' stars are empty (vertex_faces), so the table grows with the
-    // faces near hard edges, not with the mesh. referenced[v]: vertex v has a face.
+    // faces near hard edges, not with the mesh.
     VertexFaces stars;
-    std::vector<uint8_t> referenced;
 };
 
 // A side's normal is the area-weighted mean normal of the faces with a corner at a corner of

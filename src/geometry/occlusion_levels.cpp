@@ -200,7 +200,7 @@ bool smoothly_touch(const OcclusionContext& ctx, uint32_t g, uint32_t f) {
     const bool hard = ctx.mesh->has_hard_edges();
     for (int k = 0; k < 3; ++k)
         for (int m = 0; m < 3; ++m)
-            if (a[k] == b[m] && (!hard || ctx.mesh->shading_normal_ids[g][k] == ctx.mesh->shading_normal_ids[f][m]))
+            if (a[k] == b[m] && (!hard || ctx.mesh->shading_normal_id(g, k) == ctx.mesh->shading_normal_id(f, m)))
                 return true;
     return false;
 }

@@ -31,10 +31,9 @@ bool is_pierce_key(uint64_t key) { return uint32_t(key >> 32) == 0xfffffffcu; }
 // A segment along a mesh edge (crease, border, silhouette edge): vertex keys at both ends.
 bool along_edge(const LineSegment& s) { return is_vertex_key(s.edge_a) && is_vertex_key(s.edge_b); }
 
-// A face that exists and indexes only existing vertices (and shading normals, with hard edges).
+// A face that exists and indexes only existing vertices (then its shading normals exist too).
 bool valid_face(const Mesh& mesh, uint32_t f) {
-    if (f >= mesh.triangles.size() || !in_range(mesh.triangles[f], mesh.positions.size())) return false;
-    return !mesh.has_hard_edges() || in_range(mesh.shading_normal_ids[f], mesh.shading_normals.size());
+    return f < mesh.triangles.size() && in_range(mesh.triangles[f], mesh.positions.size());
 }
 
 // What the points strictly inside a segment lie on.
@@ -62,7 +61,8 @@ PointOn end_on(const Mesh& mesh, const LineSegment& s, uint64_t key) {
             // a mesh with hard edges by the corners' shading normals (hard_edge_contours.hpp).
             const glm::uvec3 t = mesh.triangles[on.face];
             if (!(has_vertex(t, a) && has_vertex(t, b)) && mesh.has_hard_edges()) {
-                const glm::uvec3 n = mesh.shading_normal_ids[on.face];
+                const glm::uvec3 n(mesh.shading_normal_id(on.face, 0), mesh.shading_normal_id(on.face, 1),
+                                   mesh.shading_normal_id(on.face, 2));
                 uint32_t found[2], k_found = 0;
                 for (int k = 0; k < 3; ++k)
                     if ((n[k] == a || n[k] == b) && k_found < 2) found[k_found++] = t[k];
@@ -85,8 +85,7 @@ glm::vec3 interpolated_normal(const Mesh& mesh, uint32_t f, const glm::vec3& poi
     const glm::uvec3 t = mesh.triangles[f];
     glm::dvec3 n[3];
     for (int k = 0; k < 3; ++k)
-        n[k] = glm::dvec3(mesh.has_hard_edges() ? mesh.shading_normals[mesh.shading_normal_ids[f][k]]
-                                                : mesh.normals[t[k]]);
+        n[k] = glm::dvec3(mesh.has_hard_edges() ? mesh.shading_normal(f, k) : mesh.normals[t[k]]);
     const glm::dvec3 P0(mesh.positions[t.x]), e1 = glm::dvec3(mesh.positions[t.y]) - P0,
                                               e2 = glm::dvec3(mesh.positions[t.z]) - P0;
     // Barycentric coordinates from the Gram matrix of (e1, e2).

@@ -41,13 +41,12 @@ bool build_vertex_stream(const Mesh& mesh, std::vector<GpuVertex>& vertices, std
         if (per_face) color = mat < mesh.materials.size() ? mesh.materials[mat].diffuse : glm::vec3(1.0f);
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.triangles[f][k];
-            const uint32_t shading = hard_edges ? mesh.shading_normal_ids[f][k] : v;
+            const uint32_t shading = hard_edges ? mesh.shading_normal_id(f, k) : v;
             const uint64_t key = (uint64_t(mat) << 32) | shading;
             auto [it, inserted] = remap.try_emplace(key, uint32_t(vertices.size()));
             if (inserted) {
                 if (!per_face && mesh.colors.size() == n) color = mesh.colors[v];
-                vertices.push_back(
-                    {mesh.positions[v], hard_edges ? mesh.shading_normals[shading] : normal_of(v), color});
+                vertices.push_back({mesh.positions[v], hard_edges ? mesh.shading_normal(f, k) : normal_of(v), color});
                 source.push_back(v);
             }
             triangles[f][k] = it->second;

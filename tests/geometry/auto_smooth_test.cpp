@@ -13,7 +13,7 @@
 namespace inkshade::geometry {
 namespace {
 
-glm::vec3 shading_normal(const Mesh& m, size_t f, int k) { return m.shading_normals[m.shading_normal_ids[f][k]]; }
+glm::vec3 shading_normal(const Mesh& m, size_t f, int k) { return m.shading_normal(f, k); }
 
 TEST(AutoSmooth, CubeCornersTakeTheirFaceNormal) {
     Mesh cube = test::cube();
@@ -21,7 +21,7 @@ TEST(AutoSmooth, CubeCornersTakeTheirFaceNormal) {
     const std::vector<glm::vec3> smooth = cube.normals;
     auto_smooth(cube, 30.0f);
     ASSERT_TRUE(cube.has_hard_edges());
-    EXPECT_EQ(cube.shading_normals.size(), 24u);  // three faces (fans) at each of 8 corners
+    EXPECT_EQ(cube.shading_normal_count(), 24u);  // three faces (fans) at each of 8 corners
     const std::vector<glm::vec3> fn = face_normals(cube);
     for (size_t f = 0; f < cube.triangles.size(); ++f)
         for (int k = 0; k < 3; ++k) EXPECT_LT(glm::length(shading_normal(cube, f, k) - fn[f]), 1e-6f) << f << " " << k;
@@ -33,7 +33,7 @@ TEST(AutoSmooth, AngleOf180OrNoHardEdgeLeavesNothing) {
     ensure_vertex_normals(cube);
     auto_smooth(cube, 180.0f);
     EXPECT_FALSE(cube.has_hard_edges());
-    EXPECT_TRUE(cube.shading_normals.empty());
+    EXPECT_TRUE(cube.shading_splits.empty());
     auto_smooth(cube, 91.0f);  // the cube's edges are 90°: all smooth
     EXPECT_FALSE(cube.has_hard_edges());
     auto_smooth(cube, 89.0f);
@@ -59,7 +59,7 @@ TEST(AutoSmooth, CylinderSideStaysSmoothAndCapsFlat) {
         }
     }
     // Rim vertices have two fans (side, cap), cap centres and nothing else one.
-    EXPECT_EQ(m.shading_normals.size(), 2u * 64u + 2u);
+    EXPECT_EQ(m.shading_normal_count(), 2u * 64u + 2u);
 }
 
 // Area weighting (three.js's convention) inside a fan: an uneven fan of five faces around a
@@ -97,7 +97,7 @@ TEST(AutoSmooth, NonManifoldEdgesAreHardAndDegenerateFacesTakeTheSmoothNormal) {
     std::set<uint32_t> at_vertex0;
     for (size_t f = 0; f < 3; ++f)
         for (int k = 0; k < 3; ++k)
-            if (m.triangles[f][k] == 0) at_vertex0.insert(m.shading_normal_ids[f][k]);
+            if (m.triangles[f][k] == 0) at_vertex0.insert(m.shading_normal_id(f, k));
     EXPECT_EQ(at_vertex0.size(), 3u);  // no face joins another across the three-face edge
     for (size_t f = 3; f < 5; ++f)
         for (int k = 0; k < 3; ++k) {
@@ -117,6 +117,43 @@ TEST(AutoSmooth, MeshedCubeKeepsAllTwelveEdgesHard) {
     const std::vector<glm::vec3> fn = face_normals(cube);
     for (size_t f = 0; f < cube.triangles.size(); ++f)
         for (int k = 0; k < 3; ++k) EXPECT_LT(glm::length(shading_normal(cube, f, k) - fn[f]), 1e-6f) << f << " " << k;
+}
+
+// The split is stored where a hard edge ends, not per corner: on a meshed cube the shading
+// splits grow with its 12 n crease edges (4x from n = 32 to 128, where the faces grow 16x) and
+// at n = 128 take less than a byte per triangle (per-corner ids alone took twelve). Every
+// corner off the creases shades with its smooth normal, and the ids number the fans without a
+// gap.
+TEST(AutoSmooth, SplitsGrowWithTheHardEdgesNotTheMesh) {
+    size_t stored[2] = {0, 0};
+    const int sizes[2] = {32, 128};
+    for (int i = 0; i < 2; ++i) {
+        Mesh cube = test::meshed_cube(sizes[i]);
+        ensure_vertex_normals(cube);
+        auto_smooth(cube, 30.0f);
+        ASSERT_TRUE(cube.has_hard_edges());
+        const ShadingSplits& s = cube.shading_splits;
+        stored[i] = s.corner_face.size() + s.normals.size();
+        if (i == 1) {
+            EXPECT_LT(s.memory_bytes(), cube.triangle_count());
+        }
+        size_t split = 0;
+        for (uint32_t v = 0; v < cube.vertex_count(); ++v) split += s.slot(v) != ShadingSplits::kNone;
+        EXPECT_EQ(split, 12u * size_t(sizes[i] - 1) + 8u);  // the crease vertices, corners included
+        std::set<uint32_t> ids;                             // every id below the count is some corner's
+        for (size_t f = 0; f < cube.triangle_count(); ++f)
+            for (int k = 0; k < 3; ++k) {
+                ids.insert(cube.shading_normal_id(f, k));
+                const uint32_t v = cube.triangles[f][k];
+                if (s.slot(v) == ShadingSplits::kNone) {
+                    EXPECT_EQ(cube.shading_normal(f, k), cube.normals[v]);
+                }
+            }
+        EXPECT_EQ(ids.size(), cube.shading_normal_count());
+        EXPECT_LT(*ids.rbegin(), cube.shading_normal_count());
+    }
+    EXPECT_LT(stored[1], 5 * stored[0]);
+    EXPECT_GT(stored[1], 3 * stored[0]);
 }
 
 // A dense scan whose noise alone tilts neighbouring faces past 30° at one edge in twelve:
@@ -146,8 +183,7 @@ TEST(AutoSmooth, IsDeterministic) {
     ensure_vertex_normals(b);
     auto_smooth(a, 30.0f);
     auto_smooth(b, 30.0f);
-    EXPECT_EQ(a.shading_normal_ids, b.shading_normal_ids);
-    EXPECT_EQ(a.shading_normals, b.shading_normals);
+    EXPECT_EQ(a.shading_splits, b.shading_splits);
 }
 
 }  // namespace

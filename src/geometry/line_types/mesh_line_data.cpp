@@ -53,8 +53,7 @@ std::shared_ptr<const Mesh> line_mesh(std::vector<glm::vec3> positions, const Me
     reserve_embree_padding(m->positions);
     m->triangles = mesh.triangles;
     m->normals = mesh.normals;
-    m->shading_normal_ids = mesh.shading_normal_ids;
-    m->shading_normals = mesh.shading_normals;
+    m->shading_splits = mesh.shading_splits;
     m->face_materials = mesh.face_materials;
     take_selection_fields(*m, mesh);
     m->line_segments = mesh.line_segments;
@@ -78,8 +77,7 @@ MeshLineData::MeshLineData(Mesh&& mesh) {
     lines.positions = std::move(mesh.positions);
     lines.triangles = std::move(mesh.triangles);
     lines.normals = std::move(mesh.normals);
-    lines.shading_normal_ids = std::move(mesh.shading_normal_ids);
-    lines.shading_normals = std::move(mesh.shading_normals);
+    lines.shading_splits = std::move(mesh.shading_splits);
     lines.face_materials = std::move(mesh.face_materials);  // material-boundary
     take_selection_fields(lines, std::move(mesh));
     lines.line_segments = std::move(mesh.line_segments);    // loose
