@@ -3,7 +3,8 @@
 // 1 M-triangle stand-ins written once into /tmp as binary PLY without normals and removed at
 // exit: 0, the noisy torus knot (noisy_knot.hpp: its noise tilts no edge past 30°); 1, the
 // noisy sphere of the tests (6 × 289² quads, radial noise of ±0.2 edge lengths: 8 % of its
-// edges past 30°); 2, the meshed cube of the tests (a CAD part, 12 × 289 hard edges).
+// edges past 30°); 2, the meshed cube of the tests (a CAD part, 12 × 289 hard edges). With
+// INKSHADE_BENCH_SCAN=FILE (noisy_knot.hpp) stand-in 0 is that file's mesh instead.
 //   inkshade_bench --benchmark_filter='AutoSmooth'
 // Args: (mesh, smooth angle in degrees).
 #include <benchmark/benchmark.h>
