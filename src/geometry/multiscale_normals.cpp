@@ -45,31 +45,47 @@ struct Source {
     double area = 0.0;
 };
 
-// The sources sorted by their cell of side `reach` (in source order within a cell, so each
-// vertex sums them in the order it did when each cell held a list), and each cell's range.
-struct Grid {
-    Grid(const std::vector<Source>& sources, double reach) {
-        std::vector<uint32_t> cell_of_source(sources.size(), kNone);
-        std::vector<Cell> cells;
-        for (uint32_t k = 0; k < sources.size(); ++k) {
+// Items 0 .. n − 1 grouped by their cell (`cell_of_item(i, cell)` false: left out), by a
+// counting sort: items in index order within a cell, cells in the order they first appear.
+struct CellBuckets {
+    template <class CellOfItem>
+    CellBuckets(size_t n, const CellOfItem& cell_of_item) {
+        std::vector<uint32_t> bucket(n, kNone), count;
+        for (size_t i = 0; i < n; ++i) {
             Cell cell;
-            if (!cell_of(sources[k].weighted_position, reach, cell)) continue;
-            auto [it, inserted] = range.try_emplace(cell, uint32_t(cells.size()), 0u);
-            if (inserted) cells.push_back(cell);
-            cell_of_source[k] = it->second.first;
-            ++it->second.second;
-        }
-        // Counting sort: a cell's sources start after those of the cells numbered before it.
-        std::vector<uint32_t> start(cells.size() + 1, 0);
-        for (size_t c = 0; c < cells.size(); ++c) start[c + 1] = start[c] + range[cells[c]].second;
-        for (size_t c = 0; c < cells.size(); ++c) range[cells[c]] = {start[c], start[c + 1]};
-        position.resize(start.back());
-        normal.resize(start.back());
-        for (uint32_t k = 0; k < sources.size(); ++k)
-            if (const uint32_t c = cell_of_source[k]; c != kNone) {
-                position[start[c]] = sources[k].weighted_position;
-                normal[start[c]++] = sources[k].normal;
+            if (!cell_of_item(i, cell)) continue;
+            auto [it, inserted] = index.try_emplace(cell, uint32_t(cells.size()));
+            if (inserted) {
+                cells.push_back(cell);
+                count.push_back(0);
             }
+            bucket[i] = it->second;
+            ++count[it->second];
+        }
+        first.assign(cells.size() + 1, 0);
+        for (size_t b = 0; b < cells.size(); ++b) first[b + 1] = first[b] + count[b];
+        items.resize(first.back());
+        std::vector<uint32_t> next(first.begin(), first.end() - 1);
+        for (size_t i = 0; i < n; ++i)
+            if (bucket[i] != kNone) items[next[bucket[i]]++] = uint32_t(i);
+    }
+    static constexpr uint32_t kNone = ~0u;
+    std::vector<Cell> cells;
+    std::vector<uint32_t> first;  // bucket b's items: items[first[b] .. first[b + 1])
+    std::vector<uint32_t> items;
+    std::unordered_map<Cell, uint32_t, CellHash> index;  // cell → bucket
+};
+
+// The sources sorted by their cell of side `reach` (in source order within a cell, so each
+// vertex sums them in the order it did when each cell held a list).
+struct Grid {
+    Grid(const std::vector<Source>& sources, double reach)
+        : buckets(sources.size(),
+                  [&](size_t k, Cell& cell) { return cell_of(sources[k].weighted_position, reach, cell); }) {
+        for (const uint32_t k : buckets.items) {
+            position.push_back(sources[k].weighted_position);
+            normal.push_back(sources[k].normal);
+        }
     }
     // The ranges of the 27 cells around `home` that hold sources, in z, y, x order.
     void around(const Cell& home, std::vector<std::pair<uint32_t, uint32_t>>& out) const {
@@ -77,42 +93,12 @@ struct Grid {
         for (int64_t dz = -1; dz <= 1; ++dz)
             for (int64_t dy = -1; dy <= 1; ++dy)
                 for (int64_t dx = -1; dx <= 1; ++dx)
-                    if (const auto it = range.find({home.x + dx, home.y + dy, home.z + dz}); it != range.end())
-                        out.push_back(it->second);
+                    if (const auto it = buckets.index.find({home.x + dx, home.y + dy, home.z + dz});
+                        it != buckets.index.end())
+                        out.emplace_back(buckets.first[it->second], buckets.first[it->second + 1]);
     }
-    static constexpr uint32_t kNone = ~0u;
-    std::vector<glm::dvec3> position, normal;
-    std::unordered_map<Cell, std::pair<uint32_t, uint32_t>, CellHash> range;
-};
-
-// The vertices grouped by their cell of side `reach`: the vertices of a group read the same 27
-// cells, looked up once for all of them (at the coarse scales a cell holds hundreds).
-struct Groups {
-    Groups(const Mesh& mesh, double reach) {
-        std::unordered_map<Cell, uint32_t, CellHash> group_of;
-        std::vector<uint32_t> group(mesh.positions.size(), Grid::kNone);
-        std::vector<uint32_t> count;
-        for (size_t i = 0; i < mesh.positions.size(); ++i) {
-            Cell cell;
-            if (!finite(mesh.positions[i]) || !cell_of(glm::dvec3(mesh.positions[i]), reach, cell)) continue;
-            auto [it, inserted] = group_of.try_emplace(cell, uint32_t(cells.size()));
-            if (inserted) {
-                cells.push_back(cell);
-                count.push_back(0);
-            }
-            group[i] = it->second;
-            ++count[it->second];
-        }
-        first.assign(cells.size() + 1, 0);
-        for (size_t g = 0; g < cells.size(); ++g) first[g + 1] = first[g] + count[g];
-        vertices.resize(first.back());
-        std::vector<uint32_t> next(first.begin(), first.end() - 1);
-        for (size_t i = 0; i < group.size(); ++i)
-            if (group[i] != Grid::kNone) vertices[next[group[i]]++] = uint32_t(i);
-    }
-    std::vector<Cell> cells;
-    std::vector<uint32_t> first;     // group g's vertices: vertices[first[g] .. first[g + 1])
-    std::vector<uint32_t> vertices;  // grouped, in vertex order within a group
+    CellBuckets buckets;
+    std::vector<glm::dvec3> position, normal;  // in buckets.items order
 };
 
 }  // namespace
@@ -146,7 +132,11 @@ std::vector<glm::vec3> smoothed_normals(const Mesh& mesh, const std::vector<glm:
     }
     for (Source& src : sources) src.weighted_position /= src.area;
     const Grid grid(sources, reach);
-    const Groups groups(mesh, reach);
+    // The vertices grouped by their cell of side `reach`: the vertices of a group read the same
+    // 27 cells, looked up once for all of them (at the coarse scales a cell holds hundreds).
+    const CellBuckets groups(n, [&](size_t i, Cell& cell) {
+        return finite(mesh.positions[i]) && cell_of(glm::dvec3(mesh.positions[i]), reach, cell);
+    });
 
     std::vector<glm::vec3> out(normals);
     const double inv_two_s2 = 1.0 / (2.0 * s * s);
@@ -155,7 +145,7 @@ std::vector<glm::vec3> smoothed_normals(const Mesh& mesh, const std::vector<glm:
         for (size_t g = range.begin(); g != range.end(); ++g) {
             grid.around(groups.cells[g], near);
             for (uint32_t k = groups.first[g]; k != groups.first[g + 1]; ++k) {
-                const uint32_t i = groups.vertices[k];
+                const uint32_t i = groups.items[k];
                 const glm::dvec3 p(mesh.positions[i]);
                 glm::dvec3 sum(0.0);
                 for (const auto& [begin, end] : near)
