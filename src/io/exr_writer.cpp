@@ -1,71 +1,186 @@
-// EXR through OpenEXR (Debian libopenexr-dev), encoded in memory so the file is written
-// atomically like every other output.
+// EXR through OpenEXR's C core (OpenEXRCore, Debian libopenexr-dev), encoded in memory so the
+// file is written atomically like every other output. The core writes the header and the chunk
+// table; ZIP chunks are its own encoder's, which reads the caller's pixels in place, and RLE
+// chunks io/exr_rle.hpp's (docs/benchmarks.md, "Fourth pass").
 #include "io/exr_writer.hpp"
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/openexr.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/exr_rle.hpp"
 
 namespace inkshade::io {
 
 namespace {
 
-// The file's bytes in one string reserved for the raw pixels up front: Imf::StdOSStream's
-// string stream grows by copies and is copied out again.
-class StringStream final : public Imf::OStream {
-public:
-    explicit StringStream(size_t reserve) : Imf::OStream("memory") { bytes_.reserve(reserve); }
-    void write(const char c[], int n) override {
-        if (position_ + size_t(n) > bytes_.size()) bytes_.resize(position_ + size_t(n));
-        std::copy(c, c + n, bytes_.begin() + std::ptrdiff_t(position_));
-        position_ += size_t(n);
+// The file's bytes, written by the core at offsets (its chunk table is filled in last), and
+// the first error it reported.
+struct ExrSink {
+    std::string bytes;
+    std::string error;
+};
+
+int64_t write_at(exr_const_context_t, void* user, const void* buffer, uint64_t size, uint64_t offset,
+                 exr_stream_error_func_ptr_t) {
+    auto& sink = *static_cast<ExrSink*>(user);
+    const char* bytes = static_cast<const char*>(buffer);
+    try {
+        if (offset == sink.bytes.size()) {  // the chunks come in order: no zero-fill first
+            sink.bytes.append(bytes, size_t(size));
+            return int64_t(size);
+        }
+        if (offset + size > sink.bytes.size()) sink.bytes.resize(size_t(offset + size));
+    } catch (const std::exception&) {
+        return -1;  // the core reports a write error
     }
-    uint64_t tellp() override { return position_; }
-    void seekp(uint64_t position) override { position_ = size_t(position); }
-    std::string& bytes() { return bytes_; }
+    std::memcpy(sink.bytes.data() + offset, bytes, size_t(size));
+    return int64_t(size);
+}
+
+// The core reports errors here instead of printing them.
+void keep_error(exr_const_context_t context, exr_result_t code, const char* message) {
+    void* user = nullptr;
+    if (exr_get_user_data(context, &user) != EXR_ERR_SUCCESS || !user) return;
+    auto& sink = *static_cast<ExrSink*>(user);
+    if (sink.error.empty()) sink.error = message ? message : exr_get_default_error_message(code);
+}
+
+// Owns the write context: exr_finish completes the file (its chunk table) or, after a failure,
+// releases it.
+class ExrContext {
+public:
+    explicit ExrContext(ExrSink& sink) : sink_(sink) {
+        exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+        init.user_data = &sink;
+        init.write_fn = write_at;
+        init.error_handler_fn = keep_error;
+        check(exr_start_write(&context_, "memory", EXR_WRITE_FILE_DIRECTLY, &init));
+    }
+    ~ExrContext() {
+        if (context_) exr_finish(&context_);
+    }
+    ExrContext(const ExrContext&) = delete;
+    ExrContext& operator=(const ExrContext&) = delete;
+
+    void check(exr_result_t result) const {
+        if (result == EXR_ERR_SUCCESS) return;
+        throw RuntimeError(sink_.error.empty() ? exr_get_default_error_message(result) : sink_.error);
+    }
+    void finish() {
+        exr_context_t c = context_;
+        context_ = nullptr;
+        check(exr_finish(&c));
+    }
+    exr_context_t get() const { return context_; }
 
 private:
-    std::string bytes_;
-    size_t position_ = 0;
+    ExrSink& sink_;
+    exr_context_t context_ = nullptr;
 };
+
+// Encodes every chunk of the one scan-line part; `channels` in the order the caller gave them.
+void encode(const ExrContext& exr, int width, int height, const std::vector<ExrChannel>& channels) {
+    const exr_context_t c = exr.get();
+    int32_t lines = 1;
+    exr.check(exr_get_scanlines_per_chunk(c, 0, &lines));
+    exr_encode_pipeline_t pipeline{};
+    bool started = false;
+    try {
+        for (int y = 0; y < height; y += lines) {
+            exr_chunk_info_t chunk{};
+            exr.check(exr_write_scanline_chunk_info(c, 0, y, &chunk));
+            exr.check(started ? exr_encoding_update(c, 0, &chunk, &pipeline)
+                              : exr_encoding_initialize(c, 0, &chunk, &pipeline));
+            for (int k = 0; k < pipeline.channel_count; ++k) {
+                exr_coding_channel_info_t& out = pipeline.channels[k];
+                const auto in = std::find_if(channels.begin(), channels.end(),
+                                             [&](const ExrChannel& ch) { return ch.name == out.channel_name; });
+                if (in == channels.end()) throw RuntimeError(std::string("no channel ") + out.channel_name);
+                const size_t stride = sizeof(float) * in->stride;
+                out.user_data_type = EXR_PIXEL_FLOAT;
+                out.user_bytes_per_element = sizeof(float);
+                out.user_pixel_stride = int32_t(stride);
+                out.user_line_stride = int32_t(stride * size_t(width));
+                out.encode_from_ptr = reinterpret_cast<const uint8_t*>(in->data + in->stride * size_t(width) * size_t(y));
+            }
+            if (!started) exr.check(exr_encoding_choose_default_routines(c, 0, &pipeline));
+            started = true;
+            exr.check(exr_encoding_run(c, 0, &pipeline));
+        }
+    } catch (...) {
+        if (started) exr_encoding_destroy(c, &pipeline);
+        throw;
+    }
+    if (started) exr.check(exr_encoding_destroy(c, &pipeline));
+}
+
+// RLE chunks (one scan line each) compressed here and handed to the core as they are. A chunk
+// holds its channels in the file's order (by name), each a line of little-endian floats.
+void encode_rle(const ExrContext& exr, int width, int height, const std::vector<ExrChannel>& channels) {
+    static_assert(std::endian::native == std::endian::little, "EXR samples are little-endian");
+    const exr_context_t c = exr.get();
+    const exr_attr_chlist_t* list = nullptr;
+    exr.check(exr_get_channels(c, 0, &list));
+    std::vector<const ExrChannel*> order;
+    for (int k = 0; k < list->num_channels; ++k) {
+        const std::string name(list->entries[k].name.str, size_t(list->entries[k].name.length));
+        const auto in = std::find_if(channels.begin(), channels.end(), [&](const ExrChannel& ch) { return ch.name == name; });
+        if (in == channels.end()) throw RuntimeError("no channel " + name);
+        order.push_back(&*in);
+    }
+    const size_t w = size_t(width), line_bytes = w * sizeof(float) * order.size();
+    std::vector<float> line(w * order.size());
+    std::vector<uint8_t> scratch, packed(exr_rle_bound(line_bytes));
+    for (int y = 0; y < height; ++y) {
+        float* to = line.data();
+        for (const ExrChannel* ch : order) {
+            const float* from = ch->data + ch->stride * w * size_t(y);
+            if (ch->stride == 1)
+                to = std::copy(from, from + w, to);
+            else
+                for (size_t x = 0; x < w; ++x) *to++ = from[x * ch->stride];
+        }
+        const auto* raw = reinterpret_cast<const uint8_t*>(line.data());
+        const size_t size = exr_rle_compress(raw, line_bytes, scratch, packed.data());
+        exr.check(size < line_bytes ? exr_write_scanline_chunk(c, 0, y, packed.data(), size)
+                                    : exr_write_scanline_chunk(c, 0, y, raw, line_bytes));
+    }
+}
 
 }  // namespace
 
 void write_exr(const std::string& path, int width, int height, const std::vector<ExrChannel>& channels,
                ExrCompression compression) {
     if (width <= 0 || height <= 0 || channels.empty()) throw RuntimeError(path + ": cannot write an empty EXR image");
-    std::string bytes;
+    ExrSink sink;
+    sink.bytes.reserve(size_t(width) * size_t(height) * sizeof(float) * channels.size() + 4096);
     try {
-        Imf::Header header(width, height);
-        header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::RLE_COMPRESSION;
+        ExrContext exr(sink);
+        const exr_context_t c = exr.get();
+        int part = 0;
+        exr.check(exr_add_part(c, "", EXR_STORAGE_SCANLINE, &part));
+        exr.check(exr_initialize_required_attr_simple(
+            c, part, width, height, compression == ExrCompression::Zip ? EXR_COMPRESSION_ZIP : EXR_COMPRESSION_RLE));
         // zlib's fastest level: on float fields (mantissa noise) level 1 is within a few percent
         // of the default's size at a fraction of its time (a dataset writes many of them).
-        header.zipCompressionLevel() = 1;
-        Imf::FrameBuffer frame;
-        for (const ExrChannel& c : channels) {
-            header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-            const size_t x_stride = sizeof(float) * c.stride;
-            frame.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data)), x_stride,
-                                            x_stride * size_t(width)));
-        }
-        StringStream stream(size_t(width) * size_t(height) * sizeof(float) * channels.size() + 4096);
-        {
-            Imf::OutputFile file(stream, header);  // the file is complete once this is destroyed
-            file.setFrameBuffer(frame);
-            file.writePixels(height);
-        }
-        bytes = std::move(stream.bytes());
+        exr.check(exr_set_zip_compression_level(c, part, 1));
+        for (const ExrChannel& ch : channels)
+            exr.check(exr_add_channel(c, part, ch.name.c_str(), EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1));
+        exr.check(exr_write_header(c));
+        if (compression == ExrCompression::Rle)
+            encode_rle(exr, width, height, channels);
+        else
+            encode(exr, width, height, channels);
+        exr.finish();
     } catch (const std::exception& e) {
         throw RuntimeError(path + ": EXR encoding failed (" + e.what() + ")");
     }
-    write_file_atomic(path, bytes);
+    write_file_atomic(path, sink.bytes);
 }
 
 }  // namespace inkshade::io

@@ -1,0 +1,81 @@
+#include "io/exr_rle.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace inkshade::io {
+
+namespace {
+
+uint64_t load64(const uint8_t* p) {
+    uint64_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+constexpr uint64_t kOnes = 0x0101010101010101ull, kHighs = 0x8080808080808080ull;
+
+// The first i in [from, size − 2) where bytes i, i + 1 and i + 2 are equal, or size. Eight
+// positions a step: a byte of (x ^ y) | (y ^ z) is zero where a triple starts, and the lowest
+// byte the has-zero test flags is the first zero (it flags no false byte below the first).
+size_t next_triple(const uint8_t* in, size_t from, size_t size) {
+    size_t i = from;
+    for (; i + 10 <= size; i += 8) {
+        const uint64_t x = load64(in + i), y = load64(in + i + 1), z = load64(in + i + 2);
+        const uint64_t v = (x ^ y) | (y ^ z);
+        const uint64_t zero = (v - kOnes) & ~v & kHighs;
+        if (zero) return i + (size_t(__builtin_ctzll(zero)) >> 3);
+    }
+    for (; i + 2 < size; ++i)
+        if (in[i] == in[i + 1] && in[i + 1] == in[i + 2]) return i;
+    return size;
+}
+
+// The end of the run of in[from]'s value that starts at `from`.
+size_t run_end(const uint8_t* in, size_t from, size_t size) {
+    const uint64_t pattern = kOnes * in[from];
+    size_t i = from + 1;
+    for (; i + 8 <= size; i += 8)
+        if (const uint64_t d = load64(in + i) ^ pattern) return i + (size_t(__builtin_ctzll(d)) >> 3);
+    while (i < size && in[i] == in[from]) ++i;
+    return i;
+}
+
+}  // namespace
+
+size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out) {
+    if (size == 0) return 0;
+    // The halves: bytes 0, 2, 4, ... then 1, 3, 5, ...; then the predictor, from the back so
+    // that one buffer serves.
+    scratch.resize(size);
+    uint8_t* t = scratch.data();
+    const size_t half = (size + 1) / 2;
+    for (size_t i = 0; i < size / 2; ++i) {
+        t[i] = in[2 * i];
+        t[half + i] = in[2 * i + 1];
+    }
+    if (size % 2) t[half - 1] = in[size - 1];
+    for (size_t i = size - 1; i > 0; --i) t[i] = uint8_t(t[i] - t[i - 1] + 128);
+
+    uint8_t* o = out;
+    size_t i = 0;
+    while (i < size) {
+        const size_t run = next_triple(t, i, size);
+        for (size_t count; i < run; i += count) {  // literals
+            count = std::min<size_t>(128, run - i);
+            *o++ = uint8_t(-int(count));
+            std::memcpy(o, t + i, count);
+            o += count;
+        }
+        if (run == size) break;
+        const size_t end = run_end(t, run, size);
+        for (size_t count; i < end; i += count) {  // the run, in pieces of at most 128
+            count = std::min<size_t>(128, end - i);
+            *o++ = uint8_t(count - 1);
+            *o++ = t[run];
+        }
+    }
+    return size_t(o - out);
+}
+
+}  // namespace inkshade::io
