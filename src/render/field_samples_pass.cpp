@@ -2,7 +2,8 @@
 // before the shading so that their interpolation on the CPU (render/surface_fields.hpp) runs on
 // a worker beside the shading pass's GL work; the aov pass waits for it. The face is the one the
 // aov pass's depth, normal and ids show: one sample a pixel, back faces only where no front
-// face lies just behind (render/back_faces.hpp).
+// face lies just behind (render/back_faces.hpp); its number is the mesh's own
+// (GpuMesh::draw_face_numbers).
 #include <future>
 
 #include "gpu/gl_handle.hpp"
@@ -61,12 +62,11 @@ private:
         const GLfloat far = 1.0f;
         glClearBufferuiv(GL_COLOR, 0, no_face);
         glClearBufferfv(GL_DEPTH, 0, &far);
-        if (!program_) program_ = std::make_unique<gpu::ShaderProgram>("lines/gbuffer.vert", "aov/face.frag");
+        if (!program_) program_ = std::make_unique<gpu::ShaderProgram>("aov/face.vert", "aov/face.frag");
         gpu::ShaderProgram& p = *program_;
         p.use();
         p.set("u_view_proj", frame.camera.projection(frame.aspect()) * frame.camera.view());
-        draw_front_then_back(frame, p,
-                             [&] { frame.mesh->draw([&](uint32_t first) { p.set("u_face_base", int(first)); }); });
+        draw_front_then_back(frame, p, [&] { frame.mesh->draw_face_numbers(frame.cpu_mesh); });
     }
 
     // The face drawn at each pixel + 1 (0: background), top row first.

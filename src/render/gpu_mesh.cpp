@@ -297,10 +297,9 @@ namespace {
 // so the image is the same. Meshes below the size draw in one call, as before.
 constexpr GLsizei kChunkIndices = 3 * (GLsizei(1) << 20);
 
-void draw_indices(size_t first, GLsizei count, const std::function<void(uint32_t)>& before = {}) {
+void draw_indices(size_t first, GLsizei count) {
     while (count > 0) {
         const GLsizei n = std::min(count, kChunkIndices);
-        if (before) before(uint32_t(first / 3));
         glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * sizeof(uint32_t)));
         first += size_t(n);
         count -= n;
@@ -315,9 +314,33 @@ void GpuMesh::draw() const {
     draw_indices(0, index_count_);
 }
 
-void GpuMesh::draw(const std::function<void(uint32_t first_face)>& before) const {
-    glBindVertexArray(vao_.id());
-    draw_indices(0, index_count_, before);
+void GpuMesh::draw_face_numbers(const Mesh& mesh) {
+    if (!face_number_vao_) {
+        struct Corner {
+            glm::vec3 position;
+            uint32_t face;  // number + 1
+        };
+        std::vector<Corner> corners;
+        corners.reserve(mesh.triangles.size() * 3);
+        for (size_t f = 0; f < mesh.triangles.size(); ++f)
+            for (int k = 0; k < 3; ++k) corners.push_back({mesh.positions[mesh.triangles[f][k]], uint32_t(f + 1)});
+        face_number_vbo_ = upload_buffer(GLsizeiptr(corners.size() * sizeof(Corner)), corners.data());
+        face_number_count_ = GLsizei(corners.size());
+        face_number_vao_ = gpu::GlVertexArray::create();
+        const GLuint vao = face_number_vao_.id();
+        glVertexArrayVertexBuffer(vao, 0, face_number_vbo_.id(), 0, sizeof(Corner));
+        glEnableVertexArrayAttrib(vao, 0);
+        glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Corner, position));
+        glVertexArrayAttribBinding(vao, 0, 0);
+        glEnableVertexArrayAttrib(vao, 4);
+        glVertexArrayAttribIFormat(vao, 4, 1, GL_UNSIGNED_INT, offsetof(Corner, face));
+        glVertexArrayAttribBinding(vao, 4, 0);
+    }
+    glBindVertexArray(face_number_vao_.id());
+    for (GLsizei first = 0; first < face_number_count_; first += kChunkIndices) {  // as draw_indices
+        if (first > 0) glFinish();
+        glDrawArrays(GL_TRIANGLES, first, std::min(kChunkIndices, face_number_count_ - first));
+    }
 }
 
 const Material* GpuMesh::range_material(size_t range) const {

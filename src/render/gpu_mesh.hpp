@@ -40,9 +40,13 @@ public:
     explicit GpuMesh(const Mesh& mesh);
     // All faces in one call (depth, hull and G-buffer passes).
     void draw() const;
-    // The same, `before` called before each draw call with the index of its first face (a large
-    // mesh is drawn in several: gl_PrimitiveID counts from 0 in each).
-    void draw(const std::function<void(uint32_t first_face)>& before) const;
+    // The faces in `mesh`'s own order (the mesh this was made from), each with three vertices
+    // of its own (attribute 0) that carry its number + 1 (attribute 4, unsigned int, read
+    // `flat`): the face at each pixel for the surface fields (render/field_samples_pass.cpp),
+    // numbered as the mesh is even where draw() sorts the faces by material. The buffer (16
+    // bytes a corner) is made on the first call. A flat attribute instead of gl_PrimitiveID
+    // takes that pass in about two thirds of the time on llvmpipe.
+    void draw_face_numbers(const Mesh& mesh);
 
     // Uvs and a texture are uploaded: shaders read them under INKSHADE_BASE_TEXTURE.
     bool textured() const { return !textures_.empty(); }
@@ -128,6 +132,9 @@ private:
     };
     std::map<std::string, Attribute> attributes_;  // set_attribute
     gpu::GlVertexArray vao_;
+    gpu::GlBuffer face_number_vbo_;  // draw_face_numbers
+    gpu::GlVertexArray face_number_vao_;
+    GLsizei face_number_count_ = 0;
     std::vector<uint32_t> source_;          // mesh vertex of each stream vertex (set_attribute)
     size_t stream_size_ = 0;                // vertices in the stream
     std::vector<glm::uvec2> object_parts_;  // object_parts()

@@ -105,6 +105,40 @@ TEST(AovFields, SphereNdotvAndCurvatures) {
     EXPECT_EQ(a.field_scales.shading_sigmas.size(), size_t(kShadingScales));
 }
 
+// Faces the GPU draws sorted by material (here: glTF double-sided materials, every other face
+// each) are still read as the mesh's own faces: n·v on the sphere as without materials.
+TEST(AovFields, FacesSortedByMaterialKeepTheirFields) {
+    const double radius = 1.5;
+    Mesh sphere = builtin::sphere(64, 128, float(radius));
+    for (const char* name : {"a", "b"}) {
+        Material m;
+        m.name = name;
+        m.sides = FaceSides::Double;
+        sphere.materials.push_back(m);
+    }
+    sphere.face_materials.resize(sphere.triangles.size());
+    for (size_t f = 0; f < sphere.triangles.size(); ++f) sphere.face_materials[f] = uint32_t(f % 2);
+    shared_renderer().set_mesh(std::move(sphere));
+    const Camera c = oblique_camera({3.0f, 2.2f, 5.0f});
+    const int w = 160, h = 120;
+    const AovImages a = render_fields(c, {Aov::Ndotv, Aov::K1}, w, h);
+    double worst_ndotv = 0.0, worst_k = 0.0;
+    int n = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y * w + x);
+            if (a.depth[i] == 0.0f) continue;
+            const glm::dvec3 p = world_point(c, w, h, x, y, a.depth[i]);
+            worst_ndotv = std::max(worst_ndotv,
+                                   std::abs(a.ndotv[i] - glm::dot(glm::normalize(p), glm::normalize(glm::dvec3(c.eye) - p))));
+            worst_k = std::max(worst_k, std::abs(a.k1[i] * radius - 1.0));
+            ++n;
+        }
+    ASSERT_GT(n, 4000);
+    EXPECT_LT(worst_ndotv, 4e-3);
+    EXPECT_LT(worst_k, 0.02);
+}
+
 // The torus of builtin::torus: S(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v).
 struct TorusFrame {
     glm::dvec3 normal, meridian, parallel;  // meridian: along v (k = 1/r); parallel: along u
