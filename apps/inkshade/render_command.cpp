@@ -86,7 +86,9 @@ int run_render(RenderArgs& args, const CLI::App& cmd) {
         for (int i = 0; i < args.timing; ++i) {
             std::vector<PassTiming> timings;
             auto start = std::chrono::steady_clock::now();
-            image = render_scene(renderer, scene, camera, light, &timings);
+            // With the AOVs asked for: their passes are timed too (the files are not written).
+            image = scene.aovs.empty() ? render_scene(renderer, scene, camera, light, &timings)
+                                       : render_scene(renderer, scene, camera, light, aovs, &timings);
             totals.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             double gpu = 0.0;
