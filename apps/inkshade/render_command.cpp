@@ -135,7 +135,7 @@ Command add_render_command(CLI::App& app) {
                     "output image, .png or .jpg/.jpeg by its extension (written atomically)")
         ->required();
     args->image.add_to(*cmd);
-    cmd->add_option("--timing", args->timing, "render N extra frames and print median ms per pass and total")
+    cmd->add_option("--timing", args->timing, "render N extra frames (their AOVs too) and print median ms per pass and total")
         ->check(CLI::Range(0, 100000));
     cmd->add_option("--lines", args->lines,
                     "line types added to the style, comma-separated: raster (hull, rim-contour, edges, ...) or "
