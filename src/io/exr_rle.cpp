@@ -45,17 +45,23 @@ size_t run_end(const uint8_t* in, size_t from, size_t size) {
 
 size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out) {
     if (size == 0) return 0;
-    // The halves: bytes 0, 2, 4, ... then 1, 3, 5, ...; then the predictor, from the back so
-    // that one buffer serves.
-    scratch.resize(size);
-    uint8_t* t = scratch.data();
-    const size_t half = (size + 1) / 2;
-    for (size_t i = 0; i < size / 2; ++i) {
-        t[i] = in[2 * i];
-        t[half + i] = in[2 * i + 1];
+    // The halves (bytes 0, 2, 4, ... then 1, 3, 5, ...) into `h`, then the predictor into `t`;
+    // both loops vectorise. Four bytes at a time (a float's) while they last.
+    scratch.resize(2 * size);
+    uint8_t* h = scratch.data();
+    uint8_t* t = h + size;
+    const size_t half = (size + 1) / 2, words = size / 4;
+    for (size_t i = 0; i < words; ++i) {
+        uint32_t v;
+        std::memcpy(&v, in + 4 * i, 4);
+        const uint16_t even = uint16_t((v & 0xffu) | ((v >> 8) & 0xff00u));
+        const uint16_t odd = uint16_t(((v >> 8) & 0xffu) | ((v >> 16) & 0xff00u));
+        std::memcpy(h + 2 * i, &even, 2);
+        std::memcpy(h + half + 2 * i, &odd, 2);
     }
-    if (size % 2) t[half - 1] = in[size - 1];
-    for (size_t i = size - 1; i > 0; --i) t[i] = uint8_t(t[i] - t[i - 1] + 128);
+    for (size_t i = 4 * words; i < size; ++i) h[i % 2 ? half + i / 2 : i / 2] = in[i];
+    t[0] = h[0];
+    for (size_t i = 1; i < size; ++i) t[i] = uint8_t(h[i] - h[i - 1] + 128);
 
     uint8_t* o = out;
     size_t i = 0;
