@@ -56,11 +56,15 @@ glm::dvec3 ray_barycentrics(const glm::dvec3& o, const glm::dvec3& d, const Face
 struct PackedVertex {
     glm::vec3 normal{0.0f};
     float kr = 0.0f, dwkr = 0.0f, k1 = 0.0f, k2 = 0.0f;
-    glm::vec3 pdir1{0.0f}, pdir2{0.0f};
-    std::array<glm::vec3, kShadingScales> smoothed{};
+    glm::vec3 pdir1{0.0f}, pdir2{0.0f};  // in camera space: the view's rotation applied once a vertex
+    // The smoothed normals' x, y and z, a lane a scale (the last lanes zero): a pixel's five
+    // scales vectorise.
+    static constexpr size_t kLanes = 8;
+    static_assert(kShadingScales <= int(kLanes));
+    std::array<float, kLanes> sx{}, sy{}, sz{};
 };
 
-std::vector<PackedVertex> pack(const FieldVertices& f, size_t n) {
+std::vector<PackedVertex> pack(const FieldVertices& f, size_t n, const glm::dmat3& view_rotation) {
     std::vector<PackedVertex> out(n);
     auto copy = [&](const auto& values, auto member) {
         if (values.size() == n)
@@ -71,11 +75,16 @@ std::vector<PackedVertex> pack(const FieldVertices& f, size_t n) {
     copy(f.dwkr, &PackedVertex::dwkr);
     copy(f.k1, &PackedVertex::k1);
     copy(f.k2, &PackedVertex::k2);
-    copy(f.pdir1, &PackedVertex::pdir1);
-    copy(f.pdir2, &PackedVertex::pdir2);
+    for (auto [values, member] : {std::pair{&f.pdir1, &PackedVertex::pdir1}, std::pair{&f.pdir2, &PackedVertex::pdir2}})
+        if (values->size() == n)
+            for (size_t i = 0; i < n; ++i) out[i].*member = glm::vec3(view_rotation * glm::dvec3((*values)[i]));
     for (size_t k = 0; k < f.smoothed.size() && k < size_t(kShadingScales); ++k)
         if (f.smoothed[k].size() == n)
-            for (size_t i = 0; i < n; ++i) out[i].smoothed[k] = f.smoothed[k][i];
+            for (size_t i = 0; i < n; ++i) {
+                out[i].sx[k] = f.smoothed[k][i].x;
+                out[i].sy[k] = f.smoothed[k][i].y;
+                out[i].sz[k] = f.smoothed[k][i].z;
+            }
     return out;
 }
 
@@ -106,13 +115,12 @@ double cosine(const glm::dvec3& a, const glm::dvec3& b) {
     return len2 > 0.0 && std::isfinite(len2) ? glm::dot(a, b) / std::sqrt(len2) : 0.0;
 }
 
-// The unit image-space direction (pixels: x right, y down) of world direction `d` at the point
-// whose camera-space position is `q`: the derivative of the projection, without its positive
-// factor 1/q.z² (the normalisation drops it); the sign with x > 0 (or x = 0, y > 0): a
+// The unit image-space direction (pixels: x right, y down) of camera-space direction `e` at
+// the point whose camera-space position is `q`: the derivative of the projection, without its
+// positive factor 1/q.z² (the normalisation drops it); the sign with x > 0 (or x = 0, y > 0): a
 // principal direction is an axis, so this fixes one of its two ends. (0, 0) when it projects
 // to a point.
-glm::dvec2 image_direction(const glm::dmat4& view, bool orthographic, const glm::dvec3& q, const glm::dvec3& d) {
-    const glm::dvec3 e = glm::dmat3(view) * d;
+glm::dvec2 image_direction(bool orthographic, const glm::dvec3& q, const glm::dvec3& e) {
     glm::dvec2 s = orthographic ? glm::dvec2(e.x, -e.y) : glm::dvec2(-e.x * q.z + q.x * e.z, e.y * q.z - q.y * e.z);
     const double len = glm::length(s);
     if (!(len > 1e-12 * (std::abs(s.x) + std::abs(s.y) + 1e-300)) || !std::isfinite(len)) return glm::dvec2(0.0);
@@ -175,7 +183,7 @@ void write_pixel(const PixelContext& ctx, AovSet want, size_t scales, const Samp
     const glm::dvec3 q = pdirs ? glm::dvec3(ctx.view * glm::dvec4(s.p, 1.0)) : glm::dvec3(0.0);
     for (auto [aov, dirs] : {std::pair{Aov::Pdir1, &PackedVertex::pdir1}, std::pair{Aov::Pdir2, &PackedVertex::pdir2}})
         if (want.contains(aov)) {
-            const glm::dvec2 d = image_direction(ctx.view, ctx.orthographic, q, s.axis_at(dirs));
+            const glm::dvec2 d = image_direction(ctx.orthographic, q, s.axis_at(dirs));
             std::vector<float>& buffer = field_buffer(out, aov);
             buffer[2 * i] = float(d.x);
             buffer[2 * i + 1] = float(d.y);
@@ -183,11 +191,18 @@ void write_pixel(const PixelContext& ctx, AovSet want, size_t scales, const Samp
     if (want.contains(Aov::ShadingScales)) {
         // In float: n·l lands in a 16-bit PNG, whose step is 500 times float's rounding here.
         const glm::vec3 l(ctx.to_light(s.p)), b(s.b);
-        for (size_t k = 0; k < scales; ++k) {
-            const glm::vec3 sum = b.x * s.v[0]->smoothed[k] + b.y * s.v[1]->smoothed[k] + b.z * s.v[2]->smoothed[k];
-            const float len = glm::length(sum);
-            out.shading[k][i] = len > 0.0f && std::isfinite(len) ? std::max(0.0f, glm::dot(sum, l) / len) : 0.0f;
+        constexpr size_t lanes = PackedVertex::kLanes;
+        std::array<float, lanes> shade;
+        const PackedVertex &v0 = *s.v[0], &v1 = *s.v[1], &v2 = *s.v[2];
+        for (size_t k = 0; k < lanes; ++k) {
+            const float x = b.x * v0.sx[k] + b.y * v1.sx[k] + b.z * v2.sx[k];
+            const float y = b.x * v0.sy[k] + b.y * v1.sy[k] + b.z * v2.sy[k];
+            const float z = b.x * v0.sz[k] + b.y * v1.sz[k] + b.z * v2.sz[k];
+            const float len = std::sqrt(x * x + y * y + z * z);
+            const float cosine = (x * l.x + y * l.y + z * l.z) / len;  // NaN where len is 0 or not finite
+            shade[k] = cosine > 0.0f ? cosine : 0.0f;
         }
+        for (size_t k = 0; k < scales; ++k) out.shading[k][i] = shade[k];
     }
 }
 
@@ -205,7 +220,7 @@ void interpolate_fields(const Frame& frame, AovSet want, const std::vector<uint3
     const Mesh& mesh = frame.cpu_mesh;
     const size_t width = size_t(ctx.width), pixels = width * size_t(ctx.height);
     allocate(want, f, pixels, out);
-    const std::vector<PackedVertex> packed = pack(f, mesh.positions.size());
+    const std::vector<PackedVertex> packed = pack(f, mesh.positions.size(), glm::dmat3(ctx.view));
     const size_t scales = std::min(f.smoothed.size(), size_t(kShadingScales));
     tbb::parallel_for(tbb::blocked_range<int>(0, ctx.height, 8), [&](const auto& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
