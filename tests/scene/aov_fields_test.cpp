@@ -139,6 +139,35 @@ TEST(AovFields, FacesSortedByMaterialKeepTheirFields) {
     EXPECT_LT(worst_k, 0.02);
 }
 
+// A mesh of more faces than one draw call takes (GpuMesh draws 2^20 a call): the faces of the
+// second call, the sphere's last ten of 360 longitude columns, face the camera and must be
+// read as the faces they are.
+TEST(AovFields, FacesOfALaterDrawCallKeepTheirNumbers) {
+    const double radius = 1.0;
+    Mesh sphere = builtin::sphere(1500, 360, float(radius));
+    ASSERT_GT(sphere.triangles.size(), size_t(1) << 20);
+    shared_renderer().set_mesh(std::move(sphere));
+    Camera c = oblique_camera({4.0f, 0.4f, 0.2f});  // the columns at longitude just below 2π: +x, z >= 0
+    c.target = {0.0f, 0.0f, 0.0f};
+    const int w = 96, h = 72;
+    const AovImages a = render_fields(c, {Aov::Ndotv}, w, h);
+    double worst = 0.0;
+    int n = 0, later = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y * w + x);
+            if (a.depth[i] == 0.0f) continue;
+            const glm::dvec3 p = world_point(c, w, h, x, y, a.depth[i]);
+            worst = std::max(worst, std::abs(a.ndotv[i] - glm::dot(glm::normalize(p), glm::normalize(glm::dvec3(c.eye) - p))));
+            const double longitude = std::atan2(-p.z, p.x);  // builtin::sphere's φ, in (−π, π]
+            later += longitude < 0.0 && longitude > -glm::radians(9.0);
+            ++n;
+        }
+    ASSERT_GT(n, 1500);
+    EXPECT_GT(later, 60);  // pixels on faces of the second draw call
+    EXPECT_LT(worst, 4e-3);
+}
+
 // The torus of builtin::torus: S(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v).
 struct TorusFrame {
     glm::dvec3 normal, meridian, parallel;  // meridian: along v (k = 1/r); parallel: along u
