@@ -1,7 +1,7 @@
 // EXR through OpenEXR's C core (OpenEXRCore, Debian libopenexr-dev), encoded in memory so the
 // file is written atomically like every other output. The core writes the header and the chunk
-// table; ZIP chunks are its own encoder's, which reads the caller's pixels in place, and RLE
-// chunks io/exr_rle.hpp's (docs/benchmarks.md, "Fourth pass").
+// table, the chunks are compressed by io/exr_compression.hpp (docs/benchmarks.md, "Fourth
+// pass").
 #include "io/exr_writer.hpp"
 
 #include <OpenEXR/openexr.h>
@@ -12,11 +12,15 @@
 
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
-#include "io/exr_rle.hpp"
+#include "io/exr_compression.hpp"
 
 namespace inkshade::io {
 
 namespace {
+
+// zlib's fastest level: on float fields (mantissa noise) level 1 is within a few percent of the
+// default's size at a fraction of its time (a dataset writes many of them).
+constexpr int kZipLevel = 1;
 
 // The file's bytes, written by the core at offsets (its chunk table is filled in last), and
 // the first error it reported.
@@ -83,45 +87,11 @@ private:
     exr_context_t context_ = nullptr;
 };
 
-// Encodes every chunk of the one scan-line part; `channels` in the order the caller gave them.
-void encode(const ExrContext& exr, int width, int height, const std::vector<ExrChannel>& channels) {
-    const exr_context_t c = exr.get();
-    int32_t lines = 1;
-    exr.check(exr_get_scanlines_per_chunk(c, 0, &lines));
-    exr_encode_pipeline_t pipeline{};
-    bool started = false;
-    try {
-        for (int y = 0; y < height; y += lines) {
-            exr_chunk_info_t chunk{};
-            exr.check(exr_write_scanline_chunk_info(c, 0, y, &chunk));
-            exr.check(started ? exr_encoding_update(c, 0, &chunk, &pipeline)
-                              : exr_encoding_initialize(c, 0, &chunk, &pipeline));
-            for (int k = 0; k < pipeline.channel_count; ++k) {
-                exr_coding_channel_info_t& out = pipeline.channels[k];
-                const auto in = std::find_if(channels.begin(), channels.end(),
-                                             [&](const ExrChannel& ch) { return ch.name == out.channel_name; });
-                if (in == channels.end()) throw RuntimeError(std::string("no channel ") + out.channel_name);
-                const size_t stride = sizeof(float) * in->stride;
-                out.user_data_type = EXR_PIXEL_FLOAT;
-                out.user_bytes_per_element = sizeof(float);
-                out.user_pixel_stride = int32_t(stride);
-                out.user_line_stride = int32_t(stride * size_t(width));
-                out.encode_from_ptr = reinterpret_cast<const uint8_t*>(in->data + in->stride * size_t(width) * size_t(y));
-            }
-            if (!started) exr.check(exr_encoding_choose_default_routines(c, 0, &pipeline));
-            started = true;
-            exr.check(exr_encoding_run(c, 0, &pipeline));
-        }
-    } catch (...) {
-        if (started) exr_encoding_destroy(c, &pipeline);
-        throw;
-    }
-    if (started) exr.check(exr_encoding_destroy(c, &pipeline));
-}
-
-// RLE chunks (one scan line each) compressed here and handed to the core as they are. A chunk
-// holds its channels in the file's order (by name), each a line of little-endian floats.
-void encode_rle(const ExrContext& exr, int width, int height, const std::vector<ExrChannel>& channels) {
+// Every chunk of the one scan-line part (RLE: a line each, ZIP: 16), compressed here and handed
+// to the core as it is. A chunk holds its lines in order, each line its channels in the file's
+// order (by name), each channel a line of little-endian floats.
+void encode(const ExrContext& exr, int width, int height, const std::vector<ExrChannel>& channels,
+            ExrCompression compression) {
     static_assert(std::endian::native == std::endian::little, "EXR samples are little-endian");
     const exr_context_t c = exr.get();
     const exr_attr_chlist_t* list = nullptr;
@@ -133,22 +103,31 @@ void encode_rle(const ExrContext& exr, int width, int height, const std::vector<
         if (in == channels.end()) throw RuntimeError("no channel " + name);
         order.push_back(&*in);
     }
-    const size_t w = size_t(width), line_bytes = w * sizeof(float) * order.size();
-    std::vector<float> line(w * order.size());
-    std::vector<uint8_t> scratch, packed(exr_rle_bound(line_bytes));
-    for (int y = 0; y < height; ++y) {
-        float* to = line.data();
-        for (const ExrChannel* ch : order) {
-            const float* from = ch->data + ch->stride * w * size_t(y);
-            if (ch->stride == 1)
-                to = std::copy(from, from + w, to);
-            else
-                for (size_t x = 0; x < w; ++x) *to++ = from[x * ch->stride];
-        }
-        const auto* raw = reinterpret_cast<const uint8_t*>(line.data());
-        const size_t size = exr_rle_compress(raw, line_bytes, scratch, packed.data());
-        exr.check(size < line_bytes ? exr_write_scanline_chunk(c, 0, y, packed.data(), size)
-                                    : exr_write_scanline_chunk(c, 0, y, raw, line_bytes));
+    int32_t lines = 1;
+    exr.check(exr_get_scanlines_per_chunk(c, 0, &lines));
+    const size_t w = size_t(width), line_floats = w * order.size();
+    const size_t most = size_t(lines) * line_floats * sizeof(float);
+    std::vector<float> chunk(size_t(lines) * line_floats);
+    std::vector<uint8_t> scratch,
+        packed(compression == ExrCompression::Rle ? exr_rle_bound(most) : exr_zip_bound(most));
+    for (int y0 = 0; y0 < height; y0 += lines) {
+        const int count = std::min(lines, height - y0);
+        float* to = chunk.data();
+        for (int y = y0; y < y0 + count; ++y)
+            for (const ExrChannel* ch : order) {
+                const float* from = ch->data + ch->stride * w * size_t(y);
+                if (ch->stride == 1)
+                    to = std::copy(from, from + w, to);
+                else
+                    for (size_t x = 0; x < w; ++x) *to++ = from[x * ch->stride];
+            }
+        const auto* raw = reinterpret_cast<const uint8_t*>(chunk.data());
+        const size_t bytes = size_t(count) * line_floats * sizeof(float);
+        const size_t size = compression == ExrCompression::Rle
+                                ? exr_rle_compress(raw, bytes, scratch, packed.data())
+                                : exr_zip_compress(raw, bytes, scratch, packed.data(), kZipLevel);
+        exr.check(size < bytes ? exr_write_scanline_chunk(c, 0, y0, packed.data(), size)
+                               : exr_write_scanline_chunk(c, 0, y0, raw, bytes));
     }
 }
 
@@ -166,16 +145,11 @@ void write_exr(const std::string& path, int width, int height, const std::vector
         exr.check(exr_add_part(c, "", EXR_STORAGE_SCANLINE, &part));
         exr.check(exr_initialize_required_attr_simple(
             c, part, width, height, compression == ExrCompression::Zip ? EXR_COMPRESSION_ZIP : EXR_COMPRESSION_RLE));
-        // zlib's fastest level: on float fields (mantissa noise) level 1 is within a few percent
-        // of the default's size at a fraction of its time (a dataset writes many of them).
-        exr.check(exr_set_zip_compression_level(c, part, 1));
+        exr.check(exr_set_zip_compression_level(c, part, kZipLevel));
         for (const ExrChannel& ch : channels)
             exr.check(exr_add_channel(c, part, ch.name.c_str(), EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1));
         exr.check(exr_write_header(c));
-        if (compression == ExrCompression::Rle)
-            encode_rle(exr, width, height, channels);
-        else
-            encode(exr, width, height, channels);
+        encode(exr, width, height, channels, compression);
         exr.finish();
     } catch (const std::exception& e) {
         throw RuntimeError(path + ": EXR encoding failed (" + e.what() + ")");

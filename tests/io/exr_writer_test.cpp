@@ -1,6 +1,8 @@
-// The EXR writer (io/exr_writer.hpp) and its RLE codec (io/exr_rle.hpp): files read back by
-// OpenEXR's own C++ reader, sample for sample, and the codec's bytes against the format.
+// The EXR writer (io/exr_writer.hpp) and its chunk compressions (io/exr_compression.hpp): files
+// read back by OpenEXR's own C++ reader, sample for sample, and the codecs' bytes against the
+// format.
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <cstring>
@@ -10,7 +12,7 @@
 
 #include "cli/exr_channel.hpp"
 #include "inkshade/error.hpp"
-#include "io/exr_rle.hpp"
+#include "io/exr_compression.hpp"
 #include "io/exr_writer.hpp"
 #include "support/temp_dir.hpp"
 
@@ -19,8 +21,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The format's decoder, as a reader applies it: runs and literals, then the predictor undone
-// and the halves interleaved again.
+// The predictor undone and the halves interleaved again, as a reader does after decompressing.
+std::vector<uint8_t> unpredict(std::vector<uint8_t> t, size_t size) {
+    EXPECT_EQ(t.size(), size);
+    t.resize(size);
+    for (size_t i = 1; i < t.size(); ++i) t[i] = uint8_t(t[i - 1] + t[i] - 128);
+    std::vector<uint8_t> out(t.size());
+    const size_t half = (size + 1) / 2;
+    for (size_t i = 0; i < size; ++i) out[i] = i % 2 ? t[half + i / 2] : t[i / 2];
+    return out;
+}
+
+// The RLE format's decoder: runs and literals, then the predictor undone.
 std::vector<uint8_t> rle_decode(const std::vector<uint8_t>& in, size_t size) {
     std::vector<uint8_t> t;
     for (size_t i = 0; i < in.size();) {
@@ -32,12 +44,7 @@ std::vector<uint8_t> rle_decode(const std::vector<uint8_t>& in, size_t size) {
             t.insert(t.end(), size_t(count) + 1, in[i++]);
         }
     }
-    EXPECT_EQ(t.size(), size);
-    for (size_t i = 1; i < t.size(); ++i) t[i] = uint8_t(t[i - 1] + t[i] - 128);
-    std::vector<uint8_t> out(t.size());
-    const size_t half = (size + 1) / 2;
-    for (size_t i = 0; i < size; ++i) out[i] = i % 2 ? t[half + i / 2] : t[i / 2];
-    return out;
+    return unpredict(std::move(t), size);
 }
 
 std::vector<uint8_t> compress(const std::vector<uint8_t>& in) {
@@ -85,6 +92,19 @@ TEST(ExrRle, RunsAndLiteralsOfEveryLengthRoundTrip) {
         EXPECT_LE(out.size(), io::exr_rle_bound(size));
         EXPECT_EQ(rle_decode(out, size), in) << size << " bytes";
     }
+}
+
+TEST(ExrZip, ZlibStreamOfThePredictedBytes) {
+    std::mt19937 random(13);
+    std::vector<uint8_t> in(5000);
+    for (size_t i = 0; i < in.size(); ++i) in[i] = i % 3 ? uint8_t(i / 50) : uint8_t(random());
+    std::vector<uint8_t> scratch, out(io::exr_zip_bound(in.size()));
+    out.resize(io::exr_zip_compress(in.data(), in.size(), scratch, out.data(), 1));
+    ASSERT_LT(out.size(), in.size());
+    std::vector<uint8_t> t(in.size());
+    uLongf size = uLongf(t.size());
+    ASSERT_EQ(uncompress(t.data(), &size, out.data(), uLong(out.size())), Z_OK);
+    EXPECT_EQ(unpredict(t, size_t(size)), in);
 }
 
 // Rows of zeros, of one repeated value, of noise, and a mix with NaN and infinities: every

@@ -1,7 +1,11 @@
-#include "io/exr_rle.hpp"
+#include "io/exr_compression.hpp"
+
+#include <zlib.h>
 
 #include <algorithm>
 #include <cstring>
+
+#include "inkshade/error.hpp"
 
 namespace inkshade::io {
 
@@ -41,15 +45,10 @@ size_t run_end(const uint8_t* in, size_t from, size_t size) {
     return i;
 }
 
-}  // namespace
-
-size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out) {
-    if (size == 0) return 0;
-    // The halves (bytes 0, 2, 4, ... then 1, 3, 5, ...) into `h`, then the predictor into `t`;
-    // both loops vectorise. Four bytes at a time (a float's) while they last.
-    scratch.resize(2 * size);
-    uint8_t* h = scratch.data();
-    uint8_t* t = h + size;
+// The halves (bytes 0, 2, 4, ... then 1, 3, 5, ...) into `h`, then the predictor into `t`,
+// both `size` bytes; both loops vectorise. Four bytes at a time (a float's) while they last.
+void predict(const uint8_t* in, size_t size, uint8_t* h, uint8_t* t) {
+    if (size == 0) return;
     const size_t half = (size + 1) / 2, words = size / 4;
     for (size_t i = 0; i < words; ++i) {
         uint32_t v;
@@ -62,6 +61,15 @@ size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& sc
     for (size_t i = 4 * words; i < size; ++i) h[i % 2 ? half + i / 2 : i / 2] = in[i];
     t[0] = h[0];
     for (size_t i = 1; i < size; ++i) t[i] = uint8_t(h[i] - h[i - 1] + 128);
+}
+
+}  // namespace
+
+size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out) {
+    if (size == 0) return 0;
+    scratch.resize(2 * size);
+    const uint8_t* t = scratch.data() + size;
+    predict(in, size, scratch.data(), scratch.data() + size);
 
     uint8_t* o = out;
     size_t i = 0;
@@ -82,6 +90,17 @@ size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& sc
         }
     }
     return size_t(o - out);
+}
+
+size_t exr_zip_bound(size_t size) { return size_t(compressBound(uLong(size))); }
+
+size_t exr_zip_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out, int level) {
+    scratch.resize(2 * size);
+    predict(in, size, scratch.data(), scratch.data() + size);
+    uLongf written = uLongf(exr_zip_bound(size));
+    if (compress2(out, &written, scratch.data() + size, uLong(size), level) != Z_OK)
+        throw RuntimeError("zlib could not compress a chunk");
+    return size_t(written);
 }
 
 }  // namespace inkshade::io
