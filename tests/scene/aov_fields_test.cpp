@@ -105,6 +105,22 @@ TEST(AovFields, SphereNdotvAndCurvatures) {
     EXPECT_EQ(a.field_scales.shading_sigmas.size(), size_t(kShadingScales));
 }
 
+// Calls visit(i, p) for each pixel the surface covers: its index and its world point (from the
+// depth AOV).
+template <class Visit>
+void for_covered_pixels(const AovImages& a, const Camera& c, Visit visit) {
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            const size_t i = size_t(y * a.width + x);
+            if (a.depth[i] != 0.0f) visit(i, world_point(c, a.width, a.height, x, y, a.depth[i]));
+        }
+}
+
+// n·v at point p of a sphere about the origin.
+double sphere_ndotv(const Camera& c, const glm::dvec3& p) {
+    return glm::dot(glm::normalize(p), glm::normalize(glm::dvec3(c.eye) - p));
+}
+
 // Faces the GPU draws sorted by material (here: glTF double-sided materials, every other face
 // each) are still read as the mesh's own faces: n·v on the sphere as without materials.
 TEST(AovFields, FacesSortedByMaterialKeepTheirFields) {
@@ -124,16 +140,11 @@ TEST(AovFields, FacesSortedByMaterialKeepTheirFields) {
     const AovImages a = render_fields(c, {Aov::Ndotv, Aov::K1}, w, h);
     double worst_ndotv = 0.0, worst_k = 0.0;
     int n = 0;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const size_t i = size_t(y * w + x);
-            if (a.depth[i] == 0.0f) continue;
-            const glm::dvec3 p = world_point(c, w, h, x, y, a.depth[i]);
-            worst_ndotv = std::max(worst_ndotv,
-                                   std::abs(a.ndotv[i] - glm::dot(glm::normalize(p), glm::normalize(glm::dvec3(c.eye) - p))));
-            worst_k = std::max(worst_k, std::abs(a.k1[i] * radius - 1.0));
-            ++n;
-        }
+    for_covered_pixels(a, c, [&](size_t i, const glm::dvec3& p) {
+        worst_ndotv = std::max(worst_ndotv, std::abs(a.ndotv[i] - sphere_ndotv(c, p)));
+        worst_k = std::max(worst_k, std::abs(a.k1[i] * radius - 1.0));
+        ++n;
+    });
     ASSERT_GT(n, 4000);
     EXPECT_LT(worst_ndotv, 4e-3);
     EXPECT_LT(worst_k, 0.02);
@@ -153,16 +164,12 @@ TEST(AovFields, FacesOfALaterDrawCallKeepTheirNumbers) {
     const AovImages a = render_fields(c, {Aov::Ndotv}, w, h);
     double worst = 0.0;
     int n = 0, later = 0;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const size_t i = size_t(y * w + x);
-            if (a.depth[i] == 0.0f) continue;
-            const glm::dvec3 p = world_point(c, w, h, x, y, a.depth[i]);
-            worst = std::max(worst, std::abs(a.ndotv[i] - glm::dot(glm::normalize(p), glm::normalize(glm::dvec3(c.eye) - p))));
-            const double longitude = std::atan2(-p.z, p.x);  // builtin::sphere's φ, in (−π, π]
-            later += longitude < 0.0 && longitude > -glm::radians(9.0);
-            ++n;
-        }
+    for_covered_pixels(a, c, [&](size_t i, const glm::dvec3& p) {
+        worst = std::max(worst, std::abs(a.ndotv[i] - sphere_ndotv(c, p)));
+        const double longitude = std::atan2(-p.z, p.x);  // builtin::sphere's φ, in (−π, π]
+        later += longitude < 0.0 && longitude > -glm::radians(9.0);
+        ++n;
+    });
     ASSERT_GT(n, 1500);
     EXPECT_GT(later, 60);  // pixels on faces of the second draw call
     EXPECT_LT(worst, 4e-3);
