@@ -154,6 +154,25 @@ TEST(ExrWriter, BothCompressionsReadBackBitForBit) {
     }
 }
 
+TEST(ExrWriter, ChunksThatDoNotShrinkAreStoredAsTheyAre) {
+    // Random bits: neither RLE nor zlib makes a chunk smaller, and the file stores it raw.
+    const test::TempDir dir;
+    const int width = 40, height = 20;
+    std::mt19937 random(17);
+    std::vector<float> v(size_t(width) * size_t(height));
+    for (float& x : v) {
+        const uint32_t bits = random() & 0x7f7fffffu;  // finite, whatever the mantissa
+        std::memcpy(&x, &bits, sizeof x);
+    }
+    for (io::ExrCompression compression : {io::ExrCompression::Rle, io::ExrCompression::Zip}) {
+        const std::string path = dir.file("noise.exr");
+        io::write_exr(path, width, height, {{"Y", v.data(), 1}}, compression);
+        EXPECT_GT(fs::file_size(path), v.size() * sizeof(float));
+        int w = 0, h = 0;
+        expect_same(test::read_exr_channel(path, "Y", w, h), v.data(), 1, v.size());
+    }
+}
+
 TEST(ExrWriter, RleShrinksTheBackground) {
     const test::TempDir dir;
     // A field over a quarter of the image: the zero rows compress to a few bytes each.
