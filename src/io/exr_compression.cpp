@@ -92,15 +92,25 @@ size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& sc
     return size_t(o - out);
 }
 
-size_t exr_zip_bound(size_t size) { return size_t(compressBound(uLong(size))); }
+ExrZipCompressor::ExrZipCompressor(int level) : stream_(std::make_unique<z_stream>()) {
+    if (deflateInit(stream_.get(), level) != Z_OK) throw RuntimeError("zlib could not start a compressor");
+}
 
-size_t exr_zip_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out, int level) {
+ExrZipCompressor::~ExrZipCompressor() { deflateEnd(stream_.get()); }
+
+size_t ExrZipCompressor::bound(size_t size) const { return size_t(deflateBound(stream_.get(), uLong(size))); }
+
+size_t ExrZipCompressor::compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out) {
     scratch.resize(2 * size);
     predict(in, size, scratch.data(), scratch.data() + size);
-    uLongf written = uLongf(exr_zip_bound(size));
-    if (compress2(out, &written, scratch.data() + size, uLong(size), level) != Z_OK)
-        throw RuntimeError("zlib could not compress a chunk");
-    return size_t(written);
+    z_stream& z = *stream_;
+    if (deflateReset(&z) != Z_OK) throw RuntimeError("zlib could not reset its compressor");
+    z.next_in = scratch.data() + size;
+    z.avail_in = uInt(size);
+    z.next_out = out;
+    z.avail_out = uInt(bound(size));
+    if (deflate(&z, Z_FINISH) != Z_STREAM_END) throw RuntimeError("zlib could not compress a chunk");
+    return size_t(z.total_out);
 }
 
 }  // namespace inkshade::io

@@ -9,7 +9,10 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+struct z_stream_s;  // zlib.h
 
 namespace inkshade::io {
 
@@ -24,11 +27,24 @@ constexpr size_t exr_rle_bound(size_t size) { return size + (size + 127) / 128; 
 // stored as (length − 1, byte) and everything else as (−count, count bytes), count 1 to 128.
 size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out);
 
-// The most bytes exr_zip_compress writes for `size` input bytes.
-size_t exr_zip_bound(size_t size);
+// ZIP: the same data after the predictor as one zlib stream a chunk, at `level` (1 fastest, 9
+// smallest). One compressor serves all chunks of a file: zlib's state is reset, not made anew,
+// for each (a new one cost more than the compression, in allocations and page faults).
+class ExrZipCompressor {
+public:
+    explicit ExrZipCompressor(int level);  // throws RuntimeError when zlib cannot start
+    ~ExrZipCompressor();
+    ExrZipCompressor(const ExrZipCompressor&) = delete;
+    ExrZipCompressor& operator=(const ExrZipCompressor&) = delete;
 
-// The same data after the predictor as one zlib stream at `level` (1 fastest, 9 smallest).
-// Returns the compressed size; throws RuntimeError when zlib fails.
-size_t exr_zip_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out, int level);
+    // The most bytes compress writes for `size` input bytes.
+    size_t bound(size_t size) const;
+    // Compresses `size` bytes into `out` (bound(size) bytes); `scratch` is resized as needed.
+    // Returns the compressed size; throws RuntimeError when zlib fails.
+    size_t compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out);
+
+private:
+    std::unique_ptr<z_stream_s> stream_;
+};
 
 }  // namespace inkshade::io

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <optional>
 
 #include "inkshade/error.hpp"
 #include "io/atomic_file.hpp"
@@ -108,8 +109,9 @@ void encode(const ExrContext& exr, int width, int height, const std::vector<ExrC
     const size_t w = size_t(width), line_floats = w * order.size();
     const size_t most = size_t(lines) * line_floats * sizeof(float);
     std::vector<float> chunk(size_t(lines) * line_floats);
-    std::vector<uint8_t> scratch,
-        packed(compression == ExrCompression::Rle ? exr_rle_bound(most) : exr_zip_bound(most));
+    std::optional<ExrZipCompressor> zip;
+    if (compression == ExrCompression::Zip) zip.emplace(kZipLevel);
+    std::vector<uint8_t> scratch, packed(zip ? zip->bound(most) : exr_rle_bound(most));
     for (int y0 = 0; y0 < height; y0 += lines) {
         const int count = std::min(lines, height - y0);
         float* to = chunk.data();
@@ -123,9 +125,8 @@ void encode(const ExrContext& exr, int width, int height, const std::vector<ExrC
             }
         const auto* raw = reinterpret_cast<const uint8_t*>(chunk.data());
         const size_t bytes = size_t(count) * line_floats * sizeof(float);
-        const size_t size = compression == ExrCompression::Rle
-                                ? exr_rle_compress(raw, bytes, scratch, packed.data())
-                                : exr_zip_compress(raw, bytes, scratch, packed.data(), kZipLevel);
+        const size_t size = zip ? zip->compress(raw, bytes, scratch, packed.data())
+                                : exr_rle_compress(raw, bytes, scratch, packed.data());
         exr.check(size < bytes ? exr_write_scanline_chunk(c, 0, y0, packed.data(), size)
                                : exr_write_scanline_chunk(c, 0, y0, raw, bytes));
     }
