@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include "inkshade/error.hpp"
@@ -10,6 +11,9 @@
 namespace inkshade::io {
 
 namespace {
+
+// The word-at-a-time loops below read bytes in memory order from the low end of a word.
+static_assert(std::endian::native == std::endian::little, "the word loops assume little-endian order");
 
 uint64_t load64(const uint8_t* p) {
     uint64_t v;
