@@ -72,8 +72,8 @@ void predict(const uint8_t* in, size_t size, uint8_t* h, uint8_t* t) {
 size_t exr_rle_compress(const uint8_t* in, size_t size, std::vector<uint8_t>& scratch, uint8_t* out) {
     if (size == 0) return 0;
     scratch.resize(2 * size);
-    const uint8_t* t = scratch.data() + size;
-    predict(in, size, scratch.data(), scratch.data() + size);
+    uint8_t* t = scratch.data() + size;
+    predict(in, size, scratch.data(), t);
 
     uint8_t* o = out;
     size_t i = 0;
